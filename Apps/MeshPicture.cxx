@@ -1,0 +1,131 @@
+#include "MeshPicture.h"
+
+#include <vtkActor.h>
+#include <vtkCamera.h>
+#include <vtkCellData.h>
+#include <vtkDataArray.h>
+#include <vtkFieldData.h>
+#include <vtkLookupTable.h>
+#include <vtkNew.h>
+#include <vtkPNGWriter.h>
+#include <vtkPolyData.h>
+#include <vtkPolyDataMapper.h>
+#include <vtkProperty.h>
+#include <vtkRenderWindow.h>
+#include <vtkRenderer.h>
+#include <vtkWindowToImageFilter.h>
+
+#include <cmath>
+
+namespace foldingmeshes
+{
+vtkSmartPointer<vtkRenderWindow> MakeSymmetryScene(vtkPolyData* labelledMesh,
+  vtkPolyData* planeGlyph,
+  int width,
+  int height)
+{
+  vtkNew<vtkLookupTable> colors;
+  colors->SetNumberOfTableValues(3);
+  colors->SetTableRange(0, 2);
+  colors->SetTableValue(0, 0.62, 0.62, 0.64, 1.0); // outside
+  colors->SetTableValue(1, 0.95, 0.85, 0.25, 1.0); // support only
+  colors->SetTableValue(2, 0.30, 0.72, 0.35, 1.0); // symmetric region
+  colors->Build();
+
+  vtkNew<vtkPolyDataMapper> meshMapper;
+  meshMapper->SetInputData(labelledMesh);
+  if (labelledMesh->GetCellData()->GetArray("SymmetryRegion"))
+  {
+    meshMapper->SetScalarModeToUseCellFieldData();
+    meshMapper->SelectColorArray("SymmetryRegion");
+    meshMapper->SetLookupTable(colors);
+    meshMapper->SetScalarRange(0, 2);
+    meshMapper->ScalarVisibilityOn();
+  }
+  else
+  {
+    meshMapper->ScalarVisibilityOff();
+  }
+  vtkNew<vtkActor> meshActor;
+  meshActor->SetMapper(meshMapper);
+  meshActor->GetProperty()->SetInterpolationToFlat();
+
+  vtkNew<vtkRenderer> renderer;
+  renderer->AddActor(meshActor);
+  renderer->SetBackground(1.0, 1.0, 1.0);
+  if (planeGlyph && planeGlyph->GetNumberOfPoints() > 0)
+  {
+    vtkNew<vtkPolyDataMapper> planeMapper;
+    planeMapper->SetInputData(planeGlyph);
+    planeMapper->ScalarVisibilityOff();
+    vtkNew<vtkActor> planeActor;
+    planeActor->SetMapper(planeMapper);
+    planeActor->GetProperty()->SetColor(0.25, 0.45, 0.9);
+    planeActor->GetProperty()->SetOpacity(0.35);
+    renderer->AddActor(planeActor);
+  }
+
+  // Camera: oblique across the plane (normal from field data when present).
+  double n[3] = { 1, 0, 0 };
+  if (vtkDataArray* normal = labelledMesh->GetFieldData()->GetArray("SymmetryPlaneNormal"))
+    normal->GetTuple(0, n);
+  double bounds[6];
+  labelledMesh->GetBounds(bounds);
+  const double center[3] = {
+    0.5 * (bounds[0] + bounds[1]), 0.5 * (bounds[2] + bounds[3]), 0.5 * (bounds[4] + bounds[5])
+  };
+  // Up: the coordinate axis along which the mesh is longest, among those lying in the plane.
+  double up[3] = { 0, 0, 1 };
+  double bestScore = -1.0;
+  for (int k = 0; k < 3; ++k)
+  {
+    const double score = (bounds[2 * k + 1] - bounds[2 * k]) * (1.0 - std::abs(n[k]));
+    if (score > bestScore + 1e-12)
+    {
+      bestScore = score;
+      up[0] = up[1] = up[2] = 0.0;
+      up[k] = 1.0;
+    }
+  }
+  // In-plane direction perpendicular to up and n.
+  double side[3] = {
+    up[1] * n[2] - up[2] * n[1], up[2] * n[0] - up[0] * n[2], up[0] * n[1] - up[1] * n[0]
+  };
+  const double len = std::sqrt(side[0] * side[0] + side[1] * side[1] + side[2] * side[2]);
+  vtkCamera* camera = renderer->GetActiveCamera();
+  camera->SetFocalPoint(center);
+  double dir[3];
+  for (int k = 0; k < 3; ++k)
+    dir[k] = (len > 0 ? side[k] / len : 0.0) + 0.6 * n[k] + 0.35 * up[k];
+  camera->SetPosition(center[0] + dir[0], center[1] + dir[1], center[2] + dir[2]);
+  camera->SetViewUp(up);
+  renderer->ResetCamera();
+  camera->Zoom(1.15);
+
+  vtkSmartPointer<vtkRenderWindow> window = vtkSmartPointer<vtkRenderWindow>::New();
+  window->SetOffScreenRendering(1);
+  window->SetMultiSamples(0);
+  window->SetSize(width, height);
+  window->AddRenderer(renderer);
+  return window;
+}
+
+bool WritePicture(vtkRenderWindow* window, const std::string& path, std::string& error)
+{
+  window->Render();
+  vtkNew<vtkWindowToImageFilter> grab;
+  grab->SetInput(window);
+  grab->ReadFrontBufferOff();
+  grab->Update();
+  vtkNew<vtkPNGWriter> writer;
+  writer->SetFileName(path.c_str());
+  writer->SetInputConnection(grab->GetOutputPort());
+  writer->Write();
+  if (writer->GetErrorCode() != 0)
+  {
+    error = "cannot write picture '" + path + "'";
+    return false;
+  }
+  return true;
+}
+}

@@ -1,0 +1,30 @@
+/**
+ * @file    MeshPicture.h
+ * @brief   off-screen pictures of FoldingMeshes results (used by the apps and image tests)
+ */
+#ifndef foldingmeshes_MeshPicture_h
+#define foldingmeshes_MeshPicture_h
+
+#include "vtkSmartPointer.h"
+
+#include <string>
+
+class vtkPolyData;
+class vtkRenderWindow;
+
+namespace foldingmeshes
+{
+/**
+ * A render window (off-screen, fixed size, no multisampling) showing a mesh coloured by
+ * its cell array "SymmetryRegion" (outside grey, support yellow, symmetric green, as in
+ * the paper's Figure 2) and, when given, the plane glyph as a translucent blue quad. The
+ * camera looks at the mesh obliquely across the plane so both halves are visible.
+ */
+vtkSmartPointer<vtkRenderWindow> MakeSymmetryScene(
+  vtkPolyData* labelledMesh, vtkPolyData* planeGlyph, int width, int height);
+
+/// Renders the scene to a PNG file. Returns false and sets error on failure.
+bool WritePicture(vtkRenderWindow* window, const std::string& path, std::string& error);
+}
+
+#endif

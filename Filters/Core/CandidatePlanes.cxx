@@ -1,0 +1,224 @@
+#include "CandidatePlanes.h"
+
+#include <Eigen/Eigenvalues>
+
+#include <algorithm>
+#include <cmath>
+#include <random>
+
+namespace foldingmeshes
+{
+bool PrincipalPlanes(const PreparedMesh& mesh,
+  const std::vector<double>& weights,
+  std::array<Plane, 3>& planes)
+{
+  double s = 0.0;
+  Vec3 m = Vec3::Zero();
+  for (int i = 0; i < mesh.NumberOfPoints(); ++i)
+  {
+    s += weights[i];
+    m += weights[i] * mesh.points[i];
+  }
+  if (!(s > 0.0))
+    return false;
+  m /= s;
+  Eigen::Matrix3d c = Eigen::Matrix3d::Zero();
+  for (int i = 0; i < mesh.NumberOfPoints(); ++i)
+  {
+    if (weights[i] > 0.0)
+    {
+      const Vec3 r = mesh.points[i] - m;
+      c += weights[i] * r * r.transpose();
+    }
+  }
+  c /= s;
+  Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver(c);
+  for (int k = 0; k < 3; ++k)
+  {
+    Plane p;
+    p.origin = m;
+    p.normal = solver.eigenvectors().col(k).normalized();
+    planes[k] = CanonicalPlane(p, m);
+  }
+  return true;
+}
+
+bool RefinePlaneFromCorrespondences(const std::vector<Vec3>& points,
+  const std::vector<Vec3>& partners,
+  const std::vector<Vec3>& partnerNormals,
+  const std::vector<double>& weights,
+  const Plane& current,
+  Plane& plane)
+{
+  const Vec3 n = current.normal;
+  const Vec3 u = n.unitOrthogonal();
+  const Vec3 v = n.cross(u);
+  Eigen::Matrix3d jtj = Eigen::Matrix3d::Zero();
+  Vec3 jte = Vec3::Zero();
+  double s = 0.0;
+  for (size_t i = 0; i < points.size(); ++i)
+  {
+    if (!(weights[i] > 0.0))
+      continue;
+    const Vec3 p = points[i] - current.origin;
+    const Vec3& m = partnerNormals[i];
+    const double h = n.dot(p);
+    const Vec3 r = p - 2.0 * h * n;
+    const double e = (r - (partners[i] - current.origin)).dot(m);
+    const double nm = n.dot(m);
+    const Vec3 j(
+      -2.0 * (u.dot(p) * nm + h * u.dot(m)), -2.0 * (v.dot(p) * nm + h * v.dot(m)), 2.0 * nm);
+    jtj += weights[i] * j * j.transpose();
+    jte += weights[i] * e * j;
+    s += weights[i];
+  }
+  if (!(s > 0.0) || !(jtj.trace() > 0.0))
+    return false;
+  // Light damping keeps directions the data does not constrain (e.g. a sphere) still.
+  const Eigen::Matrix3d damped = jtj + 1e-9 * jtj.trace() * Eigen::Matrix3d::Identity();
+  Vec3 x = damped.ldlt().solve(-jte);
+  if (!x.allFinite())
+    return false;
+  const double tilt = std::hypot(x[0], x[1]);
+  const double maxTilt = 10.0 * 3.14159265358979323846 / 180.0;
+  if (tilt > maxTilt)
+  {
+    x[0] *= maxTilt / tilt;
+    x[1] *= maxTilt / tilt;
+  }
+  plane.normal = (n + x[0] * u + x[1] * v).normalized();
+  plane.origin = current.origin + x[2] * n;
+  return true;
+}
+
+bool SurfacePrincipalPlanes(const PreparedMesh& mesh, std::array<Plane, 3>& planes)
+{
+  double area = 0.0;
+  Vec3 first = Vec3::Zero();
+  Eigen::Matrix3d second = Eigen::Matrix3d::Zero();
+  for (int f = 0; f < mesh.NumberOfFaces(); ++f)
+  {
+    const double a = mesh.faceAreas[f];
+    if (!(a > 0.0))
+      continue;
+    const Triangle& t = mesh.triangles[f];
+    const Vec3 &p = mesh.points[t[0]], &q = mesh.points[t[1]], &r = mesh.points[t[2]];
+    const Vec3 s = p + q + r;
+    area += a;
+    first += a * s / 3.0;
+    // Integral of x x^T over the triangle: A/12 (p p^T + q q^T + r r^T + s s^T).
+    second +=
+      a / 12.0 * (p * p.transpose() + q * q.transpose() + r * r.transpose() + s * s.transpose());
+  }
+  if (!(area > 0.0))
+    return false;
+  const Vec3 m = first / area;
+  const Eigen::Matrix3d c = second / area - m * m.transpose();
+  Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver(c);
+  for (int k = 0; k < 3; ++k)
+  {
+    Plane p;
+    p.origin = m;
+    p.normal = solver.eigenvectors().col(k).normalized();
+    planes[k] = CanonicalPlane(p, m);
+  }
+  return true;
+}
+
+std::vector<Plane> VotedPlanes(const PreparedMesh& mesh, int count, double epsilon, unsigned seed)
+{
+  std::vector<Plane> result;
+  const int nv = mesh.NumberOfPoints();
+  if (count <= 0 || nv < 2)
+    return result;
+  // Area-weighted vertex sampling.
+  std::vector<double> cumulative(nv);
+  double total = 0.0;
+  for (int i = 0; i < nv; ++i)
+    cumulative[i] = (total += mesh.vertexAreas[i]);
+  std::mt19937 random(seed);
+  auto sample = [&]()
+  {
+    const double u = (static_cast<double>(random()) + 0.5) / 4294967296.0 * total;
+    return static_cast<int>(std::min<std::ptrdiff_t>(
+      std::lower_bound(cumulative.begin(), cumulative.end(), u) - cumulative.begin(), nv - 1));
+  };
+  struct Vote
+  {
+    Vec3 normal;
+    double offset;
+    double weight;
+  };
+  std::vector<Vote> votes;
+  const int wanted = 3000, attempts = 200000;
+  const double pairCos = std::cos(25.0 * 3.14159265358979323846 / 180.0);
+  const Vec3 center = 0.5 * (mesh.boundsMin + mesh.boundsMax);
+  for (int k = 0; k < attempts && static_cast<int>(votes.size()) < wanted; ++k)
+  {
+    const int a = sample(), b = sample();
+    const Vec3 ab = mesh.points[a] - mesh.points[b];
+    const double len = ab.norm();
+    if (len < epsilon)
+      continue;
+    Plane p;
+    p.normal = ab / len;
+    p.origin = 0.5 * (mesh.points[a] + mesh.points[b]);
+    if (p.ReflectDirection(mesh.vertexNormals[a]).dot(mesh.vertexNormals[b]) < pairCos)
+      continue;
+    p = CanonicalPlane(p, center);
+    votes.push_back({ p.normal, p.normal.dot(p.origin - center), 1.0 });
+  }
+  // Cluster strength: votes within 4 degrees and epsilon.
+  const double clusterCos = std::cos(4.0 * 3.14159265358979323846 / 180.0);
+  const int nvotes = static_cast<int>(votes.size());
+  auto near = [&](const Vote& u, const Vote& v, double cosLimit, double offsetLimit)
+  {
+    const double c = u.normal.dot(v.normal);
+    if (std::abs(c) < cosLimit)
+      return false;
+    const double vo = c < 0 ? -v.offset : v.offset;
+    return std::abs(u.offset - vo) <= offsetLimit;
+  };
+  std::vector<double> strength(nvotes, 0.0);
+  for (int i = 0; i < nvotes; ++i)
+    for (int j = i; j < nvotes; ++j)
+      if (near(votes[i], votes[j], clusterCos, epsilon))
+      {
+        strength[i] += votes[j].weight;
+        if (j != i)
+          strength[j] += votes[i].weight;
+      }
+  std::vector<char> used(nvotes, 0);
+  const double separationCos = std::cos(10.0 * 3.14159265358979323846 / 180.0);
+  while (static_cast<int>(result.size()) < count)
+  {
+    int best = -1;
+    for (int i = 0; i < nvotes; ++i)
+      if (!used[i] && (best < 0 || strength[i] > strength[best]))
+        best = i;
+    if (best < 0 || strength[best] < 3.0)
+      break;
+    Vec3 n = Vec3::Zero();
+    double offset = 0.0, weight = 0.0;
+    for (int j = 0; j < nvotes; ++j)
+    {
+      if (near(votes[best], votes[j], clusterCos, epsilon))
+      {
+        const double sgn = votes[best].normal.dot(votes[j].normal) < 0 ? -1.0 : 1.0;
+        n += sgn * votes[j].normal;
+        offset += sgn * votes[j].offset;
+        weight += 1.0;
+      }
+    }
+    for (int j = 0; j < nvotes; ++j)
+      if (!used[j] && near(votes[best], votes[j], separationCos, 3.0 * epsilon))
+        used[j] = 1;
+    used[best] = 1;
+    Plane p;
+    p.normal = n.normalized();
+    p.origin = center + (offset / weight) * p.normal;
+    result.push_back(CanonicalPlane(p, center));
+  }
+  return result;
+}
+}

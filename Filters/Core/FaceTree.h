@@ -1,0 +1,74 @@
+// A bounding-volume hierarchy over a mesh's faces for exact closest-compatible-face and
+// nearest-centroid queries.
+#ifndef foldingmeshes_FaceTree_h
+#define foldingmeshes_FaceTree_h
+
+#include "TriangleMesh.h"
+
+#include <limits>
+#include <vector>
+
+namespace foldingmeshes
+{
+/**
+ * Faces are split recursively at the median centroid along the longest axis (leaves of
+ * at most 8 faces). Every node stores the bounding box of its triangles and a cone
+ * bounding the vertex normals of its faces, so a query skips whole subtrees that are
+ * too far away *or* whose normals cannot be compatible with the query normal. Results
+ * are exact (ties: lowest face id). Degenerate faces are left out. Queries are const and
+ * thread-safe.
+ *
+ * Why not vtkStaticCellLocator: its API answers "closest cell" or "cells in a box", not
+ * "closest cell whose interpolated normal is within 45 degrees of n". Emulating that with
+ * growing box queries visits every cell near a mirrored vertex whose partner is missing
+ * (the common case off the symmetric region); the normal cones prune those.
+ */
+class FaceTree
+{
+public:
+  explicit FaceTree(const PreparedMesh& mesh);
+
+  struct Hit
+  {
+    int face = -1;
+    double distance = std::numeric_limits<double>::infinity();
+    Vec3 point = Vec3::Zero(); ///< closest point on the face
+  };
+
+  /**
+   * The face closest to p among the faces compatible with the unit vector `normal`: the
+   * normal interpolated (barycentrically, from the vertex normals) at the face's closest
+   * point makes a cosine >= cosLimit with `normal`. Only faces closer than maxDistance
+   * count; none gives face -1 and an infinite distance.
+   */
+  Hit ClosestCompatibleFace(const Vec3& p,
+    const Vec3& normal,
+    double cosLimit,
+    double maxDistance) const;
+
+  /// The (non-degenerate) face whose centroid is nearest to p; -1 if there is none.
+  int NearestCentroidFace(const Vec3& p) const;
+
+  int NumberOfNodes() const { return static_cast<int>(this->Nodes.size()); }
+
+private:
+  struct Node
+  {
+    Vec3 lo, hi;      ///< box of the triangles
+    Vec3 clo, chi;    ///< box of the face centroids
+    Vec3 coneAxis;    ///< unit mean of the vertex normals
+    double coneCos;   ///< cos of the cone half-angle (-1: no bound)
+    double coneSin;   ///< sin of the cone half-angle
+    int first, count; ///< leaf: range in Order; inner: count == 0
+    int left, right;  ///< inner node children
+  };
+  int Build(int first, int count);
+  static double BoxDistance2(const Vec3& lo, const Vec3& hi, const Vec3& p);
+
+  const PreparedMesh& Mesh;
+  std::vector<int> Order; ///< face ids, leaf ranges
+  std::vector<Node> Nodes;
+};
+}
+
+#endif

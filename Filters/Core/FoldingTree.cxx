@@ -1,0 +1,186 @@
+#include "FoldingTree.h"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+namespace foldingmeshes
+{
+const char* ToString(FoldingNodeKind kind)
+{
+  switch (kind)
+  {
+    case FoldingNodeKind::Leaf:
+      return "Leaf";
+    case FoldingNodeKind::Folding:
+      return "Folding";
+    case FoldingNodeKind::Segmentation:
+      return "Segmentation";
+  }
+  return "Unknown";
+}
+
+const char* ToString(LeafReason reason)
+{
+  switch (reason)
+  {
+    case LeafReason::None:
+      return "None";
+    case LeafReason::MinimumFaces:
+      return "MinimumFaces";
+    case LeafReason::MinimumArea:
+      return "MinimumArea";
+    case LeafReason::MaximumFolds:
+      return "MaximumFolds";
+    case LeafReason::NoSymmetry:
+      return "NoSymmetry";
+    case LeafReason::MaximumDepth:
+      return "MaximumDepth";
+    case LeafReason::DetectionFailed:
+      return "DetectionFailed";
+    case LeafReason::Aborted:
+      return "Aborted";
+  }
+  return "Unknown";
+}
+
+int FoldingTree::NumberOfLeaves() const
+{
+  return static_cast<int>(this->Leaves().size());
+}
+
+std::vector<int> FoldingTree::Leaves() const
+{
+  std::vector<int> leaves;
+  for (int i = 0; i < this->NumberOfNodes(); ++i)
+    if (this->nodes[i].kind == FoldingNodeKind::Leaf)
+      leaves.push_back(i);
+  return leaves;
+}
+
+int FoldingTree::StoredFaces() const
+{
+  int count = 0;
+  for (const FoldingNode& node : this->nodes)
+    if (node.kind == FoldingNodeKind::Leaf)
+      count += node.mesh.NumberOfFaces();
+  return count;
+}
+
+int FoldingTree::StoredPoints() const
+{
+  int count = 0;
+  for (const FoldingNode& node : this->nodes)
+    if (node.kind == FoldingNodeKind::Leaf)
+      count += node.mesh.NumberOfPoints();
+  return count;
+}
+
+double FoldingTree::Compression() const
+{
+  if (this->numberOfOriginalFaces <= 0)
+    return 0.0;
+  return 1.0 - static_cast<double>(this->StoredFaces()) / this->numberOfOriginalFaces;
+}
+
+int FoldingTree::Height() const
+{
+  int height = 0;
+  for (const FoldingNode& node : this->nodes)
+    if (node.kind == FoldingNodeKind::Leaf)
+      height = std::max(height, node.depth + 1);
+  return height;
+}
+
+int FoldingTree::NumberOfFolds() const
+{
+  int count = 0;
+  for (const FoldingNode& node : this->nodes)
+    count += node.kind == FoldingNodeKind::Folding;
+  return count;
+}
+
+int FoldingTree::MaximumFoldsOnPath() const
+{
+  int folds = 0;
+  for (const FoldingNode& node : this->nodes)
+    if (node.kind == FoldingNodeKind::Leaf)
+      folds = std::max(folds, node.foldsAbove);
+  return folds;
+}
+
+std::string FoldingTree::Validate() const
+{
+  std::ostringstream os;
+  const int n = this->NumberOfNodes();
+  if (n == 0)
+    return "the tree has no nodes";
+  for (int i = 0; i < n; ++i)
+  {
+    const FoldingNode& node = this->nodes[i];
+    os.str("");
+    os << "node " << i << " (" << ToString(node.kind) << "): ";
+    if (i == 0 && (node.parent != -1 || node.depth != 0 || node.foldsAbove != 0))
+      return os.str() + "the root must have no parent, depth 0 and no folds above";
+    if (i > 0)
+    {
+      if (node.parent < 0 || node.parent >= i)
+        return os.str() + "parent index out of range or not before the node (preorder)";
+      const FoldingNode& parent = this->nodes[node.parent];
+      if (std::find(parent.children.begin(), parent.children.end(), i) == parent.children.end())
+        return os.str() + "not listed among its parent's children";
+      if (node.depth != parent.depth + 1)
+        return os.str() + "depth is not the parent's depth + 1";
+      const int folds = parent.foldsAbove + (parent.kind == FoldingNodeKind::Folding ? 1 : 0);
+      if (node.foldsAbove != folds)
+        return os.str() + "foldsAbove does not count the folding nodes above it";
+    }
+    if (node.depth >= MaximumFoldingTreeLevels)
+      return os.str() + "deeper than the supported number of levels";
+    if (!(node.epsilon >= 0.0) || !std::isfinite(node.epsilon))
+      return os.str() + "invalid epsilon";
+    for (int c : node.children)
+      if (c <= i || c >= n || this->nodes[c].parent != i)
+        return os.str() + "child index out of range or child with another parent";
+    switch (node.kind)
+    {
+      case FoldingNodeKind::Leaf:
+      {
+        if (!node.children.empty())
+          return os.str() + "a leaf has children";
+        const FoldingLeafMesh& m = node.mesh;
+        const size_t np = m.points.size(), nt = m.triangles.size();
+        if (m.originalPointIds.size() != np || m.tearMask.size() != np ||
+          m.planeMask.size() != np || m.projected.size() != np)
+          return os.str() + "per-point arrays do not match the number of points";
+        if (m.originalFaceIds.size() != nt)
+          return os.str() + "per-triangle arrays do not match the number of triangles";
+        for (const Triangle& t : m.triangles)
+          for (int v : t)
+            if (v < 0 || v >= static_cast<int>(np))
+              return os.str() + "triangle point index out of range";
+        for (const MirroredTear& t : m.mirroredTears)
+          if (t.point < 0 || t.point >= static_cast<int>(np) || t.level < 0 ||
+            t.level >= node.depth)
+            return os.str() + "mirrored tear with a point or level out of range";
+        for (const Vec3& p : m.points)
+          if (!p.allFinite())
+            return os.str() + "non-finite point";
+        break;
+      }
+      case FoldingNodeKind::Folding:
+        if (node.children.size() != 1)
+          return os.str() + "a folding node must have exactly one child";
+        if (!node.plane.origin.allFinite() || !node.plane.normal.allFinite() ||
+          std::abs(node.plane.normal.norm() - 1.0) > 1e-6)
+          return os.str() + "invalid plane (normal must be unit length)";
+        break;
+      case FoldingNodeKind::Segmentation:
+        if (node.children.size() < 2)
+          return os.str() + "a segmentation node must have at least two children";
+        break;
+    }
+  }
+  return std::string();
+}
+}

@@ -1,0 +1,162 @@
+// The folding tree of the paper's section 4.1: leaves hold mesh data, folding nodes a mirror
+// plane and one child, segmentation nodes children whose regions partition the parent's faces.
+#ifndef foldingmeshes_FoldingTree_h
+#define foldingmeshes_FoldingTree_h
+
+#include "Plane.h"
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace foldingmeshes
+{
+/// Tree levels are numbered by node depth (root = 0). Per-vertex level flags are bits of a
+/// uint64_t, so a tree has at most this many levels (the builder's maximumDepth is capped).
+constexpr int MaximumFoldingTreeLevels = 64;
+
+enum class FoldingNodeKind
+{
+  Leaf,
+  Folding,     ///< one child (the kept half) and a plane
+  Segmentation ///< children 0..n: fold(S) first, then one subtree per remaining component Ri
+};
+
+/// Why the builder made a leaf (None for inner nodes).
+enum class LeafReason
+{
+  None,
+  MinimumFaces,        ///< fewer faces than FoldingTreeOptions::minimumFaces
+  MinimumArea,         ///< area below minimumAreaFraction of the original mesh
+  MaximumFolds,        ///< maximumFolds folds already on the path from the root
+  NoSymmetry,          ///< no meaningful symmetric region (see FoldingTreeBuilder.h)
+  MaximumDepth,        ///< maximumDepth reached (hard bound on the recursion)
+  DetectionFailed,     ///< the region could not be prepared for detection (e.g. zero area)
+  Aborted              ///< the progress callback asked to stop; the subtree was not refined
+};
+
+const char* ToString(FoldingNodeKind kind);
+const char* ToString(LeafReason reason);
+
+/**
+ * A tear vertex that was removed by a fold, recorded on the kept vertex it mirrors onto:
+ * the copy of `point` produced by reflecting it through exactly the folding nodes whose
+ * depths are the bits of `mirrorMask` (among the folds below the segmentation node at depth
+ * `level`; folds whose plane the point lies on do not count, they do not duplicate it) is a
+ * tear vertex of that segmentation node. A tear vertex t discarded by the fold at depth f is
+ * represented by the kept vertex v nearest to reflect(t) (mask bit f); if t itself was such a
+ * representative, its masks gain bit f. This keeps the tear stack exact through nested folds:
+ * the mirror copies of an ordinary tear vertex are NOT tear vertices (the fold may map the
+ * seam onto an ancestor's fold line), while the mirror copies that recreate removed tear
+ * vertices are.
+ */
+struct MirroredTear
+{
+  int point = -1;
+  int level = 0;
+  uint64_t mirrorMask = 0;
+};
+
+/**
+ * Mesh data of a leaf. Triangles index `points` (local ids) and are oriented consistently
+ * with the input (as PrepareMesh oriented it). Everything per point / per triangle has the
+ * size of `points` / `triangles`.
+ *
+ * Level flags (bit d = the node at depth d on the path from the root to this leaf):
+ * - tearMask: the paper's tear stack. Bit d is set when the vertex lay on a segmentation
+ *   boundary of the segmentation node at depth d (it was used by faces of two different
+ *   children of that node). It keeps the bit through folds (paper §4.3: it inherits).
+ *   Tear vertices removed by folds are recorded in mirroredTears (see MirroredTear).
+ * - planeMask: bit d is set when the vertex lies on the plane of the folding node at depth d
+ *   (it was projected or snapped onto it, see FoldingTreeBuilder.h). The unfolder merges
+ *   these vertices with their mirror images, which closes the fold line.
+ */
+struct FoldingLeafMesh
+{
+  std::vector<Vec3> points;
+  std::vector<Triangle> triangles;
+  std::vector<int> originalPointIds; ///< input point id of each point (see FoldingTreeBuilder.h)
+  std::vector<int> originalFaceIds;  ///< input triangle id of each triangle
+  std::vector<uint64_t> tearMask;
+  std::vector<uint64_t> planeMask;
+  std::vector<char> projected; ///< 1: moved from the discarded side onto a fold plane
+  std::vector<MirroredTear> mirroredTears; ///< sorted by point, level, mask
+
+  int NumberOfPoints() const { return static_cast<int>(points.size()); }
+  int NumberOfFaces() const { return static_cast<int>(triangles.size()); }
+};
+
+struct FoldingNode
+{
+  FoldingNodeKind kind = FoldingNodeKind::Leaf;
+  int parent = -1;           ///< node index, -1 for the root
+  std::vector<int> children; ///< node indices (Folding: exactly one; Segmentation: >= 2)
+  int depth = 0;             ///< root 0
+  double epsilon = 0.0;      ///< absolute tolerance this node was built with
+  int foldsAbove = 0;        ///< folding nodes strictly above this node
+  int numberOfFaces = 0;     ///< faces of this node's region (input faces, see below)
+  double area = 0.0;         ///< area of the region as it entered this node
+  /// Input face ids of the region (sorted). For a node below a fold these are the faces of
+  /// the kept half only; the mirrored-away faces are listed by their folding node.
+  std::vector<int> originalFaces;
+
+  // Folding nodes.
+  Plane plane;             ///< normal points into the kept half
+  int discardedFaces = 0;  ///< faces of the region removed by the fold (mirrored away)
+  int projectedPoints = 0; ///< points moved from the discarded side onto the plane
+  std::vector<int> discardedOriginalFaces; ///< sorted input ids of the removed faces
+
+  // Detection statistics (Folding and Segmentation nodes, and NoSymmetry leaves).
+  double symmetricAreaFraction = 0.0; ///< area(S) / area(region) after trimming
+  bool detectionRun = false;
+
+  // Leaves.
+  LeafReason leafReason = LeafReason::None;
+  FoldingLeafMesh mesh;
+};
+
+/**
+ * The tree: nodes in preorder (nodes[0] is the root, children follow their parent).
+ * Also the statistics of the paper's Table 1.
+ */
+struct FoldingTree
+{
+  std::vector<FoldingNode> nodes;
+
+  int numberOfOriginalFaces = 0;  ///< input triangles
+  int numberOfOriginalPoints = 0; ///< input points
+  int numberOfDroppedFaces = 0;   ///< input triangles with a repeated vertex (not stored)
+  double originalArea = 0.0;
+  double diagonal = 0.0;          ///< bounding-box diagonal of the input
+  double rootEpsilon = 0.0;
+  double buildSeconds = 0.0;
+  bool aborted = false;
+
+  bool Empty() const { return this->nodes.empty(); }
+  int NumberOfNodes() const { return static_cast<int>(this->nodes.size()); }
+  int NumberOfLeaves() const;
+  /// Sum of the leaves' triangles: the paper's "non-redundant faces".
+  int StoredFaces() const;
+  int StoredPoints() const;
+  /// 1 - stored / original (0 for an empty tree).
+  double Compression() const;
+  /// Number of levels: 1 + the largest leaf depth (a single leaf has height 1), as in the
+  /// paper's Table 1 (the queen, folded three times, has height 4).
+  int Height() const;
+  /// Folding nodes in the tree, and the most on one root-to-leaf path.
+  int NumberOfFolds() const;
+  int MaximumFoldsOnPath() const;
+  /// Indices of the leaves, in preorder.
+  std::vector<int> Leaves() const;
+
+  /**
+   * Structural check, for trees built elsewhere (e.g. read back from a file): child counts
+   * per kind, parent links, preorder, depths, unit plane normals, leaf array sizes and
+   * index ranges, depth < MaximumFoldingTreeLevels. Returns an empty string when valid,
+   * else a description of the first problem.
+   */
+  std::string Validate() const;
+};
+}
+
+#endif

@@ -1,0 +1,728 @@
+#include "FoldingTreeBuilder.h"
+
+#include "MeshPreparation.h"
+#include "MirrorDistance.h"
+#include "RegionGrowing.h"
+
+#include <Eigen/Dense>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <cmath>
+#include <map>
+#include <numeric>
+
+namespace foldingmeshes
+{
+namespace
+{
+/// A region being built: mesh data plus everything that travels into the leaves.
+struct WorkMesh
+{
+  std::vector<Vec3> points;
+  std::vector<Triangle> triangles;
+  std::vector<int> pointOrig;
+  std::vector<int> faceOrig;
+  std::vector<uint64_t> tear;
+  std::vector<uint64_t> onPlane;
+  std::vector<char> projected;
+  /// (level, mirror mask) per point: see MirroredTear.
+  std::vector<std::vector<std::pair<int, uint64_t>>> mirrorTears;
+
+  int NumberOfFaces() const { return static_cast<int>(triangles.size()); }
+  int NumberOfPoints() const { return static_cast<int>(points.size()); }
+};
+
+double TriangleArea(const WorkMesh& w, const Triangle& t)
+{
+  return 0.5 * (w.points[t[1]] - w.points[t[0]]).cross(w.points[t[2]] - w.points[t[0]]).norm();
+}
+
+double Area(const WorkMesh& w)
+{
+  double area = 0.0;
+  for (const Triangle& t : w.triangles)
+    area += TriangleArea(w, t);
+  return area;
+}
+
+/// The faces selected by `mask`, with their points (renumbered in increasing old order).
+WorkMesh Extract(const WorkMesh& w, const std::vector<char>& mask)
+{
+  WorkMesh out;
+  std::vector<int> newId(w.points.size(), -1);
+  for (int f = 0; f < w.NumberOfFaces(); ++f)
+    if (mask[f])
+      for (int v : w.triangles[f])
+        newId[v] = 0;
+  for (int v = 0; v < w.NumberOfPoints(); ++v)
+    if (newId[v] == 0)
+    {
+      newId[v] = out.NumberOfPoints();
+      out.points.push_back(w.points[v]);
+      out.pointOrig.push_back(w.pointOrig[v]);
+      out.tear.push_back(w.tear[v]);
+      out.onPlane.push_back(w.onPlane[v]);
+      out.projected.push_back(w.projected[v]);
+      out.mirrorTears.push_back(w.mirrorTears[v]);
+    }
+  for (int f = 0; f < w.NumberOfFaces(); ++f)
+    if (mask[f])
+    {
+      const Triangle& t = w.triangles[f];
+      out.triangles.push_back({ newId[t[0]], newId[t[1]], newId[t[2]] });
+      out.faceOrig.push_back(w.faceOrig[f]);
+    }
+  return out;
+}
+
+/**
+ * Welds points with identical coordinates (their flags are OR-ed; the lowest point keeps
+ * its original id), drops faces with a repeated vertex and unused points. Returns the
+ * number of dropped faces.
+ */
+int WeldAndDropCollapsed(WorkMesh& w)
+{
+  const int n = w.NumberOfPoints();
+  std::vector<int> order(n);
+  std::iota(order.begin(), order.end(), 0);
+  const auto& p = w.points;
+  std::sort(order.begin(),
+    order.end(),
+    [&](int i, int j)
+    {
+      if (p[i].x() != p[j].x())
+        return p[i].x() < p[j].x();
+      if (p[i].y() != p[j].y())
+        return p[i].y() < p[j].y();
+      if (p[i].z() != p[j].z())
+        return p[i].z() < p[j].z();
+      return i < j;
+    });
+  std::vector<int> rep(n);
+  for (int k = 0; k < n;)
+  {
+    int e = k;
+    while (e < n && p[order[e]] == p[order[k]])
+      ++e;
+    for (int m = k; m < e; ++m)
+      rep[order[m]] = order[k];
+    k = e;
+  }
+  for (int v = 0; v < n; ++v)
+    if (rep[v] != v)
+    {
+      w.tear[rep[v]] |= w.tear[v];
+      w.onPlane[rep[v]] |= w.onPlane[v];
+      w.projected[rep[v]] |= w.projected[v];
+      auto& into = w.mirrorTears[rep[v]];
+      into.insert(into.end(), w.mirrorTears[v].begin(), w.mirrorTears[v].end());
+      std::sort(into.begin(), into.end());
+      into.erase(std::unique(into.begin(), into.end()), into.end());
+    }
+  std::vector<char> keep(w.triangles.size(), 1);
+  int dropped = 0;
+  for (size_t f = 0; f < w.triangles.size(); ++f)
+  {
+    Triangle& t = w.triangles[f];
+    for (int& v : t)
+      v = rep[v];
+    if (t[0] == t[1] || t[1] == t[2] || t[0] == t[2])
+    {
+      keep[f] = 0;
+      ++dropped;
+    }
+  }
+  w = Extract(w, keep);
+  return dropped;
+}
+
+/// Closest point to x on the intersection of the planes (least squares if inconsistent).
+Vec3 ProjectOntoPlanes(const Vec3& x, const std::vector<Plane>& planes)
+{
+  if (planes.size() == 1)
+    return planes[0].Project(x);
+  Eigen::MatrixXd A(planes.size(), 3);
+  Eigen::VectorXd r(planes.size());
+  for (size_t k = 0; k < planes.size(); ++k)
+  {
+    A.row(k) = planes[k].normal.transpose();
+    r[k] = -planes[k].SignedDistance(x);
+  }
+  Eigen::CompleteOrthogonalDecomposition<Eigen::MatrixXd> cod(A);
+  cod.setThreshold(1e-8);
+  const Eigen::Vector3d delta = cod.solve(r);
+  return x + delta;
+}
+
+class Builder
+{
+public:
+  Builder(const FoldingTreeOptions& options, const std::vector<Vec3>& inputNormals,
+    FoldingTree& tree)
+    : Options(options)
+    , InputNormals(inputNormals)
+    , Tree(tree)
+  {
+    this->MaximumDepth = std::max(1, std::min(options.maximumDepth, MaximumFoldingTreeLevels - 1));
+  }
+
+  void Run(WorkMesh root)
+  {
+    this->PlaneAtDepth.assign(MaximumFoldingTreeLevels, Plane());
+    this->Build(std::move(root), -1, 0, this->Options.epsilon, 0, 0);
+    this->Report(1.0);
+  }
+
+  bool Aborted = false;
+
+private:
+  /// Reports monotonic progress; false once the callback asked to stop.
+  bool Report(double value)
+  {
+    if (this->Aborted)
+      return false;
+    value = std::min(1.0, std::max(value, this->LastProgress));
+    this->LastProgress = value;
+    if (this->Options.progress && !this->Options.progress(value))
+      this->Aborted = true;
+    return !this->Aborted;
+  }
+
+  double Fraction(double faces) const
+  {
+    return this->Tree.numberOfOriginalFaces > 0 ? faces / this->Tree.numberOfOriginalFaces : 1.0;
+  }
+
+  int NewNode(int parent, int depth, double eps, int folds, const WorkMesh& w)
+  {
+    FoldingNode node;
+    node.parent = parent;
+    node.depth = depth;
+    node.epsilon = eps;
+    node.foldsAbove = folds;
+    node.numberOfFaces = w.NumberOfFaces();
+    node.area = Area(w);
+    node.originalFaces = w.faceOrig;
+    std::sort(node.originalFaces.begin(), node.originalFaces.end());
+    this->Tree.nodes.push_back(std::move(node));
+    const int index = this->Tree.NumberOfNodes() - 1;
+    if (parent >= 0)
+      this->Tree.nodes[parent].children.push_back(index);
+    return index;
+  }
+
+  void MakeLeaf(int index, WorkMesh& w, LeafReason reason)
+  {
+    FoldingNode& node = this->Tree.nodes[index];
+    node.kind = FoldingNodeKind::Leaf;
+    node.leafReason = reason;
+    FoldingLeafMesh& m = node.mesh;
+    m.points = std::move(w.points);
+    m.triangles = std::move(w.triangles);
+    m.originalPointIds = std::move(w.pointOrig);
+    m.originalFaceIds = std::move(w.faceOrig);
+    m.tearMask = std::move(w.tear);
+    m.planeMask = std::move(w.onPlane);
+    m.projected = std::move(w.projected);
+    for (int v = 0; v < static_cast<int>(w.mirrorTears.size()); ++v)
+    {
+      auto entries = w.mirrorTears[v];
+      std::sort(entries.begin(), entries.end());
+      for (const auto& e : entries)
+        m.mirroredTears.push_back({ v, e.first, e.second });
+    }
+    this->DoneFaces += m.NumberOfFaces();
+    this->Report(this->Fraction(this->DoneFaces));
+  }
+
+  bool Prepare(const WorkMesh& w, double eps, PreparedMesh& pm) const
+  {
+    TriangleMesh soup;
+    soup.points = w.points;
+    soup.triangles = w.triangles;
+    std::vector<Vec3> normals;
+    if (!this->InputNormals.empty())
+      for (int v = 0; v < w.NumberOfPoints(); ++v)
+        normals.push_back(this->InputNormals[w.pointOrig[v]]);
+    std::string error;
+    if (!PrepareMesh(soup, normals, pm, error))
+      return false;
+    if (this->Options.connectNearbyParts)
+      LinkNearbyParts(pm, eps);
+    return true;
+  }
+
+  /// S minus the faces whose mirrored vertices are not within eps of S (see the header).
+  std::vector<char> Trim(const WorkMesh& w, const PreparedMesh& pm, std::vector<char> S,
+    const Plane& plane, double eps) const
+  {
+    for (int iteration = 0; iteration < 8; ++iteration)
+    {
+      WorkMesh sub = Extract(w, S);
+      if (sub.NumberOfFaces() == 0)
+        break;
+      TriangleMesh soup;
+      soup.points = sub.points;
+      soup.triangles = sub.triangles;
+      // The region's vertex normals (not the sub-mesh's), as detection used them.
+      std::vector<Vec3> normals(sub.NumberOfPoints());
+      {
+        int next = 0;
+        std::vector<char> used(w.points.size(), 0);
+        for (int f = 0; f < w.NumberOfFaces(); ++f)
+          if (S[f])
+            for (int v : w.triangles[f])
+              used[v] = 1;
+        for (int v = 0; v < w.NumberOfPoints(); ++v)
+          if (used[v])
+            normals[next++] = pm.vertexNormals[v];
+      }
+      PreparedMesh spm;
+      std::string error;
+      if (!PrepareMesh(soup, normals, spm, error))
+        break;
+      MirrorDistance distances(spm, this->Options.symmetry.compatibilityAngle);
+      std::vector<double> d;
+      distances.Compute(plane, DistanceMetric::Fine, eps, d);
+      const std::vector<char> ok = FacesWithVerticesWithin(spm, d, eps, true);
+      if (std::getenv("FT_DEBUG"))
+      {
+        int fin = 0, okc = 0;
+        for (double x : d) fin += std::isfinite(x);
+        for (char x : ok) okc += x;
+        std::fprintf(stderr, "  trim it %d: sub faces %d points %d finite %d ok faces %d\n", iteration, spm.NumberOfFaces(), spm.NumberOfPoints(), fin, okc);
+      }
+      std::vector<char> next = S;
+      bool changed = false;
+      int k = 0;
+      for (int f = 0; f < w.NumberOfFaces(); ++f)
+        if (S[f])
+        {
+          // Degenerate faces have no distance of their own: judged with their neighbours.
+          if (!ok[k] && !spm.faceDegenerate[k])
+          {
+            next[f] = 0;
+            changed = true;
+          }
+          ++k;
+        }
+      if (!changed)
+        break;
+      S = LargestConnectedRegion(pm, next);
+    }
+    return S;
+  }
+
+  bool IsAncestorPlane(const Plane& p, uint64_t pathFolds, const Vec3& at, double eps) const
+  {
+    for (int d = 0; d < MaximumFoldingTreeLevels; ++d)
+      if (pathFolds & (uint64_t(1) << d))
+      {
+        const Plane& q = this->PlaneAtDepth[d];
+        if (PlaneAngleDegrees(p, q) < 2.0 && PlaneOffsetAt(q, p, at) < eps)
+          return true;
+      }
+    return false;
+  }
+
+  /// Builds the subtree of region w; returns its node index.
+  int Build(WorkMesh w, int parent, int depth, double eps, int folds, uint64_t pathFolds)
+  {
+    const int dropped = WeldAndDropCollapsed(w);
+    if (parent < 0)
+      this->Tree.numberOfDroppedFaces = dropped;
+    const int index = this->NewNode(parent, depth, eps, folds, w);
+    const FoldingTreeOptions& O = this->Options;
+    const int nf = w.NumberOfFaces();
+    const double area = this->Tree.nodes[index].area;
+
+    if (this->Aborted)
+      return this->MakeLeaf(index, w, LeafReason::Aborted), index;
+    if (O.useMinimumFaces && nf < O.minimumFaces)
+      return this->MakeLeaf(index, w, LeafReason::MinimumFaces), index;
+    if (O.useMinimumAreaFraction && area < O.minimumAreaFraction * this->Tree.originalArea)
+      return this->MakeLeaf(index, w, LeafReason::MinimumArea), index;
+    if (O.useMaximumFolds && folds >= O.maximumFolds)
+      return this->MakeLeaf(index, w, LeafReason::MaximumFolds), index;
+    // A segmentation needs two more levels (its folding child and the kept half).
+    if (depth + 2 > this->MaximumDepth)
+      return this->MakeLeaf(index, w, LeafReason::MaximumDepth), index;
+
+    PreparedMesh pm;
+    if (nf == 0 || !this->Prepare(w, eps, pm) || pm.NumberOfPoints() != w.NumberOfPoints())
+      return this->MakeLeaf(index, w, LeafReason::DetectionFailed), index;
+    w.triangles = pm.triangles; // oriented
+
+    SymmetryOptions so = O.symmetry;
+    so.epsilon = eps;
+    const double base = this->Fraction(this->DoneFaces);
+    const double span = 0.5 * this->Fraction(nf);
+    so.progress = [&](double p) { return this->Report(base + p * span); };
+    const SymmetryResult result = DetectSymmetry(pm, so);
+    FoldingNode& node = this->Tree.nodes[index];
+    node.detectionRun = true;
+    if (result.aborted || this->Aborted)
+    {
+      this->Aborted = true;
+      return this->MakeLeaf(index, w, LeafReason::Aborted), index;
+    }
+
+    std::vector<char> S(nf, 0);
+    bool any = false;
+    for (int f = 0; f < nf; ++f)
+    {
+      S[f] = result.faceLabel[f] == 2;
+      any = any || S[f];
+    }
+    const Plane plane = result.plane;
+    if (std::getenv("FT_DEBUG"))
+      std::fprintf(stderr, "detect depth %d faces %d found %d frac %.3f rms/eps %.3f\n", depth, nf,
+        int(result.found), result.symmetricAreaFraction, result.rmsResidual / eps),
+      std::fprintf(stderr, "  n = %.4f %.4f %.4f o = %.4f %.4f %.4f\n", plane.normal.x(), plane.normal.y(), plane.normal.z(), plane.origin.x(), plane.origin.y(), plane.origin.z());
+    if (any && O.trimToMirrorConsistent)
+      S = this->Trim(w, pm, S, plane, eps);
+    if (std::getenv("FT_DEBUG"))
+    {
+      int c = 0;
+      for (char x : S)
+        c += x;
+      std::fprintf(stderr, "  after trim %d faces\n", c);
+    }
+    // Input-degenerate faces (never in S: detection ignores them) follow S when all their
+    // vertices are vertices of S.
+    {
+      std::vector<char> inS(w.points.size(), 0);
+      for (int f = 0; f < nf; ++f)
+        if (S[f])
+          for (int v : w.triangles[f])
+            inS[v] = 1;
+      for (int f = 0; f < nf; ++f)
+        if (pm.faceDegenerate[f] && inS[w.triangles[f][0]] && inS[w.triangles[f][1]] &&
+          inS[w.triangles[f][2]])
+          S[f] = 1;
+    }
+    const double sArea = RegionArea(pm, S);
+    int sFaces = 0;
+    for (char s : S)
+      sFaces += s;
+    node.symmetricAreaFraction = pm.totalArea > 0 ? sArea / pm.totalArea : 0.0;
+
+    bool meaningful = sFaces > 0;
+    if (O.requireMeaningfulSymmetry)
+    {
+      meaningful = meaningful && result.found &&
+        node.symmetricAreaFraction >= O.symmetry.minimumSymmetricAreaFraction &&
+        sFaces >= (O.useMinimumFaces ? std::max(1, O.minimumFaces) : 1);
+      Vec3 centroid = Vec3::Zero();
+      double total = 0.0;
+      for (int f = 0; f < nf; ++f)
+        if (S[f])
+        {
+          centroid += pm.faceAreas[f] * pm.faceCentroids[f];
+          total += pm.faceAreas[f];
+        }
+      if (total > 0)
+        centroid /= total;
+      meaningful = meaningful && !this->IsAncestorPlane(plane, pathFolds, centroid, eps);
+    }
+    if (!meaningful)
+      return this->MakeLeaf(index, w, LeafReason::NoSymmetry), index;
+
+    std::vector<char> rest(nf, 0);
+    for (int f = 0; f < nf; ++f)
+      rest[f] = !S[f];
+    std::vector<int> labels;
+    const int n = LabelConnectedRegions(pm, rest, labels);
+    if (n == 0)
+    {
+      this->Fold(index, std::move(w), plane, depth, eps, folds, pathFolds);
+      return index;
+    }
+
+    node.kind = FoldingNodeKind::Segmentation;
+    // Tear vertices: used by faces of two different children (S is child 0).
+    {
+      std::vector<int> firstChild(w.points.size(), -1);
+      std::vector<char> tear(w.points.size(), 0);
+      for (int f = 0; f < nf; ++f)
+      {
+        const int child = S[f] ? 0 : 1 + labels[f];
+        for (int v : w.triangles[f])
+        {
+          if (firstChild[v] < 0)
+            firstChild[v] = child;
+          else if (firstChild[v] != child)
+            tear[v] = 1;
+        }
+      }
+      for (int v = 0; v < w.NumberOfPoints(); ++v)
+        if (tear[v])
+          w.tear[v] |= uint64_t(1) << depth;
+    }
+    WorkMesh ws = Extract(w, S);
+    std::vector<WorkMesh> regions(n);
+    {
+      std::vector<char> mask(nf);
+      for (int r = 0; r < n; ++r)
+      {
+        for (int f = 0; f < nf; ++f)
+          mask[f] = labels[f] == r;
+        regions[r] = Extract(w, mask);
+      }
+    }
+    // fold(S): a folding node one level down, then the remaining components.
+    {
+      const int foldIndex = this->NewNode(index, depth + 1, eps, folds, ws);
+      this->Tree.nodes[foldIndex].symmetricAreaFraction = 1.0;
+      this->Fold(foldIndex, std::move(ws), plane, depth + 1, eps, folds, pathFolds);
+    }
+    for (int r = 0; r < n; ++r)
+      this->Build(std::move(regions[r]), index, depth + 1, eps, folds, pathFolds);
+    return index;
+  }
+
+  /**
+   * Tear vertices that the fold at `depth` removes (not used by a kept face) are recorded on
+   * the kept vertex nearest to their mirror image (within eps): see MirroredTear.
+   */
+  void TransferDiscardedTears(WorkMesh& w, const std::vector<char>& used, const Plane& plane,
+    int depth, double eps) const
+  {
+    const uint64_t bit = uint64_t(1) << depth;
+    std::vector<int> lost;
+    for (int v = 0; v < w.NumberOfPoints(); ++v)
+      if (!used[v] && (w.tear[v] != 0 || !w.mirrorTears[v].empty()))
+        lost.push_back(v);
+    if (lost.empty())
+      return;
+    const double cell = std::max(eps, 1e-12 * this->Tree.diagonal);
+    auto key = [&](const Vec3& x)
+    {
+      return std::array<long long, 3>{ static_cast<long long>(std::floor(x.x() / cell)),
+        static_cast<long long>(std::floor(x.y() / cell)),
+        static_cast<long long>(std::floor(x.z() / cell)) };
+    };
+    std::map<std::array<long long, 3>, std::vector<int>> cells;
+    for (int v = 0; v < w.NumberOfPoints(); ++v)
+      if (used[v])
+        cells[key(w.points[v])].push_back(v);
+    for (int t : lost)
+    {
+      const Vec3 r = plane.Reflect(w.points[t]);
+      const auto c = key(r);
+      int best = -1;
+      double bestDistance = eps;
+      for (long long dx = -1; dx <= 1; ++dx)
+        for (long long dy = -1; dy <= 1; ++dy)
+          for (long long dz = -1; dz <= 1; ++dz)
+          {
+            auto it = cells.find({ c[0] + dx, c[1] + dy, c[2] + dz });
+            if (it == cells.end())
+              continue;
+            for (int v : it->second)
+            {
+              const double d = (w.points[v] - r).norm();
+              if (d <= bestDistance && (best < 0 || d < bestDistance || v < best))
+              {
+                bestDistance = d;
+                best = v;
+              }
+            }
+          }
+      if (best < 0)
+        continue;
+      auto& into = w.mirrorTears[best];
+      for (int level = 0; level < depth; ++level)
+        if (w.tear[t] & (uint64_t(1) << level))
+          into.push_back({ level, bit });
+      for (const auto& e : w.mirrorTears[t])
+        into.push_back({ e.first, e.second | bit });
+      std::sort(into.begin(), into.end());
+      into.erase(std::unique(into.begin(), into.end()), into.end());
+    }
+  }
+
+  /// Turns node `index` (region w) into a folding node and builds the kept half below it.
+  void Fold(int index, WorkMesh w, Plane plane, int depth, double eps,
+    int folds, uint64_t pathFolds)
+  {
+    const FoldingTreeOptions& O = this->Options;
+    const int nf = w.NumberOfFaces();
+    int positive = 0, negative = 0;
+    for (const Triangle& t : w.triangles)
+    {
+      const Vec3 c = (w.points[t[0]] + w.points[t[1]] + w.points[t[2]]) / 3.0;
+      const double s = plane.SignedDistance(c);
+      positive += s > 0;
+      negative += s < 0;
+    }
+    const bool keepPositive =
+      O.keepSide == KeepSide::MoreFaces ? positive >= negative : positive <= negative;
+    if (!keepPositive)
+      plane.normal = -plane.normal;
+
+    const double snap = std::max(O.planeSnapFraction * eps, 1e-12 * this->Tree.diagonal);
+    std::vector<int> side(w.points.size());
+    for (int v = 0; v < w.NumberOfPoints(); ++v)
+    {
+      const double s = plane.SignedDistance(w.points[v]);
+      side[v] = s > snap ? 1 : (s < -snap ? -1 : 0);
+    }
+    std::vector<char> keep(nf, 0);
+    std::vector<int> discarded;
+    for (int f = 0; f < nf; ++f)
+    {
+      const Triangle& t = w.triangles[f];
+      const int hi = std::max({ side[t[0]], side[t[1]], side[t[2]] });
+      const int lo = std::min({ side[t[0]], side[t[1]], side[t[2]] });
+      keep[f] = hi == 1 || (hi == 0 && lo == 0);
+      if (!keep[f])
+        discarded.push_back(w.faceOrig[f]);
+    }
+    std::vector<char> used(w.points.size(), 0);
+    for (int f = 0; f < nf; ++f)
+      if (keep[f])
+        for (int v : w.triangles[f])
+          used[v] = 1;
+    this->TransferDiscardedTears(w, used, plane, depth, eps);
+    int projected = 0;
+    const uint64_t bit = uint64_t(1) << depth;
+    for (int v = 0; v < w.NumberOfPoints(); ++v)
+    {
+      if (!used[v] || side[v] > 0)
+        continue;
+      std::vector<Plane> constraints{ plane };
+      for (int d = 0; d < depth; ++d)
+        if ((w.onPlane[v] & (uint64_t(1) << d)) && (pathFolds & (uint64_t(1) << d)))
+          constraints.push_back(this->PlaneAtDepth[d]);
+      w.points[v] = ProjectOntoPlanes(w.points[v], constraints);
+      w.onPlane[v] |= bit;
+      if (side[v] < 0)
+      {
+        w.projected[v] = 1;
+        ++projected;
+      }
+    }
+
+    FoldingNode& node = this->Tree.nodes[index];
+    node.kind = FoldingNodeKind::Folding;
+    node.plane = plane;
+    node.discardedFaces = static_cast<int>(discarded.size());
+    node.projectedPoints = projected;
+    std::sort(discarded.begin(), discarded.end());
+    node.discardedOriginalFaces = std::move(discarded);
+    this->DoneFaces += node.discardedFaces;
+    this->Report(this->Fraction(this->DoneFaces));
+
+    this->PlaneAtDepth[depth] = plane;
+    WorkMesh half = Extract(w, keep);
+    this->Build(std::move(half), index, depth + 1, 0.5 * eps, folds + 1, pathFolds | bit);
+  }
+
+  const FoldingTreeOptions& Options;
+  const std::vector<Vec3>& InputNormals;
+  FoldingTree& Tree;
+  std::vector<Plane> PlaneAtDepth;
+  int MaximumDepth = 48;
+  double DoneFaces = 0.0;
+  double LastProgress = 0.0;
+};
+}
+
+bool BuildFoldingTree(const TriangleMesh& input,
+  const std::vector<Vec3>& inputNormals,
+  const FoldingTreeOptions& options,
+  FoldingTree& tree,
+  std::string& error)
+{
+  const auto start = std::chrono::steady_clock::now();
+  tree = FoldingTree();
+  error.clear();
+  if (!(options.epsilon > 0.0) || !std::isfinite(options.epsilon))
+  {
+    error = "the root epsilon must be a positive, finite length";
+    return false;
+  }
+  if (!(options.minimumAreaFraction >= 0.0 && options.minimumAreaFraction <= 1.0))
+  {
+    error = "minimumAreaFraction must be within [0, 1]";
+    return false;
+  }
+  if (!(options.planeSnapFraction >= 0.0 && options.planeSnapFraction < 1.0))
+  {
+    error = "planeSnapFraction must be within [0, 1)";
+    return false;
+  }
+  if (input.points.empty() || input.triangles.empty())
+  {
+    error = "the input mesh is empty";
+    return false;
+  }
+  const int np = static_cast<int>(input.points.size());
+  if (!inputNormals.empty() && static_cast<int>(inputNormals.size()) != np)
+  {
+    error = "inputNormals must be empty or have one normal per input point";
+    return false;
+  }
+  for (const Vec3& p : input.points)
+    if (!p.allFinite())
+    {
+      error = "the input has non-finite point coordinates";
+      return false;
+    }
+  for (const Triangle& t : input.triangles)
+    for (int v : t)
+      if (v < 0 || v >= np)
+      {
+        error = "a triangle refers to a point index out of range";
+        return false;
+      }
+
+  WorkMesh root;
+  root.points = input.points;
+  root.triangles = input.triangles;
+  root.pointOrig.resize(np);
+  std::iota(root.pointOrig.begin(), root.pointOrig.end(), 0);
+  root.faceOrig.resize(input.triangles.size());
+  std::iota(root.faceOrig.begin(), root.faceOrig.end(), 0);
+  root.tear.assign(np, 0);
+  root.onPlane.assign(np, 0);
+  root.projected.assign(np, 0);
+  root.mirrorTears.assign(np, {});
+
+  tree.numberOfOriginalFaces = static_cast<int>(input.triangles.size());
+  tree.numberOfOriginalPoints = np;
+  tree.rootEpsilon = options.epsilon;
+  {
+    Vec3 lo = Vec3::Constant(std::numeric_limits<double>::max());
+    Vec3 hi = -lo;
+    for (const Triangle& t : input.triangles)
+      for (int v : t)
+      {
+        lo = lo.cwiseMin(input.points[v]);
+        hi = hi.cwiseMax(input.points[v]);
+      }
+    tree.diagonal = (hi - lo).norm();
+    double area = 0.0;
+    for (const Triangle& t : input.triangles)
+      area += TriangleArea(root, t);
+    tree.originalArea = area;
+  }
+  if (!(tree.originalArea > 0.0))
+  {
+    error = "the input mesh has zero area";
+    tree = FoldingTree();
+    return false;
+  }
+
+  Builder builder(options, inputNormals, tree);
+  builder.Run(std::move(root));
+  tree.aborted = builder.Aborted;
+  tree.buildSeconds =
+    std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return true;
+}
+}

@@ -1,0 +1,106 @@
+// Folding tree construction (the paper's section 4.2), in preorder, on plain triangle meshes.
+#ifndef foldingmeshes_FoldingTreeBuilder_h
+#define foldingmeshes_FoldingTreeBuilder_h
+
+#include "FoldingTree.h"
+#include "SymmetryDetection.h"
+
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace foldingmeshes
+{
+/// Which half of a symmetric region a fold keeps.
+enum class KeepSide
+{
+  MoreFaces,  ///< the paper's choice: preserves detail
+  FewerFaces  ///< the paper's alternative: minimises storage
+};
+
+struct FoldingTreeOptions
+{
+  /// Root tolerance as an absolute length (required, > 0). The paper's default is 2% of the
+  /// bounding-box diagonal; the caller computes it. Halved below every folding node.
+  double epsilon = 0.0;
+  /// Detection settings for every node. `epsilon` and `progress` are overwritten per node.
+  SymmetryOptions symmetry;
+
+  // ---- stop criteria: a region becomes a leaf when any enabled one holds ----
+  bool useMinimumFaces = true;
+  int minimumFaces = 50; ///< leaf when the region has fewer faces
+  bool useMinimumAreaFraction = true;
+  double minimumAreaFraction = 0.05; ///< leaf when area < this * original area (paper default)
+  bool useMaximumFolds = true;
+  int maximumFolds = 8; ///< leaf when this many folds are already above the region
+  /**
+   * Leaf when there is no meaningful symmetric region: DetectSymmetry's `found` is false
+   * (area(S) >= symmetry.minimumSymmetricAreaFraction * area(region) and RMS residual
+   * <= 0.35 epsilon), or S (after trimming, below) has fewer than minimumFaces faces, or its
+   * plane is a fold plane already used on the path from the root (a half re-detecting its
+   * own fold plane only finds a strip along the cut). Switched off, any non-empty S is folded.
+   */
+  bool requireMeaningfulSymmetry = true;
+  /// Hard bound on the tree depth (clamped to MaximumFoldingTreeLevels - 1); bounds recursion.
+  int maximumDepth = 48;
+
+  KeepSide keepSide = KeepSide::MoreFaces;
+  /// Link parts closer than the node epsilon (LinkNearbyParts) for detection and for the
+  /// connected components of the remaining faces, as vtkSymmetryPlaneDetector does.
+  bool connectNearbyParts = true;
+  /**
+   * Trim S to its mirror-consistent part before folding: faces of S one of whose mirrored
+   * vertices is not within epsilon of S itself (only of faces outside S, e.g. an attachment
+   * next to its mirror position) move to the remaining faces (repeated until stable, then the
+   * largest connected part is kept). Without it S' U reflect(S') may overlap the attachment
+   * and leave holes where S was not symmetric.
+   */
+  bool trimToMirrorConsistent = true;
+  /**
+   * Vertices within planeSnapFraction * epsilon of a fold plane count as lying on it: they
+   * are snapped onto it (and flagged in planeMask) so the unfolder closes the fold line.
+   */
+  double planeSnapFraction = 0.01;
+
+  /// Called with overall progress in [0,1]; return false to abort (the tree built so far is
+  /// returned with `aborted` set; unfinished regions become Aborted leaves).
+  std::function<bool(double)> progress;
+};
+
+/**
+ * Builds the folding tree of `input` (paper §4.2), in preorder:
+ * 1. A region that meets a stop criterion becomes a leaf.
+ * 2. Otherwise the region is prepared (PrepareMesh: welding, orientation; LinkNearbyParts)
+ *    and DetectSymmetry finds S and p with the node's epsilon. S is trimmed (see
+ *    trimToMirrorConsistent); input-degenerate faces whose vertices all belong to S join S.
+ * 3. The remaining faces split into connected components R1..Rn (edge adjacency plus the
+ *    proximity links). n == 0 (global symmetry): the node is a Folding node. n > 0: a
+ *    Segmentation node with children fold(S) (a Folding node one level down) and a subtree
+ *    per Ri in order of their lowest face id; vertices used by faces of two different
+ *    children get this node's tear bit.
+ * 4. fold(S): faces are counted on each side of p by centroid and the side chosen by
+ *    keepSide is kept (ties: the side the canonical normal points to); the stored plane's
+ *    normal points into the kept side. Vertices within the snap distance of p are "on" p.
+ *    A face is kept if a vertex is strictly on the kept side, or if all its vertices are on
+ *    p (a face lying in the plane; the unfolder does not duplicate it); all other faces are
+ *    removed. Vertices of kept faces that are on p or on the discarded side are projected
+ *    onto p - and onto every ancestor fold plane they lie on (closest point of the
+ *    intersection), so earlier fold lines stay closed - and flagged in planeMask.
+ *    Faces collapsed by the projection (two vertices welded) are dropped. The kept half is
+ *    built recursively with epsilon / 2 and one more fold; it may fold again.
+ * Original ids: each leaf point knows the input point it comes from (for points welded by
+ * PrepareMesh, the first input point of the group), each leaf triangle its input triangle.
+ * Input triangles with a repeated vertex index are dropped and counted
+ * (FoldingTree::numberOfDroppedFaces); other zero-area triangles are kept.
+ * `inputNormals` (empty, or one per input point) are used for detection as in PrepareMesh.
+ * Deterministic for given options. Returns false with `error` set on invalid input or
+ * options (the tree is then empty); an abort returns true with tree.aborted set.
+ */
+bool BuildFoldingTree(const TriangleMesh& input,
+  const std::vector<Vec3>& inputNormals,
+  const FoldingTreeOptions& options,
+  FoldingTree& tree,
+  std::string& error);
+}
+
+#endif

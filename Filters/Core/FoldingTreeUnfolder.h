@@ -1,0 +1,126 @@
+// Reconstruction of a mesh from its folding tree (the paper's section 4.3): postorder
+// unfolding, closing of fold lines, stitching and smoothing of segmentation tears.
+#ifndef foldingmeshes_FoldingTreeUnfolder_h
+#define foldingmeshes_FoldingTreeUnfolder_h
+
+#include "FoldingTree.h"
+
+#include <Eigen/Core>
+
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace foldingmeshes
+{
+struct UnfoldOptions
+{
+  /// Stitch and smooth the tears at segmentation nodes; false gives the raw union.
+  bool stitch = true;
+  /// Tear vertices of different children closer than stitchToleranceScale * (the
+  /// segmentation node's epsilon) may be merged.
+  double stitchToleranceScale = 1.0;
+  /// Constrained Laplacian smoothing of the seam after stitching: only the merged vertices
+  /// whose cluster spread exceeds exactStitchFraction * epsilon move (exactly coincident
+  /// partners - the usual case for symmetric tessellations - are left where they are); each
+  /// iteration moves them by smoothingWeight towards the mean of their 1-ring.
+  int smoothingIterations = 3;
+  double smoothingWeight = 0.5;
+  double exactStitchFraction = 1e-3;
+  /// Besides the vertices flagged in planeMask, vertices within planeTolerance * diagonal of
+  /// a fold plane are merged with their mirror images.
+  double planeTolerance = 1e-9;
+  /// Called with progress in [0,1]; return false to abort.
+  std::function<bool(double)> progress;
+};
+
+/**
+ * One copy of a leaf in the unfolded mesh: the leaf's points mapped by x -> linear * x +
+ * translation, the composition of the reflections applied on the way up (identity for the
+ * leaf itself). mirrorMask has bit d set when the copy was reflected by the folding node at
+ * depth d; `mirrored` is true for an odd number of reflections (then the orientation of
+ * the copy's triangles was reversed, and 3-component vectors must be multiplied by
+ * `linear` - a reflection, determinant -1 - to follow the geometry).
+ * Points moved by plane merging or stitching differ from the affine map by at most the
+ * stitching tolerance.
+ */
+struct UnfoldCopy
+{
+  int leaf = -1; ///< node index of the leaf
+  uint64_t mirrorMask = 0;
+  bool mirrored = false;
+  Eigen::Matrix3d linear = Eigen::Matrix3d::Identity();
+  Vec3 translation = Vec3::Zero();
+};
+
+/// What happened at one segmentation node.
+struct SeamReport
+{
+  int node = -1;
+  int depth = 0;
+  int tearVertices = 0;      ///< vertices carrying this level's tear bit before stitching
+  int stitchedVertices = 0;  ///< of those, merged with a partner of another child
+  int unmatchedTearVertices = 0;
+  int gapEdges = 0;          ///< boundary edges left between two tear vertices of this level
+  double gapLength = 0.0;
+  int smoothedVertices = 0;
+  int droppedFaces = 0;      ///< faces collapsed or duplicated by the merge
+  double maximumStitchDistance = 0.0; ///< largest distance of a merged vertex to its cluster mean
+};
+
+struct UnfoldedMesh
+{
+  std::vector<Vec3> points;
+  std::vector<Triangle> triangles;
+
+  std::vector<int> pointOriginalIds; ///< input point id of the leaf point copied
+  std::vector<int> pointCopy;        ///< index into copies (a merged point: the lowest one)
+  std::vector<char> pointMirrored;   ///< the copy was reflected an odd number of times
+
+  std::vector<int> faceOriginalIds; ///< input triangle id
+  std::vector<int> faceLeaf;        ///< node index of the leaf the face comes from
+  std::vector<int> faceCopy;        ///< index into copies
+  std::vector<char> faceMirrored;
+
+  std::vector<UnfoldCopy> copies;
+
+  // Report.
+  int planeMergedVertices = 0; ///< vertices shared by a copy and its mirror image (fold lines)
+  int droppedMirrorFaces = 0;  ///< faces lying in a fold plane, not duplicated
+  std::vector<SeamReport> seams; ///< one per segmentation node (postorder)
+  int stitchedVertices = 0;      ///< sums over the seams
+  int unmatchedTearVertices = 0;
+  int gapEdges = 0;
+  double gapLength = 0.0;
+  bool aborted = false;
+
+  int NumberOfPoints() const { return static_cast<int>(points.size()); }
+  int NumberOfFaces() const { return static_cast<int>(triangles.size()); }
+};
+
+/**
+ * unfold(T) by a postorder traversal (paper §4.3):
+ * - leaf: its mesh (one copy);
+ * - folding node: unfold(child) U reflect(unfold(child), p). The reflected triangles are
+ *   reversed, so the result stays consistently oriented. Vertices flagged on p (planeMask
+ *   bit of the node's depth) or within planeTolerance of it are not duplicated: the mirrored
+ *   triangles use them, and they are projected exactly onto p, so the fold line is closed.
+ *   Triangles whose three vertices are on p are not duplicated.
+ * - segmentation node: the union of the children; then (stitch on) each vertex carrying the
+ *   node's tear bit proposes the nearest tear vertex of another child within the tolerance;
+ *   proposals are accepted by increasing distance (union-find) unless they would merge two
+ *   vertices of the same child; each cluster becomes one vertex at its mean; collapsed and
+ *   duplicate triangles are dropped; the seam is smoothed (UnfoldOptions). Tear vertices
+ *   left unmatched and the boundary edges between tear vertices are reported per node
+ *   (SeamReport) and in total - never hidden.
+ * Returns false with `error` set when the tree is invalid (FoldingTree::Validate).
+ * Deterministic.
+ */
+bool UnfoldFoldingTree(const FoldingTree& tree,
+  const UnfoldOptions& options,
+  UnfoldedMesh& result,
+  std::string& error);
+}
+
+#endif

@@ -1,0 +1,483 @@
+#include "MeshPreparation.h"
+
+#include <Eigen/Geometry>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <numeric>
+#include <queue>
+#include <unordered_map>
+
+namespace foldingmeshes
+{
+namespace
+{
+struct EdgeUse
+{
+  int a, b;   // sorted vertex ids
+  int face;   // face using the edge
+  bool along; // the face traverses a -> b
+  bool operator<(const EdgeUse& o) const
+  {
+    return a != o.a ? a < o.a : (b != o.b ? b < o.b : face < o.face);
+  }
+};
+
+int FindRoot(std::vector<int>& parent, int i)
+{
+  while (parent[i] != i)
+  {
+    parent[i] = parent[parent[i]];
+    i = parent[i];
+  }
+  return i;
+}
+
+void Unite(std::vector<int>& parent, int a, int b)
+{
+  a = FindRoot(parent, a);
+  b = FindRoot(parent, b);
+  if (a != b)
+  {
+    parent[std::max(a, b)] = std::min(a, b);
+  }
+}
+
+void WeldPoints(const TriangleMesh& input, PreparedMesh& mesh)
+{
+  const int n = static_cast<int>(input.points.size());
+  std::vector<int> order(n);
+  std::iota(order.begin(), order.end(), 0);
+  const auto& p = input.points;
+  std::sort(order.begin(),
+    order.end(),
+    [&](int i, int j)
+    {
+      if (p[i].x() != p[j].x())
+        return p[i].x() < p[j].x();
+      if (p[i].y() != p[j].y())
+        return p[i].y() < p[j].y();
+      if (p[i].z() != p[j].z())
+        return p[i].z() < p[j].z();
+      return i < j;
+    });
+  // Welded ids follow the first input id of each group, so the result is order-stable.
+  std::vector<int> groupFirst(n, -1);
+  for (int k = 0; k < n;)
+  {
+    int e = k;
+    while (e < n && p[order[e]] == p[order[k]])
+      ++e;
+    for (int m = k; m < e; ++m)
+      groupFirst[order[m]] = order[k];
+    k = e;
+  }
+  mesh.inputToWelded.assign(n, -1);
+  mesh.points.clear();
+  mesh.weldedToInput.clear();
+  for (int i = 0; i < n; ++i)
+  {
+    if (groupFirst[i] == i)
+    {
+      mesh.inputToWelded[i] = static_cast<int>(mesh.points.size());
+      mesh.points.push_back(p[i]);
+      mesh.weldedToInput.push_back(i);
+    }
+  }
+  for (int i = 0; i < n; ++i)
+    mesh.inputToWelded[i] = mesh.inputToWelded[groupFirst[i]];
+}
+
+void BuildCsr(int count,
+  const std::vector<std::pair<int, int>>& pairs,
+  std::vector<int>& offsets,
+  std::vector<int>& values)
+{
+  offsets.assign(count + 1, 0);
+  for (const auto& pr : pairs)
+    ++offsets[pr.first + 1];
+  std::partial_sum(offsets.begin(), offsets.end(), offsets.begin());
+  values.assign(pairs.size(), 0);
+  std::vector<int> fill(offsets.begin(), offsets.end() - 1);
+  for (const auto& pr : pairs)
+    values[fill[pr.first]++] = pr.second;
+}
+
+/// Breadth-first orientation of each part; returns per-face flip flags.
+std::vector<char> OrientFaces(PreparedMesh& mesh, const std::vector<EdgeUse>& uses)
+{
+  const int nf = mesh.NumberOfFaces();
+  // For manifold edges: the two faces and whether they traverse it in the same direction.
+  std::vector<std::vector<std::pair<int, bool>>> links(nf);
+  for (size_t k = 0; k < uses.size();)
+  {
+    size_t e = k;
+    while (e < uses.size() && uses[e].a == uses[k].a && uses[e].b == uses[k].b)
+      ++e;
+    if (e - k == 2)
+    {
+      const bool same = uses[k].along == uses[k + 1].along;
+      links[uses[k].face].push_back({ uses[k + 1].face, same });
+      links[uses[k + 1].face].push_back({ uses[k].face, same });
+    }
+    k = e;
+  }
+  std::vector<char> flip(nf, 0), seen(nf, 0);
+  for (int seed = 0; seed < nf; ++seed)
+  {
+    if (seen[seed])
+      continue;
+    seen[seed] = 1;
+    std::queue<int> todo;
+    todo.push(seed);
+    while (!todo.empty())
+    {
+      const int f = todo.front();
+      todo.pop();
+      for (const auto& [g, same] : links[f])
+      {
+        if (!seen[g])
+        {
+          seen[g] = 1;
+          flip[g] = same ? !flip[f] : flip[f];
+          todo.push(g);
+        }
+      }
+    }
+  }
+  return flip;
+}
+}
+
+bool PrepareMesh(const TriangleMesh& input,
+  const std::vector<Vec3>& inputNormals,
+  PreparedMesh& mesh,
+  std::string& error)
+{
+  mesh = PreparedMesh();
+  if (input.points.empty() || input.triangles.empty())
+  {
+    error = "the mesh has no triangles";
+    return false;
+  }
+  for (const Vec3& p : input.points)
+  {
+    if (!p.allFinite())
+    {
+      error = "the mesh has NaN or infinite point coordinates";
+      return false;
+    }
+  }
+  const int np = static_cast<int>(input.points.size());
+  for (const Triangle& t : input.triangles)
+  {
+    for (int v : t)
+    {
+      if (v < 0 || v >= np)
+      {
+        error = "a triangle refers to a point that does not exist";
+        return false;
+      }
+    }
+  }
+  WeldPoints(input, mesh);
+  const int nf = static_cast<int>(input.triangles.size());
+  mesh.triangles.resize(nf);
+  for (int f = 0; f < nf; ++f)
+    for (int k = 0; k < 3; ++k)
+      mesh.triangles[f][k] = mesh.inputToWelded[input.triangles[f][k]];
+
+  mesh.boundsMin = mesh.points[0];
+  mesh.boundsMax = mesh.points[0];
+  for (const Vec3& p : mesh.points)
+  {
+    mesh.boundsMin = mesh.boundsMin.cwiseMin(p);
+    mesh.boundsMax = mesh.boundsMax.cwiseMax(p);
+  }
+  mesh.diagonal = (mesh.boundsMax - mesh.boundsMin).norm();
+
+  // Areas and degeneracy (before orientation: independent of it).
+  mesh.faceAreas.assign(nf, 0.0);
+  mesh.faceDegenerate.assign(nf, 0);
+  const double areaFloor = 1e-14 * mesh.diagonal * mesh.diagonal;
+  for (int f = 0; f < nf; ++f)
+  {
+    const Triangle& t = mesh.triangles[f];
+    const double area = 0.5 *
+      (mesh.points[t[1]] - mesh.points[t[0]]).cross(mesh.points[t[2]] - mesh.points[t[0]]).norm();
+    const bool repeated = t[0] == t[1] || t[1] == t[2] || t[0] == t[2];
+    mesh.faceDegenerate[f] = repeated || !(area > areaFloor);
+    mesh.faceAreas[f] = repeated ? 0.0 : area;
+    mesh.totalArea += mesh.faceAreas[f];
+  }
+  if (!(mesh.totalArea > 0.0) || !(mesh.diagonal > 0.0))
+  {
+    error = "the mesh has zero area";
+    return false;
+  }
+
+  // Edge uses of faces with three distinct vertices.
+  std::vector<EdgeUse> uses;
+  uses.reserve(3 * static_cast<size_t>(nf));
+  for (int f = 0; f < nf; ++f)
+  {
+    const Triangle& t = mesh.triangles[f];
+    if (t[0] == t[1] || t[1] == t[2] || t[0] == t[2])
+      continue;
+    for (int k = 0; k < 3; ++k)
+    {
+      const int u = t[k], v = t[(k + 1) % 3];
+      uses.push_back({ std::min(u, v), std::max(u, v), f, u < v });
+    }
+  }
+  std::sort(uses.begin(), uses.end());
+
+  // Parts, adjacency, edge statistics.
+  std::vector<int> parent(nf);
+  std::iota(parent.begin(), parent.end(), 0);
+  std::vector<std::pair<int, int>> adjacent;
+  for (size_t k = 0; k < uses.size();)
+  {
+    size_t e = k;
+    while (e < uses.size() && uses[e].a == uses[k].a && uses[e].b == uses[k].b)
+      ++e;
+    const size_t count = e - k;
+    if (count == 1)
+      ++mesh.numberOfBoundaryEdges;
+    else if (count > 2)
+      ++mesh.numberOfNonManifoldEdges;
+    for (size_t i = k; i < e; ++i)
+      for (size_t j = k; j < e; ++j)
+        if (i != j && uses[i].face != uses[j].face)
+        {
+          adjacent.push_back({ uses[i].face, uses[j].face });
+          Unite(parent, uses[i].face, uses[j].face);
+        }
+    k = e;
+  }
+  std::sort(adjacent.begin(), adjacent.end());
+  adjacent.erase(std::unique(adjacent.begin(), adjacent.end()), adjacent.end());
+  BuildCsr(nf, adjacent, mesh.faceNeighborOffsets, mesh.faceNeighbors);
+
+  mesh.facePart.assign(nf, -1);
+  std::vector<int> partOfRoot(nf, -1);
+  for (int f = 0; f < nf; ++f)
+  {
+    const int r = FindRoot(parent, f);
+    if (partOfRoot[r] < 0)
+      partOfRoot[r] = mesh.numberOfParts++;
+    mesh.facePart[f] = partOfRoot[r];
+  }
+
+  // Orientation: consistent per part, then outward (closed) or majority (open).
+  std::vector<char> flip = OrientFaces(mesh, uses);
+  std::vector<char> partClosed(mesh.numberOfParts, 1);
+  for (size_t k = 0; k < uses.size();)
+  {
+    size_t e = k;
+    while (e < uses.size() && uses[e].a == uses[k].a && uses[e].b == uses[k].b)
+      ++e;
+    if (e - k != 2)
+      partClosed[mesh.facePart[uses[k].face]] = 0;
+    k = e;
+  }
+  std::vector<double> volume(mesh.numberOfParts, 0.0);
+  std::vector<int> flippedCount(mesh.numberOfParts, 0), faceCount(mesh.numberOfParts, 0);
+  const Vec3 center = 0.5 * (mesh.boundsMin + mesh.boundsMax);
+  for (int f = 0; f < nf; ++f)
+  {
+    const Triangle& t = mesh.triangles[f];
+    const double v = (mesh.points[t[0]] - center)
+                       .dot((mesh.points[t[1]] - center).cross(mesh.points[t[2]] - center));
+    volume[mesh.facePart[f]] += flip[f] ? -v : v;
+    flippedCount[mesh.facePart[f]] += flip[f];
+    ++faceCount[mesh.facePart[f]];
+  }
+  for (int f = 0; f < nf; ++f)
+  {
+    const int part = mesh.facePart[f];
+    const bool invert =
+      partClosed[part] ? volume[part] < 0.0 : 2 * flippedCount[part] > faceCount[part];
+    if (invert)
+      flip[f] = !flip[f];
+    if (flip[f])
+    {
+      std::swap(mesh.triangles[f][1], mesh.triangles[f][2]);
+      ++mesh.numberOfFlippedFaces;
+    }
+  }
+
+  // Normals, centroids, vertex areas.
+  const int nv = mesh.NumberOfPoints();
+  mesh.faceNormals.assign(nf, Vec3::Zero());
+  mesh.faceCentroids.assign(nf, Vec3::Zero());
+  mesh.vertexNormals.assign(nv, Vec3::Zero());
+  mesh.vertexAreas.assign(nv, 0.0);
+  std::vector<std::pair<int, int>> incidence;
+  incidence.reserve(3 * static_cast<size_t>(nf));
+  for (int f = 0; f < nf; ++f)
+  {
+    const Triangle& t = mesh.triangles[f];
+    const Vec3 &a = mesh.points[t[0]], &b = mesh.points[t[1]], &c = mesh.points[t[2]];
+    mesh.faceCentroids[f] = (a + b + c) / 3.0;
+    const Vec3 cross = (b - a).cross(c - a);
+    if (!mesh.faceDegenerate[f])
+      mesh.faceNormals[f] = cross.normalized();
+    for (int k = 0; k < 3; ++k)
+    {
+      if (k > 0 && t[k] == t[k - 1])
+        continue;
+      mesh.vertexNormals[t[k]] += 0.5 * cross; // area-weighted
+      mesh.vertexAreas[t[k]] += mesh.faceAreas[f] / 3.0;
+      incidence.push_back({ t[k], f });
+    }
+  }
+  for (Vec3& n : mesh.vertexNormals)
+  {
+    const double len = n.norm();
+    n = len > 0.0 ? Vec3(n / len) : Vec3::Zero();
+  }
+  if (!inputNormals.empty() && inputNormals.size() == input.points.size())
+  {
+    for (int v = 0; v < nv; ++v)
+    {
+      const Vec3& n = inputNormals[mesh.weldedToInput[v]];
+      if (n.allFinite() && n.norm() > 0.0)
+      {
+        // Trust the direction, but keep it on the side of the oriented surface.
+        const Vec3 u = n.normalized();
+        mesh.vertexNormals[v] = u.dot(mesh.vertexNormals[v]) < 0.0 ? Vec3(-u) : u;
+      }
+    }
+  }
+  std::sort(incidence.begin(), incidence.end());
+  BuildCsr(nv, incidence, mesh.vertexFaceOffsets, mesh.vertexFaces);
+  return true;
+}
+
+TriangleMesh SimplifiedMesh(const PreparedMesh& mesh, int targetFaces)
+{
+  TriangleMesh out;
+  const int nf = mesh.NumberOfFaces();
+  if (nf <= targetFaces || targetFaces <= 0)
+  {
+    out.points = mesh.points;
+    out.triangles = mesh.triangles;
+    return out;
+  }
+  // Cell size from the mean face area: a surface of area A holds about A / h^2 cells,
+  // and a cluster mesh has about twice as many faces as vertices.
+  const double h = std::sqrt(2.0 * mesh.totalArea / targetFaces);
+  const int nv = mesh.NumberOfPoints();
+  std::vector<std::pair<unsigned long long, int>> keyed(nv);
+  for (int v = 0; v < nv; ++v)
+  {
+    const Eigen::Vector3d q = ((mesh.points[v] - mesh.boundsMin) / h).array().floor();
+    const auto i = static_cast<unsigned long long>(q.x()), j = static_cast<unsigned long long>(q.y()),
+               k = static_cast<unsigned long long>(q.z());
+    keyed[v] = { (i << 42) | (j << 21) | k, v };
+  }
+  std::sort(keyed.begin(), keyed.end());
+  std::vector<int> cluster(nv, -1);
+  std::vector<double> weight;
+  for (int m = 0; m < nv; ++m)
+  {
+    if (m == 0 || keyed[m].first != keyed[m - 1].first)
+    {
+      out.points.push_back(Vec3::Zero());
+      weight.push_back(0.0);
+    }
+    const int v = keyed[m].second;
+    const int c = static_cast<int>(out.points.size()) - 1;
+    cluster[v] = c;
+    const double w = mesh.vertexAreas[v] > 0.0 ? mesh.vertexAreas[v] : 1e-30;
+    out.points[c] += w * mesh.points[v];
+    weight[c] += w;
+  }
+  for (size_t c = 0; c < out.points.size(); ++c)
+    out.points[c] /= weight[c];
+  std::vector<std::array<int, 3>> seen;
+  for (int f = 0; f < nf; ++f)
+  {
+    if (mesh.faceDegenerate[f])
+      continue;
+    Triangle t{ cluster[mesh.triangles[f][0]], cluster[mesh.triangles[f][1]],
+      cluster[mesh.triangles[f][2]] };
+    if (t[0] == t[1] || t[1] == t[2] || t[0] == t[2])
+      continue;
+    std::array<int, 3> sorted = t;
+    std::sort(sorted.begin(), sorted.end());
+    seen.push_back(sorted);
+    out.triangles.push_back(t);
+  }
+  // Drop duplicates (two faces collapsing onto the same cluster triangle).
+  std::vector<int> order(out.triangles.size());
+  std::iota(order.begin(), order.end(), 0);
+  std::sort(order.begin(), order.end(), [&](int a, int b) {
+    return seen[a] != seen[b] ? seen[a] < seen[b] : a < b;
+  });
+  std::vector<char> keep(out.triangles.size(), 1);
+  for (size_t m = 1; m < order.size(); ++m)
+    if (seen[order[m]] == seen[order[m - 1]])
+      keep[order[m]] = 0;
+  std::vector<Triangle> kept;
+  for (size_t m = 0; m < out.triangles.size(); ++m)
+    if (keep[m])
+      kept.push_back(out.triangles[m]);
+  out.triangles.swap(kept);
+  return out;
+}
+
+void LinkNearbyParts(PreparedMesh& mesh, double gap)
+{
+  mesh.proximityLinks.clear();
+  if (mesh.numberOfParts < 2 || !(gap > 0.0))
+    return;
+  const int nv = mesh.NumberOfPoints();
+  std::vector<int> vertexPart(nv, -1);
+  for (int f = 0; f < mesh.NumberOfFaces(); ++f)
+    for (int v : mesh.triangles[f])
+      vertexPart[v] = mesh.facePart[f];
+  // Hash grid of cell size `gap`.
+  auto key = [&](const Vec3& p)
+  {
+    const Eigen::Vector3d q = ((p - mesh.boundsMin) / gap).array().floor();
+    return std::array<long long, 3>{
+      static_cast<long long>(q.x()), static_cast<long long>(q.y()), static_cast<long long>(q.z())
+    };
+  };
+  std::map<std::array<long long, 3>, std::vector<int>> cells;
+  for (int v = 0; v < nv; ++v)
+    if (vertexPart[v] >= 0)
+      cells[key(mesh.points[v])].push_back(v);
+  for (int v = 0; v < nv; ++v)
+  {
+    if (vertexPart[v] < 0)
+      continue;
+    const auto c = key(mesh.points[v]);
+    std::map<int, std::pair<double, int>> nearestByPart;
+    for (long long dx = -1; dx <= 1; ++dx)
+      for (long long dy = -1; dy <= 1; ++dy)
+        for (long long dz = -1; dz <= 1; ++dz)
+        {
+          auto it = cells.find({ c[0] + dx, c[1] + dy, c[2] + dz });
+          if (it == cells.end())
+            continue;
+          for (int w : it->second)
+          {
+            if (vertexPart[w] <= vertexPart[v])
+              continue;
+            const double d = (mesh.points[w] - mesh.points[v]).norm();
+            if (d > gap)
+              continue;
+            auto found = nearestByPart.find(vertexPart[w]);
+            if (found == nearestByPart.end() || d < found->second.first)
+              nearestByPart[vertexPart[w]] = { d, w };
+          }
+        }
+    for (const auto& entry : nearestByPart)
+      mesh.proximityLinks.push_back({ v, entry.second.second });
+  }
+}
+}

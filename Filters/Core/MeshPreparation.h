@@ -1,0 +1,44 @@
+// Turns an indexed triangle soup into a PreparedMesh (welding, orientation, normals, adjacency).
+#ifndef foldingmeshes_MeshPreparation_h
+#define foldingmeshes_MeshPreparation_h
+
+#include "TriangleMesh.h"
+
+#include <string>
+
+namespace foldingmeshes
+{
+/**
+ * Prepare `input` for symmetry detection:
+ * - points with identical coordinates are welded (the input is never changed);
+ * - faces with a repeated vertex or (near) zero area are flagged degenerate;
+ * - faces are oriented consistently across manifold edges by a breadth-first walk of
+ *   each part; a closed part is turned outward (positive signed volume), an open part
+ *   keeps the orientation most of its input faces had;
+ * - unit face normals, area-weighted vertex normals, areas, centroids, edge adjacency.
+ * If `inputNormals` is non-empty (one per input point) it is used for the vertex normals
+ * instead of the computed ones. Returns false with `error` set for empty input,
+ * non-finite coordinates, indices out of range or zero total area.
+ */
+bool PrepareMesh(const TriangleMesh& input,
+  const std::vector<Vec3>& inputNormals,
+  PreparedMesh& mesh,
+  std::string& error);
+
+/**
+ * A coarse version of `mesh` with about `targetFaces` triangles, by vertex clustering on a
+ * uniform grid (cluster point: area-weighted mean; collapsed and duplicate triangles are
+ * dropped), as a triangle soup for PrepareMesh. Used to find candidate planes of very
+ * large meshes cheaply; the final refinement always runs on the full mesh.
+ */
+TriangleMesh SimplifiedMesh(const PreparedMesh& mesh, int targetFaces);
+
+/**
+ * Records vertex pairs of different parts closer than `gap` in mesh.proximityLinks
+ * (at most one per vertex and neighbouring part: the nearest). Region growing treats
+ * them as connections, so symmetric regions may span touching parts.
+ */
+void LinkNearbyParts(PreparedMesh& mesh, double gap);
+}
+
+#endif

@@ -1,0 +1,70 @@
+#include "MirrorDistance.h"
+
+#include <vtkSMPTools.h>
+
+#include <cmath>
+
+namespace foldingmeshes
+{
+MirrorDistance::MirrorDistance(const PreparedMesh& mesh, double compatibilityAngleDegrees)
+  : Mesh(mesh)
+  , Faces(mesh)
+  , CosLimit(std::cos(compatibilityAngleDegrees * 3.14159265358979323846 / 180.0))
+{
+  this->VertexUsed.assign(mesh.NumberOfPoints(), 0);
+  for (int f = 0; f < mesh.NumberOfFaces(); ++f)
+    if (!mesh.faceDegenerate[f])
+      for (int v : mesh.triangles[f])
+        this->VertexUsed[v] = 1;
+}
+
+void MirrorDistance::Compute(const Plane& plane,
+  DistanceMetric metric,
+  double maxDistance,
+  std::vector<double>& d,
+  std::vector<Vec3>* closest,
+  std::vector<Vec3>* closestNormals) const
+{
+  const int nv = Mesh.NumberOfPoints();
+  d.assign(nv, std::numeric_limits<double>::infinity());
+  if (closest)
+    closest->assign(nv, Vec3::Zero());
+  if (closestNormals)
+    closestNormals->assign(nv, Vec3::Zero());
+  vtkSMPTools::For(0,
+    nv,
+    256,
+    [&](vtkIdType begin, vtkIdType end)
+    {
+      for (vtkIdType i = begin; i < end; ++i)
+      {
+        if (!VertexUsed[i])
+          continue;
+        const Vec3 r = plane.Reflect(Mesh.points[i]);
+        const Vec3 rn = plane.ReflectDirection(Mesh.vertexNormals[i]);
+        if (metric == DistanceMetric::Fine)
+        {
+          const FaceTree::Hit hit = Faces.ClosestCompatibleFace(r, rn, CosLimit, maxDistance);
+          d[i] = hit.distance;
+          if (closest)
+            (*closest)[i] = hit.point;
+          if (closestNormals && hit.face >= 0)
+            (*closestNormals)[i] = Mesh.faceNormals[hit.face];
+        }
+        else
+        {
+          const int f = Faces.NearestCentroidFace(r);
+          if (f >= 0 && Mesh.faceNormals[f].dot(rn) > 0.0)
+          {
+            const double h = Mesh.faceNormals[f].dot(r - Mesh.faceCentroids[f]);
+            d[i] = std::abs(h);
+            if (closest)
+              (*closest)[i] = r - h * Mesh.faceNormals[f];
+            if (closestNormals)
+              (*closestNormals)[i] = Mesh.faceNormals[f];
+          }
+        }
+      }
+    });
+}
+}

@@ -1,0 +1,50 @@
+// Distances of mirrored vertices to the mesh: the paper's coarse and fine metrics.
+#ifndef foldingmeshes_MirrorDistance_h
+#define foldingmeshes_MirrorDistance_h
+
+#include "FaceTree.h"
+#include "Plane.h"
+
+namespace foldingmeshes
+{
+enum class DistanceMetric
+{
+  /// Distance to the plane of the face whose centroid is nearest; infinite when
+  /// the normals differ by 90 degrees or more.
+  Coarse,
+  /// Exact point-to-triangle distance to the closest compatible face.
+  Fine
+};
+
+/**
+ * For every vertex v_i with normal n_i, reflects both through a plane and measures
+ * d_i = dist(r_i, M) with the chosen metric. Runs in parallel (vtkSMPTools); every
+ * vertex is independent, so results do not depend on the thread count.
+ */
+class MirrorDistance
+{
+public:
+  MirrorDistance(const PreparedMesh& mesh, double compatibilityAngleDegrees);
+
+  /// d[i] for all vertices; distances beyond maxDistance (fine metric) are infinite.
+  /// With `closest`, also the closest compatible point of the mesh (fine metric) or the
+  /// foot of the perpendicular on the face plane (coarse metric), and with
+  /// `closestNormals` the unit normal of the face holding it.
+  void Compute(const Plane& plane,
+    DistanceMetric metric,
+    double maxDistance,
+    std::vector<double>& d,
+    std::vector<Vec3>* closest = nullptr,
+    std::vector<Vec3>* closestNormals = nullptr) const;
+
+  const FaceTree& Tree() const { return this->Faces; }
+
+private:
+  const PreparedMesh& Mesh;
+  FaceTree Faces;
+  double CosLimit;
+  std::vector<char> VertexUsed;
+};
+}
+
+#endif

@@ -1,0 +1,116 @@
+#include "RegionGrowing.h"
+
+#include <numeric>
+
+namespace foldingmeshes
+{
+namespace
+{
+int Root(std::vector<int>& parent, int i)
+{
+  while (parent[i] != i)
+  {
+    parent[i] = parent[parent[i]];
+    i = parent[i];
+  }
+  return i;
+}
+
+void Join(std::vector<int>& parent, int a, int b)
+{
+  a = Root(parent, a);
+  b = Root(parent, b);
+  if (a != b)
+    parent[std::max(a, b)] = std::min(a, b);
+}
+
+int FirstSelectedFace(const PreparedMesh& mesh, const std::vector<char>& mask, int v)
+{
+  for (int k = mesh.vertexFaceOffsets[v]; k < mesh.vertexFaceOffsets[v + 1]; ++k)
+    if (mask[mesh.vertexFaces[k]])
+      return mesh.vertexFaces[k];
+  return -1;
+}
+}
+
+std::vector<char> FacesWithVerticesWithin(const PreparedMesh& mesh,
+  const std::vector<double>& d,
+  double threshold,
+  bool strict)
+{
+  const int nf = mesh.NumberOfFaces();
+  std::vector<char> mask(nf, 0);
+  for (int f = 0; f < nf; ++f)
+  {
+    bool inside = true;
+    for (int v : mesh.triangles[f])
+      inside = inside && (strict ? d[v] < threshold : d[v] <= threshold);
+    mask[f] = inside;
+  }
+  return mask;
+}
+
+int LabelConnectedRegions(const PreparedMesh& mesh,
+  const std::vector<char>& mask,
+  std::vector<int>& labels)
+{
+  const int nf = mesh.NumberOfFaces();
+  std::vector<int> parent(nf);
+  std::iota(parent.begin(), parent.end(), 0);
+  for (int f = 0; f < nf; ++f)
+  {
+    if (!mask[f])
+      continue;
+    for (int k = mesh.faceNeighborOffsets[f]; k < mesh.faceNeighborOffsets[f + 1]; ++k)
+      if (mask[mesh.faceNeighbors[k]])
+        Join(parent, f, mesh.faceNeighbors[k]);
+  }
+  for (const auto& link : mesh.proximityLinks)
+  {
+    const int a = FirstSelectedFace(mesh, mask, link.first);
+    const int b = FirstSelectedFace(mesh, mask, link.second);
+    if (a >= 0 && b >= 0)
+      Join(parent, a, b);
+  }
+  labels.assign(nf, -1);
+  std::vector<int> regionOfRoot(nf, -1);
+  int count = 0;
+  for (int f = 0; f < nf; ++f)
+  {
+    if (!mask[f])
+      continue;
+    const int r = Root(parent, f);
+    if (regionOfRoot[r] < 0)
+      regionOfRoot[r] = count++;
+    labels[f] = regionOfRoot[r];
+  }
+  return count;
+}
+
+std::vector<char> LargestConnectedRegion(const PreparedMesh& mesh, const std::vector<char>& mask)
+{
+  std::vector<int> labels;
+  const int count = LabelConnectedRegions(mesh, mask, labels);
+  std::vector<double> area(count, 0.0);
+  for (int f = 0; f < mesh.NumberOfFaces(); ++f)
+    if (labels[f] >= 0)
+      area[labels[f]] += mesh.faceAreas[f];
+  int best = -1;
+  for (int r = 0; r < count; ++r)
+    if (best < 0 || area[r] > area[best])
+      best = r;
+  std::vector<char> region(mesh.NumberOfFaces(), 0);
+  for (int f = 0; f < mesh.NumberOfFaces(); ++f)
+    region[f] = best >= 0 && labels[f] == best;
+  return region;
+}
+
+double RegionArea(const PreparedMesh& mesh, const std::vector<char>& mask)
+{
+  double area = 0.0;
+  for (int f = 0; f < mesh.NumberOfFaces(); ++f)
+    if (mask[f])
+      area += mesh.faceAreas[f];
+  return area;
+}
+}

@@ -1,0 +1,34 @@
+// Connected face regions (edge adjacency, plus links between nearby parts).
+#ifndef foldingmeshes_RegionGrowing_h
+#define foldingmeshes_RegionGrowing_h
+
+#include "TriangleMesh.h"
+
+#include <vector>
+
+namespace foldingmeshes
+{
+/// Faces whose three vertices have d <= threshold (inclusive) or d < threshold (strict).
+std::vector<char> FacesWithVerticesWithin(const PreparedMesh& mesh,
+  const std::vector<double>& d,
+  double threshold,
+  bool strict);
+
+/**
+ * Labels the connected regions of the faces selected by `mask` (faces sharing an edge
+ * are connected; so are faces at the two ends of a proximity link). labels[f] is the
+ * region of f, or -1 outside the mask; regions are numbered by their lowest face id.
+ * Returns the number of regions.
+ */
+int LabelConnectedRegions(const PreparedMesh& mesh,
+  const std::vector<char>& mask,
+  std::vector<int>& labels);
+
+/// The connected region of `mask` with the largest area (ties: lowest face id).
+std::vector<char> LargestConnectedRegion(const PreparedMesh& mesh, const std::vector<char>& mask);
+
+/// Total area of the faces selected by mask.
+double RegionArea(const PreparedMesh& mesh, const std::vector<char>& mask);
+}
+
+#endif

@@ -1,0 +1,515 @@
+#include "SymmetryDetection.h"
+
+#include "CandidatePlanes.h"
+#include "MeshPreparation.h"
+#include "MirrorDistance.h"
+#include "RegionGrowing.h"
+#include "RobustCost.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <limits>
+#include <string>
+
+namespace foldingmeshes
+{
+namespace
+{
+using Clock = std::chrono::steady_clock;
+
+double Seconds(Clock::time_point since)
+{
+  return std::chrono::duration<double>(Clock::now() - since).count();
+}
+
+/// State of one IRLS run.
+struct Run
+{
+  Plane plane;
+  std::vector<char> support;
+  std::vector<double> weight;
+  std::vector<double> distance;
+  std::vector<double> cost;
+  int coarseIterations = 0;
+  int fineIterations = 0;
+  // Scores, after the final region is extracted.
+  std::vector<char> region;
+  double regionArea = 0.0;
+  double rms = 0.0;
+};
+
+class Refiner
+{
+public:
+  Refiner(const PreparedMesh& mesh, const SymmetryOptions& options)
+    : Mesh(mesh)
+    , Options(options)
+    , Distances(mesh, options.compatibilityAngle)
+  {
+  }
+
+  /// Coarse then (optionally) fine phase from a start. `start` null: the paper's start.
+  void Coarse(Run& run, const Plane* start) const
+  {
+    const int nf = Mesh.NumberOfFaces();
+    run.support.assign(nf, 1);
+    for (int f = 0; f < nf; ++f)
+      run.support[f] = !Mesh.faceDegenerate[f];
+    run.weight = Mesh.vertexAreas;
+    bool seeded = start != nullptr;
+    if (seeded)
+      run.plane = *start;
+    else
+      run.plane = ChooseByCost(run.weight, run.support, DistanceMetric::Coarse, nullptr);
+    Iterate(run, DistanceMetric::Coarse, seeded, Options.maximumIterations);
+  }
+
+  void Fine(Run& run, int iterations) const
+  {
+    Iterate(run, DistanceMetric::Fine, false, iterations);
+  }
+
+  /// A run starting at `plane` with all faces in the support (or `from`'s state).
+  void Seed(Run& run, const Plane& plane, const Run* from) const
+  {
+    if (from)
+    {
+      run = *from;
+      return;
+    }
+    run.plane = plane;
+    run.support.assign(Mesh.NumberOfFaces(), 0);
+    for (int f = 0; f < Mesh.NumberOfFaces(); ++f)
+      run.support[f] = !Mesh.faceDegenerate[f];
+    run.weight = Mesh.vertexAreas;
+  }
+
+  /// Fine distances at the run's plane and the final symmetric region. Only distances
+  /// below `searchLimit` (at least epsilon) are resolved; larger ones are infinite.
+  void Score(Run& run, double searchLimit) const
+  {
+    const double eps = Options.epsilon;
+    Distances.Compute(run.plane, DistanceMetric::Fine, std::max(searchLimit, eps), run.distance);
+    run.region =
+      LargestConnectedRegion(Mesh, FacesWithVerticesWithin(Mesh, run.distance, eps, true));
+    run.regionArea = RegionArea(Mesh, run.region);
+    double sum = 0.0, area = 0.0;
+    std::vector<char> inRegion(Mesh.NumberOfPoints(), 0);
+    for (int f = 0; f < Mesh.NumberOfFaces(); ++f)
+      if (run.region[f])
+        for (int v : Mesh.triangles[f])
+          inRegion[v] = 1;
+    for (int v = 0; v < Mesh.NumberOfPoints(); ++v)
+      if (inRegion[v])
+      {
+        sum += Mesh.vertexAreas[v] * run.distance[v] * run.distance[v];
+        area += Mesh.vertexAreas[v];
+      }
+    run.rms = area > 0.0 ? std::sqrt(sum / area) : std::numeric_limits<double>::infinity();
+  }
+
+private:
+  double Sigma(DistanceMetric metric,
+    const std::vector<double>& d,
+    const std::vector<char>& vertexInSupport) const
+  {
+    const double floor = 3.0 * Options.epsilon;
+    if (metric == DistanceMetric::Fine)
+      return floor;
+    std::vector<double> values;
+    values.reserve(d.size());
+    for (size_t i = 0; i < d.size(); ++i)
+      if (vertexInSupport[i])
+        values.push_back(d[i]);
+    if (values.empty())
+      return floor;
+    auto mid = values.begin() + values.size() / 2;
+    std::nth_element(values.begin(), mid, values.end());
+    const double median = *mid;
+    return std::isfinite(median) ? std::max(1.4826 * median, floor)
+                                 : std::numeric_limits<double>::infinity();
+  }
+
+  std::vector<char> SupportVertices(const std::vector<char>& support) const
+  {
+    std::vector<char> used(Mesh.NumberOfPoints(), 0);
+    for (int f = 0; f < Mesh.NumberOfFaces(); ++f)
+      if (support[f])
+        for (int v : Mesh.triangles[f])
+          used[v] = 1;
+    return used;
+  }
+
+  double MaxDistance(DistanceMetric metric) const
+  {
+    // Beyond 3 sigma (fine) rho >= 0.9: treat as infinite, it saves most of the search.
+    return metric == DistanceMetric::Fine ? 9.0 * Options.epsilon
+                                          : std::numeric_limits<double>::infinity();
+  }
+
+  double Cost(const std::vector<double>& d,
+    const std::vector<char>& vertexInSupport,
+    double sigma) const
+  {
+    double sum = 0.0;
+    for (size_t i = 0; i < d.size(); ++i)
+      if (vertexInSupport[i])
+        sum += GemanMcClureCost(d[i], sigma);
+    return sum;
+  }
+
+  /// Closed-form step choosing the eigen-plane of lowest sum of rho (the paper's rule).
+  Plane ChooseByCost(const std::vector<double>& weight,
+    const std::vector<char>& support,
+    DistanceMetric metric,
+    std::vector<double>* chosenDistances) const
+  {
+    std::array<Plane, 3> planes;
+    if (!PrincipalPlanes(Mesh, weight, planes))
+      return Plane();
+    const std::vector<char> vin = SupportVertices(support);
+    double bestCost = std::numeric_limits<double>::infinity();
+    int best = 0;
+    std::vector<double> d, bestD;
+    for (int k = 0; k < 3; ++k)
+    {
+      Distances.Compute(planes[k], metric, MaxDistance(metric), d);
+      const double c = Cost(d, vin, Sigma(metric, d, vin));
+      if (c < bestCost)
+      {
+        bestCost = c;
+        best = k;
+        bestD = d;
+      }
+    }
+    if (chosenDistances)
+      *chosenDistances = bestD;
+    return planes[best];
+  }
+
+  void Iterate(Run& run, DistanceMetric metric, bool firstSigmaAtFloor, int maxIterations) const
+  {
+    const bool coarse = metric == DistanceMetric::Coarse;
+    const double diag = Mesh.diagonal;
+    (void)diag;
+    const double angleTol = coarse ? 0.5 : 0.02;
+    const double offsetTol = (coarse ? 1e-3 : 1e-4) * diag;
+    std::vector<double> d;
+    std::vector<Vec3> closest, closestNormals;
+    bool haveDistances = false;
+    std::vector<std::vector<char>> supports; // history, for cycle detection
+    int& iterations = coarse ? run.coarseIterations : run.fineIterations;
+    for (int it = 0; it < maxIterations; ++it)
+    {
+      ++iterations;
+      if (!haveDistances)
+        Distances.Compute(run.plane,
+          metric,
+          MaxDistance(metric),
+          d,
+          Options.robust ? &closest : nullptr,
+          Options.robust ? &closestNormals : nullptr);
+      haveDistances = false;
+      const std::vector<char> vin = SupportVertices(run.support);
+      double sigma = Sigma(metric, d, vin);
+      if (firstSigmaAtFloor && it == 0)
+        sigma = 3.0 * Options.epsilon;
+      if (!std::isfinite(sigma))
+        break;
+      std::vector<char> support =
+        LargestConnectedRegion(Mesh, FacesWithVerticesWithin(Mesh, d, 2.0 * sigma, false));
+      if (RegionArea(Mesh, support) <= 0.0)
+        break;
+      const std::vector<char> sv = SupportVertices(support);
+      run.support = support;
+      run.cost.push_back(Cost(d, sv, sigma));
+      run.weight.assign(Mesh.NumberOfPoints(), 0.0);
+      for (int v = 0; v < Mesh.NumberOfPoints(); ++v)
+        if (sv[v])
+          run.weight[v] = GemanMcClureWeight(d[v], sigma) * Mesh.vertexAreas[v];
+
+      Plane next;
+      if (!Options.robust)
+      {
+        next = ChooseByCost(run.weight, run.support, metric, &d);
+        haveDistances = true;
+      }
+      else
+      {
+        // Robust: the plane that maps every weighted vertex onto the tangent plane of its
+        // mirror partner (no jumps between eigen-axes, no bias from unequal vertex areas
+        // of mirror images).
+        if (!RefinePlaneFromCorrespondences(
+              Mesh.points, closest, closestNormals, run.weight, run.plane, next))
+          break;
+      }
+      const double angle = PlaneAngleDegrees(next, run.plane);
+      const double offset = PlaneOffsetAt(run.plane, next, next.origin);
+      const bool converged = angle < angleTol && offset < offsetTol;
+      // A support that comes back (a cycle), or one that hardly changes while the plane
+      // hardly moves (the fine phase's near 2-cycles), ends the phase too.
+      const bool cycled = std::find(supports.begin(), supports.end(), support) != supports.end();
+      double changedArea = 0.0;
+      if (!supports.empty())
+        for (int f = 0; f < Mesh.NumberOfFaces(); ++f)
+          if (supports.back()[f] != support[f])
+            changedArea += Mesh.faceAreas[f];
+      const bool stalled = !supports.empty() && changedArea < 0.002 * Mesh.totalArea &&
+        angle < 10.0 * angleTol && offset < 10.0 * offsetTol;
+      run.plane = next;
+      if (converged || cycled || stalled)
+        break;
+      supports.push_back(std::move(support));
+      if (supports.size() > 4)
+        supports.erase(supports.begin());
+    }
+  }
+
+  const PreparedMesh& Mesh;
+  const SymmetryOptions& Options;
+  MirrorDistance Distances;
+};
+
+bool SamePlane(const Plane& a, const Plane& b, double epsilon)
+{
+  return PlaneAngleDegrees(a, b) < 2.0 && PlaneOffsetAt(a, b, b.origin) < epsilon;
+}
+
+/// Better final result: larger region; within 2% of the mesh area, lower residual.
+bool Better(const Run& a, const Run& b, double totalArea)
+{
+  if (std::abs(a.regionArea - b.regionArea) > 0.02 * totalArea)
+    return a.regionArea > b.regionArea;
+  return a.rms < b.rms;
+}
+}
+
+namespace
+{
+/// Full-range distances and labels of the winning run into the result.
+void Finish(const PreparedMesh& mesh, const SymmetryOptions& options, const Refiner& refiner,
+  Run& best, SymmetryResult& result)
+{
+  const int nf = mesh.NumberOfFaces();
+  refiner.Score(best, 9.0 * options.epsilon); // full-range distances for the output
+  result.plane = CanonicalPlane(best.plane, best.plane.origin);
+  result.distance = best.distance;
+  result.weight = best.weight;
+  result.costHistory = best.cost;
+  result.coarseIterations = best.coarseIterations;
+  result.fineIterations = best.fineIterations;
+  result.faceLabel.assign(nf, 0);
+  for (int f = 0; f < nf; ++f)
+    result.faceLabel[f] = best.region[f] ? 2 : (best.support[f] ? 1 : 0);
+  result.symmetricArea = best.regionArea;
+  result.symmetricAreaFraction = best.regionArea / mesh.totalArea;
+  result.rmsResidual = best.rms;
+  result.found = result.symmetricAreaFraction >= options.minimumSymmetricAreaFraction &&
+    best.rms <= 0.35 * options.epsilon;
+}
+
+/// Large meshes: candidate search on a simplified copy, finalists refined on the full mesh.
+SymmetryResult DetectOnSimplified(const PreparedMesh& mesh, const SymmetryOptions& options)
+{
+  SymmetryResult result;
+  auto report = [&](double p) { return !options.progress || options.progress(p); };
+  const auto t0 = Clock::now();
+  PreparedMesh small;
+  std::string error;
+  if (!PrepareMesh(SimplifiedMesh(mesh, SimplifiedMeshFaces), {}, small, error))
+    return result;
+  if (!mesh.proximityLinks.empty())
+    LinkNearbyParts(small, options.epsilon);
+  SymmetryOptions coarseOptions = options;
+  coarseOptions.progress = [&](double p) { return report(0.6 * p); };
+  const SymmetryResult coarse = DetectSymmetry(small, coarseOptions);
+  result.candidateSeconds = Seconds(t0);
+  if (coarse.aborted)
+  {
+    result.aborted = true;
+    return result;
+  }
+  const auto t1 = Clock::now();
+  Refiner refiner(mesh, options);
+  std::vector<Run> runs;
+  for (size_t k = 0; k < coarse.finalists.size(); ++k)
+  {
+    Run run;
+    refiner.Seed(run, coarse.finalists[k], nullptr);
+    refiner.Fine(run, options.maximumIterations);
+    refiner.Score(run, options.epsilon);
+    runs.push_back(std::move(run));
+    if (!report(0.6 + 0.4 * static_cast<double>(k + 1) / coarse.finalists.size()))
+    {
+      result.aborted = true;
+      return result;
+    }
+  }
+  result.fineSeconds = Seconds(t1);
+  result.startsTried = coarse.startsTried;
+  if (runs.empty())
+    return result;
+  int bestRun = 0;
+  for (size_t k = 1; k < runs.size(); ++k)
+    if (Better(runs[k], runs[bestRun], mesh.totalArea))
+      bestRun = static_cast<int>(k);
+  for (size_t k = 0; k < runs.size(); ++k)
+    result.finalists.push_back(runs[k].plane);
+  std::swap(result.finalists[0], result.finalists[bestRun]);
+  Finish(mesh, options, refiner, runs[bestRun], result);
+  return result;
+}
+}
+
+SymmetryResult DetectSymmetry(const PreparedMesh& mesh, const SymmetryOptions& options)
+{
+  if (options.robust && mesh.NumberOfFaces() > SimplifyAboveFaces)
+    return DetectOnSimplified(mesh, options);
+  SymmetryResult result;
+  auto report = [&](double p) { return !options.progress || options.progress(p); };
+  const bool debug = std::getenv("FOLDINGMESHES_DEBUG") != nullptr;
+  auto trace = [&](const char* what, size_t k, const Run& run)
+  {
+    if (debug)
+      std::fprintf(stderr,
+        "%s %zu: iterations %d/%d region %.3f rms/eps %.3f n=(%.3f %.3f %.3f)\n",
+        what,
+        k,
+        run.coarseIterations,
+        run.fineIterations,
+        run.regionArea / mesh.totalArea,
+        run.rms / options.epsilon,
+        run.plane.normal.x(),
+        run.plane.normal.y(),
+        run.plane.normal.z());
+  };
+  Refiner refiner(mesh, options);
+  std::vector<Run> runs;
+
+  // The paper's path: coarse phase from the principal start (or the user's plane).
+  const auto t0 = Clock::now();
+  {
+    Run run;
+    refiner.Coarse(run, options.useInitialPlane ? &options.initialPlane : nullptr);
+    if (!options.robust)
+      refiner.Fine(run, options.maximumIterations);
+    refiner.Score(run, options.epsilon);
+    trace("paper start", 0, run);
+    runs.push_back(std::move(run));
+  }
+  result.coarseSeconds = Seconds(t0);
+  if (!report(options.robust ? 0.2 : 0.9))
+  {
+    result.aborted = true;
+    return result;
+  }
+
+  if (options.robust)
+  {
+    // More starts, each refined directly by a few fine iterations (sigma = 3 epsilon):
+    // the coarse metric tends to drag a good start away.
+    const auto t1 = Clock::now();
+    std::vector<Plane> seeds;
+    seeds.push_back(runs[0].plane);
+    if (options.useInitialPlane)
+      seeds.push_back(options.initialPlane);
+    std::array<Plane, 3> principal;
+    if (SurfacePrincipalPlanes(mesh, principal))
+      seeds.insert(seeds.end(), principal.begin(), principal.end());
+    for (const Plane& p :
+      VotedPlanes(mesh, options.numberOfCandidates, options.epsilon, options.seed))
+      seeds.push_back(p);
+    std::vector<Plane> distinct;
+    for (const Plane& p : seeds)
+    {
+      bool duplicate = false;
+      for (const Plane& q : distinct)
+        duplicate = duplicate || SamePlane(q, p, options.epsilon);
+      if (!duplicate)
+        distinct.push_back(p);
+    }
+    result.candidateSeconds = Seconds(t1);
+
+    const auto t2 = Clock::now();
+    // Probes: two fine iterations each; probes that land on the plane of an earlier probe
+    // are dropped; the rest get four more iterations and are scored by their region.
+    std::vector<size_t> probes;
+    for (size_t k = 0; k < distinct.size(); ++k)
+    {
+      Run run;
+      refiner.Seed(run, distinct[k], k == 0 ? &runs[0] : nullptr);
+      refiner.Fine(run, std::min(options.maximumIterations, 2));
+      bool duplicate = false;
+      for (size_t j : probes)
+        duplicate = duplicate || SamePlane(runs[j].plane, run.plane, options.epsilon);
+      if (!duplicate)
+      {
+        refiner.Fine(run, std::min(options.maximumIterations, 4));
+        refiner.Score(run, options.epsilon);
+        trace("probe", k, run);
+        probes.push_back(runs.size());
+        runs.push_back(std::move(run));
+      }
+      if (!report(0.2 + 0.5 * static_cast<double>(k + 1) / distinct.size()))
+      {
+        result.aborted = true;
+        return result;
+      }
+    }
+    // Finish the best three distinct probes that could still win.
+    std::stable_sort(probes.begin(),
+      probes.end(),
+      [&](size_t a, size_t b) { return Better(runs[a], runs[b], mesh.totalArea); });
+    std::vector<size_t> chosen;
+    for (size_t k : probes)
+    {
+      bool duplicate = false;
+      for (size_t c : chosen)
+        duplicate = duplicate || SamePlane(runs[c].plane, runs[k].plane, options.epsilon);
+      const bool promising = runs[k].regionArea >= 0.5 * runs[probes[0]].regionArea;
+      if (!duplicate && promising && chosen.size() < 3)
+        chosen.push_back(k);
+    }
+    for (size_t i = 0; i < chosen.size(); ++i)
+    {
+      Run& run = runs[chosen[i]];
+      refiner.Fine(run, options.maximumIterations);
+      refiner.Score(run, options.epsilon);
+      trace("final", chosen[i], run);
+      if (!report(0.7 + 0.3 * static_cast<double>(i + 1) / chosen.size()))
+      {
+        result.aborted = true;
+        return result;
+      }
+    }
+    result.fineSeconds = Seconds(t2);
+    result.startsTried = static_cast<int>(distinct.size());
+  }
+  else
+  {
+    result.startsTried = 1;
+  }
+
+  // Robust: runs[0] (the paper's coarse phase alone) only seeded a probe; it is not a result.
+  int bestRun = options.robust && runs.size() > 1 ? 1 : 0;
+  for (size_t k = bestRun + 1; k < runs.size(); ++k)
+    if (Better(runs[k], runs[bestRun], mesh.totalArea))
+      bestRun = static_cast<int>(k);
+  // Finalists: the runs iterated to convergence, best first.
+  std::vector<size_t> finished;
+  for (size_t k = options.robust ? 1 : 0; k < runs.size(); ++k)
+    if (!options.robust || runs[k].fineIterations > std::min(options.maximumIterations, 6))
+      finished.push_back(k);
+  std::stable_sort(finished.begin(), finished.end(),
+    [&](size_t a, size_t b) { return Better(runs[a], runs[b], mesh.totalArea); });
+  for (size_t k : finished)
+    result.finalists.push_back(runs[k].plane);
+  if (result.finalists.empty())
+    result.finalists.push_back(runs[bestRun].plane);
+  Finish(mesh, options, refiner, runs[bestRun], result);
+  return result;
+}
+}

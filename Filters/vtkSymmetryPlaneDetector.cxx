@@ -1,0 +1,302 @@
+#include "vtkSymmetryPlaneDetector.h"
+
+#include "Core/MeshPreparation.h"
+#include "Core/SymmetryDetection.h"
+#include "vtkTriangleMeshAdapter.h"
+
+#include <vtkCellArray.h>
+#include <vtkCellData.h>
+#include <vtkDoubleArray.h>
+#include <vtkFieldData.h>
+#include <vtkInformation.h>
+#include <vtkInformationVector.h>
+#include <vtkIntArray.h>
+#include <vtkNew.h>
+#include <vtkObjectFactory.h>
+#include <vtkPointData.h>
+#include <vtkPoints.h>
+#include <vtkPolyData.h>
+
+#include <cmath>
+#include <limits>
+
+vtkStandardNewMacro(vtkSymmetryPlaneDetector);
+
+namespace
+{
+using foldingmeshes::Vec3;
+
+vtkSmartPointer<vtkDoubleArray> MakeTuple(const char* name, const double* values, int n)
+{
+  auto array = vtkSmartPointer<vtkDoubleArray>::New();
+  array->SetName(name);
+  array->SetNumberOfComponents(n);
+  array->SetNumberOfTuples(1);
+  for (int k = 0; k < n; ++k)
+    array->SetComponent(0, k, values[k]);
+  return array;
+}
+
+vtkSmartPointer<vtkDoubleArray> MakeSeries(const char* name, const std::vector<double>& values)
+{
+  auto array = vtkSmartPointer<vtkDoubleArray>::New();
+  array->SetName(name);
+  array->SetNumberOfTuples(static_cast<vtkIdType>(values.size()));
+  for (size_t k = 0; k < values.size(); ++k)
+    array->SetValue(static_cast<vtkIdType>(k), values[k]);
+  return array;
+}
+
+/// A quad on the plane covering the projection of the selected points (10% margin).
+void BuildPlaneGlyph(const foldingmeshes::PreparedMesh& mesh,
+  const std::vector<char>& faces,
+  const foldingmeshes::Plane& plane,
+  vtkPolyData* glyph)
+{
+  const Vec3 n = plane.normal;
+  const Vec3 helper = std::abs(n.x()) < 0.9 ? Vec3::UnitX() : Vec3::UnitY();
+  const Vec3 u = n.cross(helper).normalized();
+  const Vec3 v = n.cross(u);
+  double lo[2] = { std::numeric_limits<double>::max(), std::numeric_limits<double>::max() };
+  double hi[2] = { -lo[0], -lo[1] };
+  bool any = false;
+  for (int pass = 0; pass < 2 && !any; ++pass)
+    for (int f = 0; f < mesh.NumberOfFaces(); ++f)
+      if (pass == 1 || faces[f])
+        for (int p : mesh.triangles[f])
+        {
+          const Vec3 q = mesh.points[p] - plane.origin;
+          lo[0] = std::min(lo[0], q.dot(u));
+          hi[0] = std::max(hi[0], q.dot(u));
+          lo[1] = std::min(lo[1], q.dot(v));
+          hi[1] = std::max(hi[1], q.dot(v));
+          any = true;
+        }
+  for (int k = 0; k < 2; ++k)
+  {
+    const double margin = 0.1 * (hi[k] - lo[k]) + 1e-3 * mesh.diagonal;
+    lo[k] -= margin;
+    hi[k] += margin;
+  }
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  const double corners[4][2] = {
+    { lo[0], lo[1] }, { hi[0], lo[1] }, { hi[0], hi[1] }, { lo[0], hi[1] }
+  };
+  for (const auto& c : corners)
+  {
+    const Vec3 p = plane.origin + c[0] * u + c[1] * v;
+    points->InsertNextPoint(p.x(), p.y(), p.z());
+  }
+  vtkNew<vtkCellArray> quads;
+  const vtkIdType ids[4] = { 0, 1, 2, 3 };
+  quads->InsertNextCell(4, ids);
+  glyph->SetPoints(points);
+  glyph->SetPolys(quads);
+}
+}
+
+//------------------------------------------------------------------------------
+vtkSymmetryPlaneDetector::vtkSymmetryPlaneDetector()
+{
+  this->SetNumberOfInputPorts(1);
+  this->SetNumberOfOutputPorts(2);
+}
+
+vtkSymmetryPlaneDetector::~vtkSymmetryPlaneDetector() = default;
+
+//------------------------------------------------------------------------------
+int vtkSymmetryPlaneDetector::FillInputPortInformation(int, vtkInformation* info)
+{
+  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkPolyData");
+  return 1;
+}
+
+
+//------------------------------------------------------------------------------
+int vtkSymmetryPlaneDetector::RequestData(vtkInformation*,
+  vtkInformationVector** inputVector,
+  vtkInformationVector* outputVector)
+{
+  vtkPolyData* input = vtkPolyData::GetData(inputVector[0], 0);
+  vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
+  vtkPolyData* glyph = vtkPolyData::GetData(outputVector, 1);
+  this->SymmetricAreaFraction = 0.0;
+  this->SymmetryFound = false;
+  this->CoarseIterations = this->FineIterations = 0;
+  if (!input || !output || !glyph)
+  {
+    vtkErrorMacro("Missing input or output poly data.");
+    return 0;
+  }
+  if (input->GetNumberOfPoints() == 0)
+  {
+    vtkErrorMacro("The input mesh is empty (no points).");
+    return 0;
+  }
+  if (input->GetNumberOfPolys() + input->GetNumberOfStrips() == 0)
+  {
+    vtkErrorMacro("The input has no polygons: symmetry detection needs a surface mesh.");
+    return 0;
+  }
+
+  vtkIdType droppedVerts = 0, droppedLines = 0;
+  vtkSmartPointer<vtkPolyData> surface =
+    foldingmeshes::TriangulateSurface(input, droppedVerts, droppedLines);
+  if (droppedVerts + droppedLines > 0)
+  {
+    vtkWarningMacro("Ignoring " << droppedVerts << " vertex and " << droppedLines
+                                << " line cells: only polygons are used.");
+  }
+  foldingmeshes::TriangleMesh soup;
+  std::vector<Vec3> normals;
+  std::string error;
+  foldingmeshes::PreparedMesh mesh;
+  if (!foldingmeshes::ToTriangleMesh(surface, soup, normals, error) ||
+    !foldingmeshes::PrepareMesh(soup, normals, mesh, error))
+  {
+    vtkErrorMacro("Invalid input mesh: " << error << ".");
+    return 0;
+  }
+
+  const double epsilon =
+    this->ToleranceMode == ABSOLUTE ? this->Tolerance : this->Tolerance * mesh.diagonal;
+  this->ToleranceLength = epsilon;
+  if (this->ConnectNearbyParts)
+  {
+    foldingmeshes::LinkNearbyParts(mesh, epsilon);
+  }
+
+  foldingmeshes::SymmetryOptions options;
+  options.epsilon = epsilon;
+  options.robust = this->Method == ROBUST;
+  options.useInitialPlane = this->UseInitialPlane;
+  const Vec3 initialNormal(
+    this->InitialPlaneNormal[0], this->InitialPlaneNormal[1], this->InitialPlaneNormal[2]);
+  if (this->UseInitialPlane)
+  {
+    if (!(initialNormal.norm() > 0.0) || !initialNormal.allFinite())
+    {
+      vtkErrorMacro("The initial plane normal must be a non-zero vector.");
+      return 0;
+    }
+    options.initialPlane.origin =
+      Vec3(this->InitialPlaneOrigin[0], this->InitialPlaneOrigin[1], this->InitialPlaneOrigin[2]);
+    options.initialPlane.normal = initialNormal.normalized();
+  }
+  options.numberOfCandidates = this->NumberOfCandidates;
+  options.maximumIterations = this->MaximumIterations;
+  options.compatibilityAngle = this->CompatibilityAngle;
+  options.minimumSymmetricAreaFraction = this->MinimumSymmetricAreaFraction;
+  options.seed = static_cast<unsigned>(this->RandomSeed);
+  options.progress = [this](double p)
+  {
+    this->UpdateProgress(p);
+    return !this->GetAbortExecute();
+  };
+
+  const foldingmeshes::SymmetryResult result = foldingmeshes::DetectSymmetry(mesh, options);
+  if (result.aborted)
+  {
+    vtkWarningMacro("Symmetry detection aborted.");
+    return 1;
+  }
+
+  for (int k = 0; k < 3; ++k)
+  {
+    this->PlaneOrigin[k] = result.plane.origin[k];
+    this->PlaneNormal[k] = result.plane.normal[k];
+  }
+  this->SymmetricAreaFraction = result.symmetricAreaFraction;
+  this->SymmetryFound = result.found;
+  this->CoarseIterations = result.coarseIterations;
+  this->FineIterations = result.fineIterations;
+
+  // Output 0: the triangulated input with the labels.
+  output->ShallowCopy(surface);
+  const vtkIdType nf = output->GetNumberOfCells();
+  vtkNew<vtkIntArray> region;
+  region->SetName("SymmetryRegion");
+  region->SetNumberOfTuples(nf);
+  for (vtkIdType f = 0; f < nf; ++f)
+    region->SetValue(f, result.faceLabel[f]);
+  output->GetCellData()->AddArray(region);
+  output->GetCellData()->SetActiveScalars("SymmetryRegion");
+  // Active point scalars (e.g. vertex colours) would hide the region colouring in ParaView;
+  // the array stays, it is just no longer the active one.
+  output->GetPointData()->SetActiveAttribute(-1, vtkDataSetAttributes::SCALARS);
+
+  const vtkIdType np = output->GetNumberOfPoints();
+  vtkNew<vtkDoubleArray> distance, weight;
+  distance->SetName("SymmetryDistance");
+  weight->SetName("SymmetryWeight");
+  distance->SetNumberOfTuples(np);
+  weight->SetNumberOfTuples(np);
+  for (vtkIdType i = 0; i < np; ++i)
+  {
+    const int v = mesh.inputToWelded[i];
+    const double d = result.distance[v];
+    distance->SetValue(i, std::isfinite(d) ? d : std::numeric_limits<double>::quiet_NaN());
+    weight->SetValue(i, result.weight[v]);
+  }
+  output->GetPointData()->AddArray(distance);
+  output->GetPointData()->AddArray(weight);
+
+  vtkNew<vtkFieldData> field;
+  field->AddArray(MakeTuple("SymmetryPlaneOrigin", this->PlaneOrigin, 3));
+  field->AddArray(MakeTuple("SymmetryPlaneNormal", this->PlaneNormal, 3));
+  field->AddArray(MakeTuple("SymmetricAreaFraction", &this->SymmetricAreaFraction, 1));
+  const double found = this->SymmetryFound ? 1.0 : 0.0;
+  field->AddArray(MakeTuple("SymmetryFound", &found, 1));
+  field->AddArray(MakeTuple("SymmetryTolerance", &epsilon, 1));
+  const double iterations[2] = { static_cast<double>(result.coarseIterations),
+    static_cast<double>(result.fineIterations) };
+  field->AddArray(MakeTuple("SymmetryIterations", iterations, 2));
+  field->AddArray(MakeSeries("SymmetryCostHistory", result.costHistory));
+  for (int a = 0; a < input->GetFieldData()->GetNumberOfArrays(); ++a)
+    field->AddArray(input->GetFieldData()->GetAbstractArray(a));
+  output->SetFieldData(field);
+
+  // Output 1: the plane glyph.
+  std::vector<char> symmetric(mesh.NumberOfFaces());
+  for (int f = 0; f < mesh.NumberOfFaces(); ++f)
+    symmetric[f] = result.faceLabel[f] == 2;
+  BuildPlaneGlyph(mesh, symmetric, result.plane, glyph);
+  vtkNew<vtkFieldData> glyphField;
+  for (const char* name : { "SymmetryPlaneOrigin",
+         "SymmetryPlaneNormal",
+         "SymmetricAreaFraction",
+         "SymmetryFound",
+         "SymmetryTolerance" })
+    glyphField->AddArray(field->GetAbstractArray(name));
+  glyph->SetFieldData(glyphField);
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+void vtkSymmetryPlaneDetector::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "Tolerance: " << this->Tolerance << "\n";
+  os << indent
+     << "ToleranceMode: " << (this->ToleranceMode == ABSOLUTE ? "Absolute" : "RelativeToDiagonal")
+     << "\n";
+  os << indent << "Method: " << (this->Method == PAPER ? "Paper" : "Robust") << "\n";
+  os << indent << "UseInitialPlane: " << this->UseInitialPlane << "\n";
+  os << indent << "InitialPlaneOrigin: " << this->InitialPlaneOrigin[0] << " "
+     << this->InitialPlaneOrigin[1] << " " << this->InitialPlaneOrigin[2] << "\n";
+  os << indent << "InitialPlaneNormal: " << this->InitialPlaneNormal[0] << " "
+     << this->InitialPlaneNormal[1] << " " << this->InitialPlaneNormal[2] << "\n";
+  os << indent << "NumberOfCandidates: " << this->NumberOfCandidates << "\n";
+  os << indent << "MaximumIterations: " << this->MaximumIterations << "\n";
+  os << indent << "CompatibilityAngle: " << this->CompatibilityAngle << "\n";
+  os << indent << "ConnectNearbyParts: " << this->ConnectNearbyParts << "\n";
+  os << indent << "MinimumSymmetricAreaFraction: " << this->MinimumSymmetricAreaFraction << "\n";
+  os << indent << "RandomSeed: " << this->RandomSeed << "\n";
+  os << indent << "PlaneOrigin: " << this->PlaneOrigin[0] << " " << this->PlaneOrigin[1] << " "
+     << this->PlaneOrigin[2] << "\n";
+  os << indent << "PlaneNormal: " << this->PlaneNormal[0] << " " << this->PlaneNormal[1] << " "
+     << this->PlaneNormal[2] << "\n";
+  os << indent << "SymmetricAreaFraction: " << this->SymmetricAreaFraction << "\n";
+  os << indent << "SymmetryFound: " << this->SymmetryFound << "\n";
+}

@@ -1,0 +1,196 @@
+/**
+ * @class   vtkSymmetryPlaneDetector
+ * @brief   finds the dominant planar reflection symmetry of a triangle mesh and
+ *          the largest connected region that has it (Folding meshes, SGP 2006, section 3)
+ *
+ * The filter fits a mirror plane p and a connected symmetric region S to a
+ * surface mesh by iteratively reweighted least squares with the Geman-McClure
+ * estimator: every vertex is reflected through the current plane, its distance
+ * d_i to the closest *compatible* face of the mesh is measured (a face whose
+ * interpolated normal at the closest point is within CompatibilityAngle of
+ * the reflected vertex normal), the weights w_i = (1/d) d rho/dd times the
+ * vertex area give a weighted centroid and covariance whose eigenvectors span
+ * three candidate planes; the one with the lowest sum of rho wins. The
+ * support region (faces whose vertices all have d <= 2 sigma, largest
+ * connected part) restricts the next fit. A coarse phase (distance to the
+ * plane of the face with the nearest centroid, sigma = 1.4826 median(d), never
+ * below 3 epsilon) is followed by a fine phase (exact compatible distance,
+ * sigma = 3 epsilon). The result is the plane and S, the largest connected set
+ * of faces whose vertex distances are all below epsilon.
+ *
+ * Two methods:
+ * - ROBUST (default): several starts -- the paper's principal-axis start, the
+ *   optional user plane, and planes voted for by sampled vertex pairs with
+ *   mirror-compatible normals -- are each refined by the paper's iteration;
+ *   the winner is the one with the largest final symmetric region (ties: the
+ *   lower mean residual), not the lowest sum of rho. This finds local
+ *   symmetries on asymmetric bodies and resists large asymmetric attachments.
+ * - PAPER: exactly one start (the principal axes of the area-weighted mesh, or
+ *   the user's initial plane), as in the paper.
+ *
+ * Inputs with several parts (separate connected components): with
+ * ConnectNearbyParts on (default), faces of different parts whose vertices lie
+ * within epsilon of each other count as connected, so a symmetric region may
+ * span touching or interpenetrating parts (artist meshes often are made that
+ * way). Off: strict edge connectivity, as in the paper.
+ *
+ * Output 0: the triangulated input (all its point and cell arrays kept) plus
+ * - cell array  "SymmetryRegion": 2 symmetric, 1 support only, 0 outside;
+ * - point array "SymmetryDistance": fine distance d_i of the reflected vertex;
+ * - point array "SymmetryWeight": final IRLS weight (0 outside the support);
+ * - field data  "SymmetryPlaneOrigin", "SymmetryPlaneNormal" (3 components),
+ *   "SymmetricAreaFraction", "SymmetryFound" (0/1), "SymmetryTolerance"
+ *   (epsilon as a length), "SymmetryCostHistory" (sum of rho per iteration,
+ *   coarse then fine, of the winning start), "SymmetryIterations" (coarse, fine).
+ * Output 1: the plane glyph: a quad on the plane covering the projection of
+ * the symmetric region with a 10% margin, with the same plane field data.
+ *
+ * "No symmetry" rule: SymmetryFound is 1 when the symmetric region covers at
+ * least MinimumSymmetricAreaFraction of the mesh area and the area-weighted
+ * RMS distance over it is at most 0.35 epsilon; otherwise the best plane is
+ * still reported, with SymmetryFound = 0.
+ *
+ * Bad input (no points, no polygons, NaN/Inf coordinates, zero total area)
+ * is reported with vtkErrorMacro and the request fails.
+ */
+#ifndef vtkSymmetryPlaneDetector_h
+#define vtkSymmetryPlaneDetector_h
+
+#include "FoldingMeshesFiltersModule.h" // for export macro
+#include "vtkPolyDataAlgorithm.h"
+
+#include <memory> // for std::unique_ptr
+
+class FOLDINGMESHESFILTERS_EXPORT vtkSymmetryPlaneDetector : public vtkPolyDataAlgorithm
+{
+public:
+  static vtkSymmetryPlaneDetector* New();
+  vtkTypeMacro(vtkSymmetryPlaneDetector, vtkPolyDataAlgorithm);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  enum ToleranceModes
+  {
+    RELATIVE_TO_DIAGONAL = 0,
+    ABSOLUTE = 1
+  };
+  enum Methods
+  {
+    ROBUST = 0,
+    PAPER = 1
+  };
+
+  ///@{
+  /**
+   * The symmetry tolerance epsilon. With ToleranceMode RELATIVE_TO_DIAGONAL
+   * (default) it is a fraction of the bounding-box diagonal (default 0.02,
+   * the paper's 2%); with ABSOLUTE it is a length. Clamped to [1e-6, 1e30].
+   */
+  vtkSetClampMacro(Tolerance, double, 1e-6, 1e30);
+  vtkGetMacro(Tolerance, double);
+  vtkSetClampMacro(ToleranceMode, int, RELATIVE_TO_DIAGONAL, ABSOLUTE);
+  vtkGetMacro(ToleranceMode, int);
+  ///@}
+
+  ///@{
+  /** ROBUST (default, several starts judged by final region) or PAPER (one start). */
+  vtkSetClampMacro(Method, int, ROBUST, PAPER);
+  vtkGetMacro(Method, int);
+  ///@}
+
+  ///@{
+  /**
+   * Optional initial plane replacing the paper's first closed-form step.
+   * Off by default; origin (0,0,0), normal (1,0,0). The normal need not be unit.
+   */
+  vtkSetMacro(UseInitialPlane, bool);
+  vtkGetMacro(UseInitialPlane, bool);
+  vtkBooleanMacro(UseInitialPlane, bool);
+  vtkSetVector3Macro(InitialPlaneOrigin, double);
+  vtkGetVector3Macro(InitialPlaneOrigin, double);
+  vtkSetVector3Macro(InitialPlaneNormal, double);
+  vtkGetVector3Macro(InitialPlaneNormal, double);
+  ///@}
+
+  ///@{
+  /** Number of voted candidate planes tried by the ROBUST method (default 8, range 0..64). */
+  vtkSetClampMacro(NumberOfCandidates, int, 0, 64);
+  vtkGetMacro(NumberOfCandidates, int);
+  ///@}
+
+  ///@{
+  /** Iteration cap of each phase (coarse, fine). Default 50, range 1..1000. */
+  vtkSetClampMacro(MaximumIterations, int, 1, 1000);
+  vtkGetMacro(MaximumIterations, int);
+  ///@}
+
+  ///@{
+  /** Normal compatibility angle in degrees (default 45, the paper's; range 1..90). */
+  vtkSetClampMacro(CompatibilityAngle, double, 1.0, 90.0);
+  vtkGetMacro(CompatibilityAngle, double);
+  ///@}
+
+  ///@{
+  /** Let regions span parts that touch within epsilon (default on). */
+  vtkSetMacro(ConnectNearbyParts, bool);
+  vtkGetMacro(ConnectNearbyParts, bool);
+  vtkBooleanMacro(ConnectNearbyParts, bool);
+  ///@}
+
+  ///@{
+  /** Minimum symmetric area fraction for SymmetryFound (default 0.1, range 0..1). */
+  vtkSetClampMacro(MinimumSymmetricAreaFraction, double, 0.0, 1.0);
+  vtkGetMacro(MinimumSymmetricAreaFraction, double);
+  ///@}
+
+  ///@{
+  /** Seed of the candidate sampling (default 1); results are deterministic for a seed. */
+  vtkSetMacro(RandomSeed, int);
+  vtkGetMacro(RandomSeed, int);
+  ///@}
+
+  ///@{
+  /** Results, valid after Update(). */
+  vtkGetVector3Macro(PlaneOrigin, double);
+  vtkGetVector3Macro(PlaneNormal, double);
+  vtkGetMacro(SymmetricAreaFraction, double);
+  vtkGetMacro(SymmetryFound, bool);
+  vtkGetMacro(CoarseIterations, int);
+  vtkGetMacro(FineIterations, int);
+  /** Epsilon as a length, as used by the last run. */
+  vtkGetMacro(ToleranceLength, double);
+  ///@}
+
+protected:
+  vtkSymmetryPlaneDetector();
+  ~vtkSymmetryPlaneDetector() override;
+
+  int FillInputPortInformation(int port, vtkInformation* info) override;
+  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+
+  double Tolerance = 0.02;
+  int ToleranceMode = RELATIVE_TO_DIAGONAL;
+  int Method = ROBUST;
+  bool UseInitialPlane = false;
+  double InitialPlaneOrigin[3] = { 0.0, 0.0, 0.0 };
+  double InitialPlaneNormal[3] = { 1.0, 0.0, 0.0 };
+  int NumberOfCandidates = 8;
+  int MaximumIterations = 50;
+  double CompatibilityAngle = 45.0;
+  bool ConnectNearbyParts = true;
+  double MinimumSymmetricAreaFraction = 0.1;
+  int RandomSeed = 1;
+
+  double PlaneOrigin[3] = { 0.0, 0.0, 0.0 };
+  double PlaneNormal[3] = { 1.0, 0.0, 0.0 };
+  double SymmetricAreaFraction = 0.0;
+  bool SymmetryFound = false;
+  int CoarseIterations = 0;
+  int FineIterations = 0;
+  double ToleranceLength = 0.0;
+
+private:
+  vtkSymmetryPlaneDetector(const vtkSymmetryPlaneDetector&) = delete;
+  void operator=(const vtkSymmetryPlaneDetector&) = delete;
+};
+
+#endif

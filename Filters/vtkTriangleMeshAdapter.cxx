@@ -1,0 +1,76 @@
+#include "vtkTriangleMeshAdapter.h"
+
+#include <vtkCellArray.h>
+#include <vtkCellArrayIterator.h>
+#include <vtkDataArray.h>
+#include <vtkNew.h>
+#include <vtkPointData.h>
+#include <vtkPoints.h>
+#include <vtkPolyData.h>
+#include <vtkTriangleFilter.h>
+
+namespace foldingmeshes
+{
+vtkSmartPointer<vtkPolyData> TriangulateSurface(vtkPolyData* input,
+  vtkIdType& droppedVerts,
+  vtkIdType& droppedLines)
+{
+  droppedVerts = input->GetNumberOfVerts();
+  droppedLines = input->GetNumberOfLines();
+  vtkNew<vtkPolyData> surface;
+  surface->ShallowCopy(input);
+  vtkNew<vtkTriangleFilter> triangulate;
+  triangulate->SetInputData(surface);
+  triangulate->PassVertsOff();
+  triangulate->PassLinesOff();
+  triangulate->Update();
+  vtkSmartPointer<vtkPolyData> result = triangulate->GetOutput();
+  return result;
+}
+
+bool ToTriangleMesh(vtkPolyData* triangles,
+  TriangleMesh& mesh,
+  std::vector<Vec3>& normals,
+  std::string& error)
+{
+  const vtkIdType np = triangles->GetNumberOfPoints();
+  mesh.points.resize(np);
+  for (vtkIdType i = 0; i < np; ++i)
+  {
+    double p[3];
+    triangles->GetPoint(i, p);
+    mesh.points[i] = Vec3(p[0], p[1], p[2]);
+  }
+  mesh.triangles.clear();
+  mesh.triangles.reserve(triangles->GetNumberOfPolys());
+  auto it = vtk::TakeSmartPointer(triangles->GetPolys()->NewIterator());
+  for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell())
+  {
+    vtkIdType n;
+    const vtkIdType* ids;
+    it->GetCurrentCell(n, ids);
+    if (n != 3)
+    {
+      error = "a polygon could not be triangulated";
+      return false;
+    }
+    mesh.triangles.push_back(
+      { static_cast<int>(ids[0]), static_cast<int>(ids[1]), static_cast<int>(ids[2]) });
+  }
+  normals.clear();
+  if (vtkDataArray* n = triangles->GetPointData()->GetNormals())
+  {
+    if (n->GetNumberOfComponents() == 3 && n->GetNumberOfTuples() == np)
+    {
+      normals.resize(np);
+      for (vtkIdType i = 0; i < np; ++i)
+      {
+        double v[3];
+        n->GetTuple(i, v);
+        normals[i] = Vec3(v[0], v[1], v[2]);
+      }
+    }
+  }
+  return true;
+}
+}

@@ -1,0 +1,33 @@
+// Conversions between vtkPolyData and the core's plain mesh types (internal header).
+#ifndef vtkTriangleMeshAdapter_h
+#define vtkTriangleMeshAdapter_h
+
+#include "Core/TriangleMesh.h"
+
+#include <vtkSmartPointer.h>
+
+#include <string>
+
+class vtkPolyData;
+class vtkAlgorithm;
+
+namespace foldingmeshes
+{
+/**
+ * Triangulates the polygons and strips of `input` (vertices and lines are dropped; the
+ * counts are returned so the caller can warn). The result keeps the input's points and
+ * all point and cell arrays (cell arrays of the polygons).
+ */
+vtkSmartPointer<vtkPolyData> TriangulateSurface(vtkPolyData* input,
+  vtkIdType& droppedVerts,
+  vtkIdType& droppedLines);
+
+/// Copies the points and triangles of an all-triangle vtkPolyData. False if a cell is not a
+/// triangle.
+bool ToTriangleMesh(vtkPolyData* triangles,
+  TriangleMesh& mesh,
+  std::vector<Vec3>& normals,
+  std::string& error);
+}
+
+#endif

@@ -1,0 +1,148 @@
+// Prints, per mesh: faces, starts tried, iterations (coarse/fine), seconds per phase,
+// peak memory and the plane. Not a test: numbers for humans and closing notes.
+//
+//   BenchmarkSymmetryDetection [--threads N] [--procedural] MESH...
+#include "Core/MeshPreparation.h"
+#include "Core/SymmetryDetection.h"
+#include "MeshIO.h"
+#include "ProceduralMeshes.h"
+#include "vtkTriangleMeshAdapter.h"
+
+#include <vtkPolyData.h>
+#include <vtkSMPTools.h>
+
+#include <sys/resource.h>
+
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace
+{
+using namespace foldingmeshes;
+using Clock = std::chrono::steady_clock;
+
+double PeakMemoryMiB()
+{
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  return usage.ru_maxrss / 1024.0;
+}
+
+void Run(const std::string& name, vtkPolyData* input)
+{
+  const auto t0 = Clock::now();
+  vtkIdType droppedVerts = 0, droppedLines = 0;
+  auto surface = TriangulateSurface(input, droppedVerts, droppedLines);
+  TriangleMesh soup;
+  std::vector<Vec3> normals;
+  PreparedMesh mesh;
+  std::string error;
+  if (!ToTriangleMesh(surface, soup, normals, error) || !PrepareMesh(soup, normals, mesh, error))
+  {
+    std::printf("%-28s error: %s\n", name.c_str(), error.c_str());
+    return;
+  }
+  SymmetryOptions options;
+  options.epsilon = 0.02 * mesh.diagonal;
+  LinkNearbyParts(mesh, options.epsilon);
+  const double prepare = std::chrono::duration<double>(Clock::now() - t0).count();
+  const auto t1 = Clock::now();
+  const SymmetryResult r = DetectSymmetry(mesh, options);
+  const double detect = std::chrono::duration<double>(Clock::now() - t1).count();
+  std::printf("%-28s %8d %6d %4d/%-4d %7.3f %7.3f %7.3f %7.3f %7.3f %8.1f %6.1f%% %5.3f %-3s "
+              "n=(%+.4f %+.4f %+.4f) o=(%.4g %.4g %.4g)\n",
+    name.c_str(),
+    mesh.NumberOfFaces(),
+    r.startsTried,
+    r.coarseIterations,
+    r.fineIterations,
+    prepare,
+    r.candidateSeconds,
+    r.coarseSeconds,
+    r.fineSeconds,
+    prepare + detect,
+    PeakMemoryMiB(),
+    100.0 * r.symmetricAreaFraction,
+    r.rmsResidual / options.epsilon,
+    r.found ? "yes" : "no",
+    r.plane.normal.x(),
+    r.plane.normal.y(),
+    r.plane.normal.z(),
+    r.plane.origin.x(),
+    r.plane.origin.y(),
+    r.plane.origin.z());
+  std::fflush(stdout);
+}
+}
+
+int main(int argc, char* argv[])
+{
+  std::vector<std::string> meshes;
+  bool procedural = false;
+  for (int i = 1; i < argc; ++i)
+  {
+    const std::string arg = argv[i];
+    if (arg == "--threads" && i + 1 < argc)
+    {
+      vtkSMPTools::SetBackend("STDThread");
+      vtkSMPTools::Initialize(std::atoi(argv[++i]));
+    }
+    else if (arg == "--procedural")
+      procedural = true;
+    else if (std::filesystem::is_directory(arg))
+    {
+      std::vector<std::string> found;
+      for (const auto& entry : std::filesystem::directory_iterator(arg))
+      {
+        const std::string ext = entry.path().extension().string();
+        if (ext == ".off" || ext == ".obj" || ext == ".ply" || ext == ".vtp" || ext == ".stl")
+          found.push_back(entry.path().string());
+      }
+      std::sort(found.begin(), found.end());
+      meshes.insert(meshes.end(), found.begin(), found.end());
+    }
+    else
+      meshes.push_back(arg);
+  }
+  std::printf("SMP backend %s, %d threads\n",
+    vtkSMPTools::GetBackend(),
+    vtkSMPTools::GetEstimatedNumberOfThreads());
+  std::printf("%-28s %8s %6s %9s %7s %7s %7s %7s %7s %8s %7s %-3s %s\n",
+    "mesh",
+    "faces",
+    "starts",
+    "iter c/f",
+    "prep s",
+    "cand s",
+    "coarse",
+    "fine s",
+    "total s",
+    "peak MiB",
+    "region",
+    "rms/eps sym",
+    "plane");
+  for (const std::string& path : meshes)
+  {
+    std::string error;
+    auto mesh = ReadMesh(path, error);
+    if (!mesh)
+    {
+      std::printf("%-28s error: %s\n", path.c_str(), error.c_str());
+      continue;
+    }
+    Run(std::filesystem::path(path).filename().string(), mesh);
+  }
+  if (procedural)
+  {
+    for (int faces : { 10000, 100000, 1000000 })
+    {
+      auto shape = testing::MakeBilateralBlob(faces, 7);
+      testing::ApplyRigidMotion(shape, testing::RandomRigidMotion(11));
+      Run("blob_" + std::to_string(faces), shape.mesh);
+    }
+  }
+  return 0;
+}

@@ -1,0 +1,92 @@
+// Small helpers shared by the core unit tests: a non-fatal EXPECT that counts failures, and
+// conversion of procedural vtkPolyData meshes into the core's TriangleMesh / PreparedMesh.
+#ifndef foldingmeshes_CoreTestUtilities_h
+#define foldingmeshes_CoreTestUtilities_h
+
+#include "MeshPreparation.h"
+#include "TriangleMesh.h"
+
+#include <vtkCellArray.h>
+#include <vtkIdList.h>
+#include <vtkNew.h>
+#include <vtkPolyData.h>
+
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <sstream>
+#include <string>
+
+namespace coretest
+{
+inline int& Failures()
+{
+  static int failures = 0;
+  return failures;
+}
+
+#define EXPECT(cond, msg)                                                                          \
+  do                                                                                               \
+  {                                                                                                \
+    if (!(cond))                                                                                   \
+    {                                                                                              \
+      std::ostringstream os_;                                                                      \
+      os_ << msg;                                                                                  \
+      std::printf("FAIL (%s:%d): %s\n", __FILE__, __LINE__, os_.str().c_str());                   \
+      ++coretest::Failures();                                                                      \
+    }                                                                                              \
+  } while (0)
+
+/// Stops the test at once (for preconditions the rest depends on).
+#define REQUIRE(cond, msg)                                                                         \
+  do                                                                                               \
+  {                                                                                                \
+    EXPECT(cond, msg);                                                                             \
+    if (!(cond))                                                                                   \
+      std::exit(EXIT_FAILURE);                                                                     \
+  } while (0)
+
+inline int Finish(const char* name)
+{
+  if (coretest::Failures() > 0)
+    std::printf("%s: %d check(s) FAILED\n", name, coretest::Failures());
+  else
+    std::printf("%s: all checks passed\n", name);
+  return coretest::Failures() > 0 ? EXIT_FAILURE : EXIT_SUCCESS;
+}
+
+/// The triangles of an all-triangle vtkPolyData (exits if a cell is not a triangle).
+inline foldingmeshes::TriangleMesh ToTriangleMesh(vtkPolyData* pd)
+{
+  foldingmeshes::TriangleMesh mesh;
+  mesh.points.resize(static_cast<size_t>(pd->GetNumberOfPoints()));
+  for (vtkIdType i = 0; i < pd->GetNumberOfPoints(); ++i)
+    pd->GetPoint(i, mesh.points[static_cast<size_t>(i)].data());
+  vtkNew<vtkIdList> ids;
+  for (vtkIdType c = 0; c < pd->GetNumberOfCells(); ++c)
+  {
+    pd->GetCellPoints(c, ids);
+    REQUIRE(ids->GetNumberOfIds() == 3, "procedural mesh cell " << c << " is not a triangle");
+    mesh.triangles.push_back({ static_cast<int>(ids->GetId(0)), static_cast<int>(ids->GetId(1)),
+      static_cast<int>(ids->GetId(2)) });
+  }
+  return mesh;
+}
+
+/// PrepareMesh without input normals; exits on failure.
+inline foldingmeshes::PreparedMesh Prepare(const foldingmeshes::TriangleMesh& soup)
+{
+  foldingmeshes::PreparedMesh mesh;
+  std::string error;
+  const bool ok = foldingmeshes::PrepareMesh(soup, {}, mesh, error);
+  REQUIRE(ok, "PrepareMesh failed: " << error);
+  return mesh;
+}
+
+inline double Seconds(std::chrono::steady_clock::time_point since)
+{
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - since).count();
+}
+}
+
+#endif
