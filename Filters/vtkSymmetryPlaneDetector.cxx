@@ -124,6 +124,9 @@ int vtkSymmetryPlaneDetector::RequestData(vtkInformation*,
   this->SymmetricAreaFraction = 0.0;
   this->SymmetryFound = false;
   this->CoarseIterations = this->FineIterations = 0;
+  this->ToleranceLength = 0.0;
+  for (int k = 0; k < 3; ++k)
+    this->PlaneOrigin[k] = this->PlaneNormal[k] = 0.0;
   if (!input || !output || !glyph)
   {
     vtkErrorMacro("Missing input or output poly data.");
@@ -201,6 +204,14 @@ int vtkSymmetryPlaneDetector::RequestData(vtkInformation*,
     vtkWarningMacro("Symmetry detection aborted.");
     return 1;
   }
+  if (result.faceLabel.size() != static_cast<size_t>(mesh.NumberOfFaces()) ||
+    result.distance.size() != static_cast<size_t>(mesh.NumberOfPoints()) ||
+    result.weight.size() != static_cast<size_t>(mesh.NumberOfPoints()) ||
+    !result.plane.normal.allFinite() || !result.plane.origin.allFinite())
+  {
+    vtkErrorMacro("Symmetry detection produced no result for this mesh.");
+    return 0;
+  }
 
   for (int k = 0; k < 3; ++k)
   {
@@ -242,7 +253,11 @@ int vtkSymmetryPlaneDetector::RequestData(vtkInformation*,
   output->GetPointData()->AddArray(distance);
   output->GetPointData()->AddArray(weight);
 
+  // The input's field arrays first, so that ours replace stale ones of the same name
+  // (running the detector on its own output).
   vtkNew<vtkFieldData> field;
+  for (int a = 0; a < input->GetFieldData()->GetNumberOfArrays(); ++a)
+    field->AddArray(input->GetFieldData()->GetAbstractArray(a));
   field->AddArray(MakeTuple("SymmetryPlaneOrigin", this->PlaneOrigin, 3));
   field->AddArray(MakeTuple("SymmetryPlaneNormal", this->PlaneNormal, 3));
   field->AddArray(MakeTuple("SymmetricAreaFraction", &this->SymmetricAreaFraction, 1));
@@ -253,8 +268,6 @@ int vtkSymmetryPlaneDetector::RequestData(vtkInformation*,
     static_cast<double>(result.fineIterations) };
   field->AddArray(MakeTuple("SymmetryIterations", iterations, 2));
   field->AddArray(MakeSeries("SymmetryCostHistory", result.costHistory));
-  for (int a = 0; a < input->GetFieldData()->GetNumberOfArrays(); ++a)
-    field->AddArray(input->GetFieldData()->GetAbstractArray(a));
   output->SetFieldData(field);
 
   // Output 1: the plane glyph.

@@ -19,12 +19,18 @@
  * of faces whose vertex distances are all below epsilon.
  *
  * Two methods:
- * - ROBUST (default): several starts -- the paper's principal-axis start, the
- *   optional user plane, and planes voted for by sampled vertex pairs with
- *   mirror-compatible normals -- are each refined by the paper's iteration;
- *   the winner is the one with the largest final symmetric region (ties: the
- *   lower mean residual), not the lowest sum of rho. This finds local
- *   symmetries on asymmetric bodies and resists large asymmetric attachments.
+ * - ROBUST (default): several starts -- the result of the paper's coarse phase,
+ *   the principal planes of the surface, the optional user plane, and planes
+ *   voted for by sampled vertex pairs with mirror-compatible normals -- are each
+ *   refined by fine iterations whose plane step is a Gauss-Newton fit of the
+ *   mirrored vertices to their partners' tangent planes (instead of the
+ *   principal axes of the weighted vertices, which drift when mirror images
+ *   carry unequal vertex areas). The winner has a tight region (RMS distance
+ *   within the SymmetryFound rule) if any does, then the largest final
+ *   symmetric region (ties within 2% of the area: the lower RMS residual), not
+ *   the lowest sum of rho. This finds local symmetries on asymmetric bodies and
+ *   resists large asymmetric attachments. Meshes above 120k faces search
+ *   candidates on a simplified copy and refine the best on the full mesh.
  * - PAPER: exactly one start (the principal axes of the area-weighted mesh, or
  *   the user's initial plane), as in the paper.
  *
@@ -83,16 +89,16 @@ public:
   /**
    * The symmetry tolerance epsilon. With ToleranceMode RELATIVE_TO_DIAGONAL
    * (default) it is a fraction of the bounding-box diagonal (default 0.02,
-   * the paper's 2%); with ABSOLUTE it is a length. Clamped to [1e-6, 1e30].
+   * the paper's 2%); with ABSOLUTE it is a length. Clamped to [1e-12, 1e30].
    */
-  vtkSetClampMacro(Tolerance, double, 1e-6, 1e30);
+  vtkSetClampMacro(Tolerance, double, 1e-12, 1e30);
   vtkGetMacro(Tolerance, double);
   vtkSetClampMacro(ToleranceMode, int, RELATIVE_TO_DIAGONAL, ABSOLUTE);
   vtkGetMacro(ToleranceMode, int);
   ///@}
 
   ///@{
-  /** ROBUST (default, several starts judged by final region) or PAPER (one start). */
+  /** ROBUST (default, several starts judged by final region) or PAPER (the paper: one start). */
   vtkSetClampMacro(Method, int, ROBUST, PAPER);
   vtkGetMacro(Method, int);
   ///@}

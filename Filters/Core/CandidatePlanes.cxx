@@ -93,6 +93,7 @@ bool RefinePlaneFromCorrespondences(const std::vector<Vec3>& points,
 
 bool SurfacePrincipalPlanes(const PreparedMesh& mesh, std::array<Plane, 3>& planes)
 {
+  const Vec3 center = 0.5 * (mesh.boundsMin + mesh.boundsMax);
   double area = 0.0;
   Vec3 first = Vec3::Zero();
   Eigen::Matrix3d second = Eigen::Matrix3d::Zero();
@@ -101,8 +102,11 @@ bool SurfacePrincipalPlanes(const PreparedMesh& mesh, std::array<Plane, 3>& plan
     const double a = mesh.faceAreas[f];
     if (!(a > 0.0))
       continue;
+    // Moments about the box centre: about the world origin, far-away meshes would lose
+    // the covariance to cancellation.
     const Triangle& t = mesh.triangles[f];
-    const Vec3 &p = mesh.points[t[0]], &q = mesh.points[t[1]], &r = mesh.points[t[2]];
+    const Vec3 p = mesh.points[t[0]] - center, q = mesh.points[t[1]] - center,
+               r = mesh.points[t[2]] - center;
     const Vec3 s = p + q + r;
     area += a;
     first += a * s / 3.0;
@@ -112,8 +116,9 @@ bool SurfacePrincipalPlanes(const PreparedMesh& mesh, std::array<Plane, 3>& plan
   }
   if (!(area > 0.0))
     return false;
-  const Vec3 m = first / area;
-  const Eigen::Matrix3d c = second / area - m * m.transpose();
+  const Vec3 m = first / area + center;
+  const Vec3 mc = first / area;
+  const Eigen::Matrix3d c = second / area - mc * mc.transpose();
   Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver(c);
   for (int k = 0; k < 3; ++k)
   {
@@ -149,13 +154,48 @@ std::vector<Plane> VotedPlanes(const PreparedMesh& mesh, int count, double epsil
     double offset;
     double weight;
   };
+  // Partners are drawn mostly among vertices of similar curvature (mirror images have the
+  // same): a discrete mean normal curvature per vertex, ranked; q is sampled within a window
+  // of p's rank. One vote in four pairs p with a uniformly sampled q.
+  std::vector<double> curvature(nv, 0.0);
+  for (int v = 0; v < nv; ++v)
+  {
+    double sum = 0.0;
+    int count = 0;
+    for (int k = mesh.vertexFaceOffsets[v]; k < mesh.vertexFaceOffsets[v + 1]; ++k)
+      for (int w : mesh.triangles[mesh.vertexFaces[k]])
+      {
+        const Vec3 e = mesh.points[v] - mesh.points[w];
+        const double len2 = e.squaredNorm();
+        if (w == v || !(len2 > 0.0))
+          continue;
+        sum += (mesh.vertexNormals[v] - mesh.vertexNormals[w]).dot(e) / len2;
+        ++count;
+      }
+    curvature[v] = count > 0 ? sum / count : 0.0;
+  }
+  std::vector<int> byCurvature(nv), rank(nv);
+  for (int v = 0; v < nv; ++v)
+    byCurvature[v] = v;
+  std::sort(byCurvature.begin(), byCurvature.end(), [&](int a, int b) {
+    return curvature[a] != curvature[b] ? curvature[a] < curvature[b] : a < b;
+  });
+  for (int r = 0; r < nv; ++r)
+    rank[byCurvature[r]] = r;
+  const int window = std::max(8, nv / 100);
+  auto similar = [&](int a) {
+    const int lo = std::max(0, rank[a] - window), hi = std::min(nv - 1, rank[a] + window);
+    return byCurvature[lo + static_cast<int>(random() % static_cast<unsigned>(hi - lo + 1))];
+  };
+
   std::vector<Vote> votes;
-  const int wanted = 3000, attempts = 200000;
+  const int wanted = 4000, attempts = 400000;
   const double pairCos = std::cos(25.0 * 3.14159265358979323846 / 180.0);
   const Vec3 center = 0.5 * (mesh.boundsMin + mesh.boundsMax);
   for (int k = 0; k < attempts && static_cast<int>(votes.size()) < wanted; ++k)
   {
-    const int a = sample(), b = sample();
+    const int a = sample();
+    const int b = (k % 4 == 3) ? sample() : similar(a);
     const Vec3 ab = mesh.points[a] - mesh.points[b];
     const double len = ab.norm();
     if (len < epsilon)

@@ -159,10 +159,10 @@ std::string FoldingTree::Validate() const
           for (int v : t)
             if (v < 0 || v >= static_cast<int>(np))
               return os.str() + "triangle point index out of range";
-        for (const MirroredTear& t : m.mirroredTears)
+        for (const MirroredFlag& t : m.mirroredFlags)
           if (t.point < 0 || t.point >= static_cast<int>(np) || t.level < 0 ||
             t.level >= node.depth)
-            return os.str() + "mirrored tear with a point or level out of range";
+            return os.str() + "mirrored flag with a point or level out of range";
         for (const Vec3& p : m.points)
           if (!p.allFinite())
             return os.str() + "non-finite point";

@@ -38,23 +38,31 @@ enum class LeafReason
 const char* ToString(FoldingNodeKind kind);
 const char* ToString(LeafReason reason);
 
+/// The two per-level vertex flags of the tree (see FoldingLeafMesh).
+enum class LevelFlag
+{
+  Tear,  ///< on the segmentation boundary of the segmentation node at that depth
+  Plane  ///< on the plane of the folding node at that depth
+};
+
 /**
- * A tear vertex that was removed by a fold, recorded on the kept vertex it mirrors onto:
- * the copy of `point` produced by reflecting it through exactly the folding nodes whose
- * depths are the bits of `mirrorMask` (among the folds below the segmentation node at depth
- * `level`; folds whose plane the point lies on do not count, they do not duplicate it) is a
- * tear vertex of that segmentation node. A tear vertex t discarded by the fold at depth f is
- * represented by the kept vertex v nearest to reflect(t) (mask bit f); if t itself was such a
- * representative, its masks gain bit f. This keeps the tear stack exact through nested folds:
- * the mirror copies of an ordinary tear vertex are NOT tear vertices (the fold may map the
- * seam onto an ancestor's fold line), while the mirror copies that recreate removed tear
- * vertices are.
+ * A flagged vertex that a fold removed, recorded on the kept vertex it mirrors onto: the
+ * copy of `point` produced by reflecting it through exactly the folding nodes whose depths
+ * are the bits of `mirrorMask` (among the folds below depth `level`; folds whose plane the
+ * point lies on do not count, they do not duplicate it) carries `flag` for `level`. A
+ * flagged vertex t removed by the fold at depth f is represented by the kept vertex v
+ * nearest to reflect(t) (mask bit f); if t itself carried such records, they move to v with
+ * bit f added. This keeps the flags exact through nested folds: the mirror copies of an
+ * ordinary tear vertex are NOT tear vertices (the fold may map the seam onto an ancestor's
+ * fold line), while the copies that recreate removed tear vertices (or removed vertices of an
+ * ancestor's fold line) are.
  */
-struct MirroredTear
+struct MirroredFlag
 {
   int point = -1;
   int level = 0;
   uint64_t mirrorMask = 0;
+  LevelFlag flag = LevelFlag::Tear;
 };
 
 /**
@@ -66,10 +74,11 @@ struct MirroredTear
  * - tearMask: the paper's tear stack. Bit d is set when the vertex lay on a segmentation
  *   boundary of the segmentation node at depth d (it was used by faces of two different
  *   children of that node). It keeps the bit through folds (paper §4.3: it inherits).
- *   Tear vertices removed by folds are recorded in mirroredTears (see MirroredTear).
+ *   Tear vertices removed by folds are recorded in mirroredFlags (see MirroredFlag).
  * - planeMask: bit d is set when the vertex lies on the plane of the folding node at depth d
  *   (it was projected or snapped onto it, see FoldingTreeBuilder.h). The unfolder merges
- *   these vertices with their mirror images, which closes the fold line.
+ *   these vertices with their mirror images, which closes the fold line. Fold-line vertices
+ *   removed by a later fold are recorded in mirroredFlags.
  */
 struct FoldingLeafMesh
 {
@@ -80,7 +89,7 @@ struct FoldingLeafMesh
   std::vector<uint64_t> tearMask;
   std::vector<uint64_t> planeMask;
   std::vector<char> projected; ///< 1: moved from the discarded side onto a fold plane
-  std::vector<MirroredTear> mirroredTears; ///< sorted by point, level, mask
+  std::vector<MirroredFlag> mirroredFlags; ///< sorted by point, level, flag, mask
 
   int NumberOfPoints() const { return static_cast<int>(points.size()); }
   int NumberOfFaces() const { return static_cast<int>(triangles.size()); }

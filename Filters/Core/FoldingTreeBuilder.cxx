@@ -1,5 +1,6 @@
 #include "FoldingTreeBuilder.h"
 
+#include "CandidatePlanes.h"
 #include "MeshPreparation.h"
 #include "MirrorDistance.h"
 #include "RegionGrowing.h"
@@ -8,9 +9,8 @@
 
 #include <algorithm>
 #include <chrono>
-#include <cstdio>
-#include <cstdlib>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <numeric>
 
@@ -28,8 +28,8 @@ struct WorkMesh
   std::vector<uint64_t> tear;
   std::vector<uint64_t> onPlane;
   std::vector<char> projected;
-  /// (level, mirror mask) per point: see MirroredTear.
-  std::vector<std::vector<std::pair<int, uint64_t>>> mirrorTears;
+  /// Per point: (2 * level + flag, mirror mask), flag 0 tear, 1 plane; see MirroredFlag.
+  std::vector<std::vector<std::pair<int, uint64_t>>> mirrorFlags;
 
   int NumberOfFaces() const { return static_cast<int>(triangles.size()); }
   int NumberOfPoints() const { return static_cast<int>(points.size()); }
@@ -66,7 +66,7 @@ WorkMesh Extract(const WorkMesh& w, const std::vector<char>& mask)
       out.tear.push_back(w.tear[v]);
       out.onPlane.push_back(w.onPlane[v]);
       out.projected.push_back(w.projected[v]);
-      out.mirrorTears.push_back(w.mirrorTears[v]);
+      out.mirrorFlags.push_back(w.mirrorFlags[v]);
     }
   for (int f = 0; f < w.NumberOfFaces(); ++f)
     if (mask[f])
@@ -117,8 +117,8 @@ int WeldAndDropCollapsed(WorkMesh& w)
       w.tear[rep[v]] |= w.tear[v];
       w.onPlane[rep[v]] |= w.onPlane[v];
       w.projected[rep[v]] |= w.projected[v];
-      auto& into = w.mirrorTears[rep[v]];
-      into.insert(into.end(), w.mirrorTears[v].begin(), w.mirrorTears[v].end());
+      auto& into = w.mirrorFlags[rep[v]];
+      into.insert(into.end(), w.mirrorFlags[v].begin(), w.mirrorFlags[v].end());
       std::sort(into.begin(), into.end());
       into.erase(std::unique(into.begin(), into.end()), into.end());
     }
@@ -172,6 +172,7 @@ public:
   void Run(WorkMesh root)
   {
     this->PlaneAtDepth.assign(MaximumFoldingTreeLevels, Plane());
+    this->EpsilonAtDepth.assign(MaximumFoldingTreeLevels, 0.0);
     this->Build(std::move(root), -1, 0, this->Options.epsilon, 0, 0);
     this->Report(1.0);
   }
@@ -227,12 +228,13 @@ private:
     m.tearMask = std::move(w.tear);
     m.planeMask = std::move(w.onPlane);
     m.projected = std::move(w.projected);
-    for (int v = 0; v < static_cast<int>(w.mirrorTears.size()); ++v)
+    for (int v = 0; v < static_cast<int>(w.mirrorFlags.size()); ++v)
     {
-      auto entries = w.mirrorTears[v];
+      auto entries = w.mirrorFlags[v];
       std::sort(entries.begin(), entries.end());
       for (const auto& e : entries)
-        m.mirroredTears.push_back({ v, e.first, e.second });
+        m.mirroredFlags.push_back(
+          { v, e.first / 2, e.second, e.first % 2 ? LevelFlag::Plane : LevelFlag::Tear });
     }
     this->DoneFaces += m.NumberOfFaces();
     this->Report(this->Fraction(this->DoneFaces));
@@ -256,45 +258,91 @@ private:
   }
 
   /// S minus the faces whose mirrored vertices are not within eps of S (see the header).
+  /// The faces of S as a prepared mesh (face order kept) with the region's vertex normals.
+  static bool PrepareSubset(const WorkMesh& w, const PreparedMesh& pm, const std::vector<char>& S,
+    PreparedMesh& spm)
+  {
+    WorkMesh sub = Extract(w, S);
+    if (sub.NumberOfFaces() == 0)
+      return false;
+    TriangleMesh soup;
+    soup.points = sub.points;
+    soup.triangles = sub.triangles;
+    // The region's vertex normals (not the sub-mesh's), as detection used them.
+    std::vector<Vec3> normals(sub.NumberOfPoints());
+    int next = 0;
+    std::vector<char> used(w.points.size(), 0);
+    for (int f = 0; f < w.NumberOfFaces(); ++f)
+      if (S[f])
+        for (int v : w.triangles[f])
+          used[v] = 1;
+    for (int v = 0; v < w.NumberOfPoints(); ++v)
+      if (used[v])
+        normals[next++] = pm.vertexNormals[v];
+    std::string error;
+    return PrepareMesh(soup, normals, spm, error);
+  }
+
+  /**
+   * Polishes the plane on S alone: Gauss-Newton steps of the point-to-tangent-plane fit
+   * (RefinePlaneFromCorrespondences) with every vertex of S weighted by its area, partners =
+   * closest compatible points of S itself. Detection weighs vertices near the remaining
+   * faces down and can stop a fraction of a degree off; on the trimmed S there are no
+   * outliers. The plane with the lowest area-weighted residual is returned (the input plane
+   * unless a step improves it).
+   */
+  Plane Polish(const WorkMesh& w, const PreparedMesh& pm, const std::vector<char>& S,
+    const Plane& plane, double eps) const
+  {
+    PreparedMesh spm;
+    if (!PrepareSubset(w, pm, S, spm))
+      return plane;
+    MirrorDistance distances(spm, this->Options.symmetry.compatibilityAngle);
+    std::vector<double> d;
+    std::vector<Vec3> closest, closestNormals;
+    Plane current = plane, best = plane;
+    double bestCost = std::numeric_limits<double>::infinity();
+    for (int iteration = 0; iteration < 12; ++iteration)
+    {
+      distances.Compute(current, DistanceMetric::Fine, eps, d, &closest, &closestNormals);
+      double cost = 0.0;
+      std::vector<double> weights(d.size(), 0.0);
+      for (size_t v = 0; v < d.size(); ++v)
+      {
+        const double dv = std::isfinite(d[v]) ? d[v] : eps;
+        cost += spm.vertexAreas[v] * dv * dv;
+        if (std::isfinite(d[v]))
+          weights[v] = spm.vertexAreas[v];
+      }
+      if (!(cost < bestCost))
+        break;
+      bestCost = cost;
+      best = current;
+      Plane next;
+      if (!RefinePlaneFromCorrespondences(
+            spm.points, closest, closestNormals, weights, current, next))
+        break;
+      const bool small = PlaneAngleDegrees(next, current) < 1e-7 &&
+        PlaneOffsetAt(current, next, next.origin) < 1e-12 * this->Tree.diagonal;
+      current = next;
+      if (small)
+        break;
+    }
+    return CanonicalPlane(best, plane.origin);
+  }
+
   std::vector<char> Trim(const WorkMesh& w, const PreparedMesh& pm, std::vector<char> S,
     const Plane& plane, double eps) const
   {
     for (int iteration = 0; iteration < 8; ++iteration)
     {
-      WorkMesh sub = Extract(w, S);
-      if (sub.NumberOfFaces() == 0)
-        break;
-      TriangleMesh soup;
-      soup.points = sub.points;
-      soup.triangles = sub.triangles;
-      // The region's vertex normals (not the sub-mesh's), as detection used them.
-      std::vector<Vec3> normals(sub.NumberOfPoints());
-      {
-        int next = 0;
-        std::vector<char> used(w.points.size(), 0);
-        for (int f = 0; f < w.NumberOfFaces(); ++f)
-          if (S[f])
-            for (int v : w.triangles[f])
-              used[v] = 1;
-        for (int v = 0; v < w.NumberOfPoints(); ++v)
-          if (used[v])
-            normals[next++] = pm.vertexNormals[v];
-      }
       PreparedMesh spm;
-      std::string error;
-      if (!PrepareMesh(soup, normals, spm, error))
+      if (!PrepareSubset(w, pm, S, spm))
         break;
       MirrorDistance distances(spm, this->Options.symmetry.compatibilityAngle);
       std::vector<double> d;
       distances.Compute(plane, DistanceMetric::Fine, eps, d);
       const std::vector<char> ok = FacesWithVerticesWithin(spm, d, eps, true);
-      if (std::getenv("FT_DEBUG"))
-      {
-        int fin = 0, okc = 0;
-        for (double x : d) fin += std::isfinite(x);
-        for (char x : ok) okc += x;
-        std::fprintf(stderr, "  trim it %d: sub faces %d points %d finite %d ok faces %d\n", iteration, spm.NumberOfFaces(), spm.NumberOfPoints(), fin, okc);
-      }
       std::vector<char> next = S;
       bool changed = false;
       int k = 0;
@@ -377,19 +425,14 @@ private:
       S[f] = result.faceLabel[f] == 2;
       any = any || S[f];
     }
-    const Plane plane = result.plane;
-    if (std::getenv("FT_DEBUG"))
-      std::fprintf(stderr, "detect depth %d faces %d found %d frac %.3f rms/eps %.3f\n", depth, nf,
-        int(result.found), result.symmetricAreaFraction, result.rmsResidual / eps),
-      std::fprintf(stderr, "  n = %.4f %.4f %.4f o = %.4f %.4f %.4f\n", plane.normal.x(), plane.normal.y(), plane.normal.z(), plane.origin.x(), plane.origin.y(), plane.origin.z());
+    Plane plane = result.plane;
     if (any && O.trimToMirrorConsistent)
       S = this->Trim(w, pm, S, plane, eps);
-    if (std::getenv("FT_DEBUG"))
+    if (any && O.polishPlane)
     {
-      int c = 0;
-      for (char x : S)
-        c += x;
-      std::fprintf(stderr, "  after trim %d faces\n", c);
+      plane = this->Polish(w, pm, S, plane, eps);
+      if (O.trimToMirrorConsistent)
+        S = this->Trim(w, pm, S, plane, eps);
     }
     // Input-degenerate faces (never in S: detection ignores them) follow S when all their
     // vertices are vertices of S.
@@ -484,37 +527,23 @@ private:
     return index;
   }
 
-  /**
-   * Tear vertices that the fold at `depth` removes (not used by a kept face) are recorded on
-   * the kept vertex nearest to their mirror image (within eps): see MirroredTear.
-   */
-  void TransferDiscardedTears(WorkMesh& w, const std::vector<char>& used, const Plane& plane,
-    int depth, double eps) const
+  /// Nearest of `points` (indices into w.points, bucketed in `cells`) to x within `radius`.
+  struct Buckets
   {
-    const uint64_t bit = uint64_t(1) << depth;
-    std::vector<int> lost;
-    for (int v = 0; v < w.NumberOfPoints(); ++v)
-      if (!used[v] && (w.tear[v] != 0 || !w.mirrorTears[v].empty()))
-        lost.push_back(v);
-    if (lost.empty())
-      return;
-    const double cell = std::max(eps, 1e-12 * this->Tree.diagonal);
-    auto key = [&](const Vec3& x)
+    double cell = 1.0;
+    std::map<std::array<long long, 3>, std::vector<int>> cells;
+    std::array<long long, 3> Key(const Vec3& x) const
     {
-      return std::array<long long, 3>{ static_cast<long long>(std::floor(x.x() / cell)),
+      return { static_cast<long long>(std::floor(x.x() / cell)),
         static_cast<long long>(std::floor(x.y() / cell)),
         static_cast<long long>(std::floor(x.z() / cell)) };
-    };
-    std::map<std::array<long long, 3>, std::vector<int>> cells;
-    for (int v = 0; v < w.NumberOfPoints(); ++v)
-      if (used[v])
-        cells[key(w.points[v])].push_back(v);
-    for (int t : lost)
+    }
+    void Add(const Vec3& x, int id) { cells[Key(x)].push_back(id); }
+    int Nearest(const std::vector<Vec3>& points, const Vec3& x, double radius) const
     {
-      const Vec3 r = plane.Reflect(w.points[t]);
-      const auto c = key(r);
+      const auto c = Key(x);
       int best = -1;
-      double bestDistance = eps;
+      double bestDistance = radius;
       for (long long dx = -1; dx <= 1; ++dx)
         for (long long dy = -1; dy <= 1; ++dy)
           for (long long dz = -1; dz <= 1; ++dz)
@@ -524,7 +553,7 @@ private:
               continue;
             for (int v : it->second)
             {
-              const double d = (w.points[v] - r).norm();
+              const double d = (points[v] - x).norm();
               if (d <= bestDistance && (best < 0 || d < bestDistance || v < best))
               {
                 bestDistance = d;
@@ -532,16 +561,142 @@ private:
               }
             }
           }
-      if (best < 0)
-        continue;
-      auto& into = w.mirrorTears[best];
+      return best;
+    }
+  };
+
+  /**
+   * Tear vertices that the fold at `depth` removes (not used by a kept face) are recorded on
+   * kept vertices of the region's boundary (see MirroredFlag): each removed tear vertex t on
+   * the nearest one to reflect(t), and each kept boundary vertex v whose mirror image lies
+   * within eps of a removed tear vertex gets that vertex's flags. Both directions, because
+   * with approximately symmetric tessellations the two sides of the seam need not have the
+   * same number of vertices; the zipper of the unfolder then closes the seam.
+   */
+  void TransferDiscardedTears(WorkMesh& w, const std::vector<char>& used, const Plane& plane,
+    int depth, double eps) const
+  {
+    const uint64_t bit = uint64_t(1) << depth;
+    std::vector<int> lost;
+    for (int v = 0; v < w.NumberOfPoints(); ++v)
+      if (!used[v] && (w.tear[v] != 0 || !w.mirrorFlags[v].empty()))
+        lost.push_back(v);
+    if (lost.empty())
+      return;
+    // Boundary vertices of the region (all its faces, before the fold).
+    std::map<std::pair<int, int>, int> edges;
+    for (const Triangle& t : w.triangles)
+      for (int k = 0; k < 3; ++k)
+        ++edges[{ std::min(t[k], t[(k + 1) % 3]), std::max(t[k], t[(k + 1) % 3]) }];
+    std::vector<char> boundary(w.points.size(), 0);
+    for (const auto& e : edges)
+      if (e.second == 1)
+        boundary[e.first.first] = boundary[e.first.second] = 1;
+    Buckets kept, removed;
+    kept.cell = removed.cell = std::max(eps, 1e-12 * this->Tree.diagonal);
+    for (int v = 0; v < w.NumberOfPoints(); ++v)
+      if (used[v] && boundary[v])
+        kept.Add(w.points[v], v);
+    for (int t : lost)
+      removed.Add(w.points[t], t);
+    auto transfer = [&](int t, int v)
+    {
+      auto& into = w.mirrorFlags[v];
       for (int level = 0; level < depth; ++level)
         if (w.tear[t] & (uint64_t(1) << level))
-          into.push_back({ level, bit });
-      for (const auto& e : w.mirrorTears[t])
-        into.push_back({ e.first, e.second | bit });
+          into.push_back({ 2 * level, bit });
+      for (const auto& e : w.mirrorFlags[t])
+        if (e.first % 2 == 0) // plane flags are recomputed by FlagMirroredFoldLines
+          into.push_back({ e.first, e.second | bit });
+    };
+    std::vector<std::pair<int, int>> pairs; // (kept, removed)
+    for (int t : lost)
+    {
+      const int v = kept.Nearest(w.points, plane.Reflect(w.points[t]), eps);
+      if (v >= 0)
+        pairs.push_back({ v, t });
+    }
+    for (int v = 0; v < w.NumberOfPoints(); ++v)
+      if (used[v] && boundary[v])
+      {
+        const int t = removed.Nearest(w.points, plane.Reflect(w.points[v]), eps);
+        if (t >= 0)
+          pairs.push_back({ v, t });
+      }
+    for (const auto& pr : pairs)
+      transfer(pr.second, pr.first);
+    for (const auto& pr : pairs)
+    {
+      auto& into = w.mirrorFlags[pr.first];
       std::sort(into.begin(), into.end());
       into.erase(std::unique(into.begin(), into.end()), into.end());
+    }
+  }
+
+  /**
+   * Fold lines of ancestor folds in the mirror copies: a boundary vertex v of the kept half
+   * whose copy R_M(R_f(v)) (reflected by this fold f, then by the ancestor folds M between
+   * an ancestor fold a and f, deepest first) lies within a's snap distance of a's plane gets
+   * the plane flag (a, M + f). Only boundary vertices can lie on a fold line; M ranges over
+   * all subsets (at most 2^(maximumFolds - 1)). Copies without this fold were flagged by
+   * earlier folds. Plane flags of removed vertices are not transferred: this computes the
+   * flags from the geometry the unfolder will produce.
+   */
+  void FlagMirroredFoldLines(WorkMesh& w, const std::vector<char>& keep, const Plane& plane,
+    int depth, uint64_t pathFolds) const
+  {
+    std::vector<int> ancestors; // increasing depth
+    for (int d = 0; d < depth; ++d)
+      if (pathFolds & (uint64_t(1) << d))
+        ancestors.push_back(d);
+    if (ancestors.empty())
+      return;
+    std::map<std::pair<int, int>, int> edges;
+    for (int f = 0; f < w.NumberOfFaces(); ++f)
+      if (keep[f])
+        for (int k = 0; k < 3; ++k)
+        {
+          const int a = w.triangles[f][k], b = w.triangles[f][(k + 1) % 3];
+          ++edges[{ std::min(a, b), std::max(a, b) }];
+        }
+    std::vector<char> boundary(w.points.size(), 0);
+    for (const auto& e : edges)
+      if (e.second == 1)
+        boundary[e.first.first] = boundary[e.first.second] = 1;
+    const uint64_t bit = uint64_t(1) << depth;
+    for (int v = 0; v < w.NumberOfPoints(); ++v)
+    {
+      if (!boundary[v])
+        continue;
+      const Vec3 x = plane.Reflect(w.points[v]);
+      for (size_t i = 0; i < ancestors.size(); ++i)
+      {
+        const int a = ancestors[i];
+        const Plane& pa = this->PlaneAtDepth[a];
+        const double tolerance =
+          std::max(this->Options.planeSnapFraction * this->EpsilonAtDepth[a],
+            1e-12 * this->Tree.diagonal);
+        // Folds between a and this fold, deepest first.
+        std::vector<int> between(ancestors.begin() + i + 1, ancestors.end());
+        std::reverse(between.begin(), between.end());
+        const size_t combinations = size_t(1) << between.size();
+        for (size_t m = 0; m < combinations; ++m)
+        {
+          Vec3 y = x;
+          uint64_t mask = bit;
+          for (size_t k = 0; k < between.size(); ++k)
+            if (m & (size_t(1) << k))
+            {
+              y = this->PlaneAtDepth[between[k]].Reflect(y);
+              mask |= uint64_t(1) << between[k];
+            }
+          if (std::abs(pa.SignedDistance(y)) <= tolerance)
+            w.mirrorFlags[v].push_back({ 2 * a + 1, mask });
+        }
+      }
+      std::sort(w.mirrorFlags[v].begin(), w.mirrorFlags[v].end());
+      w.mirrorFlags[v].erase(
+        std::unique(w.mirrorFlags[v].begin(), w.mirrorFlags[v].end()), w.mirrorFlags[v].end());
     }
   }
 
@@ -607,6 +762,8 @@ private:
       }
     }
 
+    this->FlagMirroredFoldLines(w, keep, plane, depth, pathFolds);
+
     FoldingNode& node = this->Tree.nodes[index];
     node.kind = FoldingNodeKind::Folding;
     node.plane = plane;
@@ -618,6 +775,7 @@ private:
     this->Report(this->Fraction(this->DoneFaces));
 
     this->PlaneAtDepth[depth] = plane;
+    this->EpsilonAtDepth[depth] = eps;
     WorkMesh half = Extract(w, keep);
     this->Build(std::move(half), index, depth + 1, 0.5 * eps, folds + 1, pathFolds | bit);
   }
@@ -626,6 +784,7 @@ private:
   const std::vector<Vec3>& InputNormals;
   FoldingTree& Tree;
   std::vector<Plane> PlaneAtDepth;
+  std::vector<double> EpsilonAtDepth;
   int MaximumDepth = 48;
   double DoneFaces = 0.0;
   double LastProgress = 0.0;
@@ -691,7 +850,7 @@ bool BuildFoldingTree(const TriangleMesh& input,
   root.tear.assign(np, 0);
   root.onPlane.assign(np, 0);
   root.projected.assign(np, 0);
-  root.mirrorTears.assign(np, {});
+  root.mirrorFlags.assign(np, {});
 
   tree.numberOfOriginalFaces = static_cast<int>(input.triangles.size());
   tree.numberOfOriginalPoints = np;

@@ -57,6 +57,13 @@ struct FoldingTreeOptions
    */
   bool trimToMirrorConsistent = true;
   /**
+   * Polish the detected plane on the (trimmed) S alone, every vertex weighted by its area
+   * (Gauss-Newton point-to-tangent-plane fit against S itself; kept only if the residual
+   * drops), then trim again. Detection's robust weights, lowered near the remaining faces,
+   * can leave the plane a fraction of a degree off, which the unfolding error inherits.
+   */
+  bool polishPlane = true;
+  /**
    * Vertices within planeSnapFraction * epsilon of a fold plane count as lying on it: they
    * are snapped onto it (and flagged in planeMask) so the unfolder closes the fold line.
    */
@@ -71,8 +78,9 @@ struct FoldingTreeOptions
  * Builds the folding tree of `input` (paper §4.2), in preorder:
  * 1. A region that meets a stop criterion becomes a leaf.
  * 2. Otherwise the region is prepared (PrepareMesh: welding, orientation; LinkNearbyParts)
- *    and DetectSymmetry finds S and p with the node's epsilon. S is trimmed (see
- *    trimToMirrorConsistent); input-degenerate faces whose vertices all belong to S join S.
+ *    and DetectSymmetry finds S and p with the node's epsilon. S is trimmed, p polished and
+ *    S trimmed again (see trimToMirrorConsistent, polishPlane); input-degenerate faces whose
+ *    vertices all belong to S join S.
  * 3. The remaining faces split into connected components R1..Rn (edge adjacency plus the
  *    proximity links). n == 0 (global symmetry): the node is a Folding node. n > 0: a
  *    Segmentation node with children fold(S) (a Folding node one level down) and a subtree

@@ -3,7 +3,9 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <map>
+#include <set>
 #include <numeric>
 #include <unordered_map>
 
@@ -11,7 +13,8 @@ namespace foldingmeshes
 {
 namespace
 {
-/// Pending tear entries of a vertex: (segmentation level, reflections still required).
+/// Pending flags of a vertex copy (MirroredFlag): (2 * level + flag, reflections still
+/// required), flag 0 tear, 1 plane. An entry with no reflection left applies to the copy.
 using TearList = std::vector<std::pair<int, uint64_t>>;
 
 void Normalize(TearList& t)
@@ -23,7 +26,15 @@ void Normalize(TearList& t)
 bool IsTear(const TearList& t, int level)
 {
   for (const auto& e : t)
-    if (e.first == level && e.second == 0)
+    if (e.first == 2 * level && e.second == 0)
+      return true;
+  return false;
+}
+
+bool IsOnPlane(const TearList& t, int level)
+{
+  for (const auto& e : t)
+    if (e.first == 2 * level + 1 && e.second == 0)
       return true;
   return false;
 }
@@ -39,6 +50,7 @@ struct Piece
   std::vector<uint64_t> onPlane;
   std::vector<int> faceOrig;
   std::vector<int> faceCopy;
+  std::vector<char> faceFilled;
 
   int NumberOfPoints() const { return static_cast<int>(points.size()); }
   int NumberOfFaces() const { return static_cast<int>(triangles.size()); }
@@ -55,6 +67,7 @@ struct Piece
       triangles.push_back({ t[0] + offset, t[1] + offset, t[2] + offset });
     faceOrig.insert(faceOrig.end(), o.faceOrig.begin(), o.faceOrig.end());
     faceCopy.insert(faceCopy.end(), o.faceCopy.begin(), o.faceCopy.end());
+    faceFilled.insert(faceFilled.end(), o.faceFilled.begin(), o.faceFilled.end());
   }
 };
 
@@ -152,14 +165,16 @@ private:
     for (int v = 0; v < m.NumberOfPoints(); ++v)
       for (int level = 0; level < MaximumFoldingTreeLevels; ++level)
         if (m.tearMask[v] & (uint64_t(1) << level))
-          piece.tear[v].push_back({ level, 0 });
-    for (const MirroredTear& t : m.mirroredTears)
-      piece.tear[t.point].push_back({ t.level, t.mirrorMask });
+          piece.tear[v].push_back({ 2 * level, 0 });
+    for (const MirroredFlag& t : m.mirroredFlags)
+      piece.tear[t.point].push_back(
+        { 2 * t.level + (t.flag == LevelFlag::Plane ? 1 : 0), t.mirrorMask });
     for (TearList& t : piece.tear)
       Normalize(t);
     piece.onPlane = m.planeMask;
     piece.faceOrig = m.originalFaceIds;
     piece.faceCopy.assign(m.triangles.size(), id);
+    piece.faceFilled.assign(m.triangles.size(), 0);
     return piece;
   }
 
@@ -187,11 +202,31 @@ private:
       this->Result.copies.push_back(copy);
     }
     const int n = piece.NumberOfPoints();
+    // Open boundary edges lying within the fold-line slab: the copies of fold-line vertices
+    // made by approximate symmetries below this node are off the plane by less than the
+    // node's epsilon (the error budget of its subtree).
+    std::vector<char> inSlab(n, 0);
+    if (this->Options.foldLineToleranceScale > 0.0)
+    {
+      const double slab = this->Options.foldLineToleranceScale * node.epsilon;
+      std::map<std::pair<int, int>, int> edges;
+      for (const Triangle& t : piece.triangles)
+        for (int k = 0; k < 3; ++k)
+          ++edges[{ std::min(t[k], t[(k + 1) % 3]), std::max(t[k], t[(k + 1) % 3]) }];
+      for (const auto& e : edges)
+      {
+        const int a = e.first.first, b = e.first.second;
+        if (e.second == 1 && std::abs(p.SignedDistance(piece.points[a])) <= slab &&
+          std::abs(p.SignedDistance(piece.points[b])) <= slab)
+          inSlab[a] = inSlab[b] = 1;
+      }
+    }
     std::vector<int> mirror(n);
     for (int v = 0; v < n; ++v)
     {
       const double s = p.SignedDistance(piece.points[v]);
-      if ((piece.onPlane[v] & bit) || std::abs(s) <= tolerance)
+      if ((piece.onPlane[v] & bit) || IsOnPlane(piece.tear[v], node.depth) ||
+        std::abs(s) <= tolerance || inSlab[v])
       {
         // Both copies: the reflection at this fold does not matter.
         piece.points[v] -= s * p.normal;
@@ -215,7 +250,7 @@ private:
       piece.pointOrig.push_back(piece.pointOrig[v]);
       piece.pointCopy.push_back(mirrorCopy[piece.pointCopy[v]]);
       piece.tear.push_back(std::move(reflected));
-      piece.onPlane.push_back(piece.onPlane[v]);
+      piece.onPlane.push_back(0); // the copy's own fold-line flags come from `reflected`
     }
     const int nf = piece.NumberOfFaces();
     for (int f = 0; f < nf; ++f)
@@ -229,7 +264,9 @@ private:
       piece.triangles.push_back({ mirror[t[0]], mirror[t[2]], mirror[t[1]] });
       piece.faceOrig.push_back(piece.faceOrig[f]);
       piece.faceCopy.push_back(mirrorCopy[piece.faceCopy[f]]);
+      piece.faceFilled.push_back(piece.faceFilled[f]);
     }
+    Consume(piece, 2 * node.depth + 1);
   }
 
   void CountTears(const FoldingNode& node, Piece& piece, SeamReport& seam)
@@ -239,18 +276,19 @@ private:
       seam.tearVertices += isTear[v] = IsTear(piece.tear[v], node.depth);
     seam.unmatchedTearVertices = seam.tearVertices;
     this->CountGaps(piece, isTear, seam);
-    Consume(piece, node.depth);
+    Consume(piece, 2 * node.depth);
     this->Result.unmatchedTearVertices += seam.unmatchedTearVertices;
     this->Result.gapEdges += seam.gapEdges;
     this->Result.gapLength += seam.gapLength;
+    this->Result.filledFaces += seam.filledFaces;
   }
 
-  /// Drops the tear entries of a processed level.
-  static void Consume(Piece& piece, int level)
+  /// Drops the entries of a processed level and flag (code = 2 * level + flag).
+  static void Consume(Piece& piece, int code)
   {
     for (TearList& t : piece.tear)
       t.erase(std::remove_if(t.begin(), t.end(), [&](const std::pair<int, uint64_t>& e)
-                { return e.first == level; }),
+                { return e.first == code; }),
         t.end());
   }
 
@@ -271,6 +309,284 @@ private:
         ++seam.gapEdges;
         seam.gapLength += (piece.points[e.first.first] - piece.points[e.first.second]).norm();
       }
+  }
+
+  /**
+   * Inserts unmatched tear vertices into open boundary edges of other children whose two end
+   * points are tear vertices, within `tol` (the vertex moves half way to the edge). Returns
+   * the number of vertices inserted.
+   */
+  static int Zip(Piece& out, std::vector<int>& faceChild, std::vector<std::vector<int>>& children,
+    std::vector<char>& matched, const std::vector<char>& isTear, double tol,
+    std::vector<double>& rough)
+  {
+    using Edge = std::pair<int, int>;
+    auto key = [](int a, int b) { return Edge{ std::min(a, b), std::max(a, b) }; };
+    std::map<Edge, std::vector<int>> edgeFaces;
+    auto addFace = [&](int f)
+    {
+      const Triangle& t = out.triangles[f];
+      for (int k = 0; k < 3; ++k)
+        edgeFaces[key(t[k], t[(k + 1) % 3])].push_back(f);
+    };
+    auto removeFace = [&](int f)
+    {
+      const Triangle& t = out.triangles[f];
+      for (int k = 0; k < 3; ++k)
+      {
+        auto it = edgeFaces.find(key(t[k], t[(k + 1) % 3]));
+        it->second.erase(std::find(it->second.begin(), it->second.end(), f));
+        if (it->second.empty())
+          edgeFaces.erase(it);
+      }
+    };
+    for (int f = 0; f < out.NumberOfFaces(); ++f)
+      addFace(f);
+    int zipped = 0;
+    for (int pass = 0; pass < 3; ++pass)
+    {
+      bool changed = false;
+      for (int u = 0; u < out.NumberOfPoints(); ++u)
+      {
+        if (!isTear[u] || matched[u])
+          continue;
+        const Vec3 x = out.points[u];
+        int bestFace = -1;
+        Edge bestEdge;
+        double bestDistance = tol;
+        Vec3 bestPoint = x;
+        for (const auto& e : edgeFaces)
+        {
+          if (e.second.size() != 1)
+            continue;
+          const int a = e.first.first, b = e.first.second, f = e.second[0];
+          if (a == u || b == u || !isTear[a] || !isTear[b] ||
+            std::binary_search(children[u].begin(), children[u].end(), faceChild[f]))
+            continue;
+          const Vec3 ab = out.points[b] - out.points[a];
+          const double len2 = ab.squaredNorm();
+          if (!(len2 > 0.0))
+            continue;
+          const double t = (x - out.points[a]).dot(ab) / len2;
+          if (t <= 0.02 || t >= 0.98)
+            continue;
+          const Vec3 q = out.points[a] + t * ab;
+          const double d = (x - q).norm();
+          if (d <= bestDistance)
+          {
+            bestDistance = d;
+            bestFace = f;
+            bestEdge = e.first;
+            bestPoint = q;
+          }
+        }
+        if (bestFace < 0)
+          continue;
+        // Split bestFace (p, q, c) with edge p -> q into (p, u, c) and (u, q, c).
+        const Triangle t = out.triangles[bestFace];
+        int k = 0;
+        while (key(t[k], t[(k + 1) % 3]) != bestEdge)
+          ++k;
+        const int p = t[k], q = t[(k + 1) % 3], c = t[(k + 2) % 3];
+        removeFace(bestFace);
+        out.triangles[bestFace] = { p, u, c };
+        addFace(bestFace);
+        out.triangles.push_back({ u, q, c });
+        out.faceOrig.push_back(out.faceOrig[bestFace]);
+        out.faceCopy.push_back(out.faceCopy[bestFace]);
+        out.faceFilled.push_back(out.faceFilled[bestFace]);
+        faceChild.push_back(faceChild[bestFace]);
+        addFace(out.NumberOfFaces() - 1);
+        out.points[u] = 0.5 * (x + bestPoint);
+        matched[u] = 1;
+        rough[u] = 0.5 * bestDistance;
+        children[u].push_back(faceChild[bestFace]);
+        std::sort(children[u].begin(), children[u].end());
+        ++zipped;
+        changed = true;
+      }
+      if (!changed)
+        break;
+    }
+    return zipped;
+  }
+
+  /**
+   * Fills the small boundary loops left along a seam (e.g. the saw-tooth gaps between a
+   * mirrored, approximately symmetric region and its neighbour) by ear clipping. A loop is
+   * filled when it has 3..maximumGapLoop vertices, touches two children, at least half of its
+   * vertices are tear vertices of this level, and every vertex has a vertex of another child
+   * on the loop within 2 * max(tol, mean loop edge): loops that include an ancestor's open
+   * fold line or the input's own border fail that test and stay open. New triangles take the
+   * attributes of the face across their first loop edge.
+   */
+  static void FillSeamGaps(Piece& out, std::vector<int>& faceChild,
+    const std::vector<std::vector<int>>& children, const std::vector<char>& isTear, double tol,
+    SeamReport& seam)
+  {
+    constexpr int maximumGapLoop = 256;
+    std::map<std::pair<int, int>, int> halfEdges; // directed edge -> face
+    std::map<std::pair<int, int>, int> uses;
+    std::set<std::array<int, 3>> faceSets;
+    for (int f = 0; f < out.NumberOfFaces(); ++f)
+    {
+      const Triangle& t = out.triangles[f];
+      std::array<int, 3> key{ t[0], t[1], t[2] };
+      std::sort(key.begin(), key.end());
+      faceSets.insert(key);
+      for (int k = 0; k < 3; ++k)
+      {
+        const int a = t[k], b = t[(k + 1) % 3];
+        halfEdges[{ a, b }] = f;
+        ++uses[{ std::min(a, b), std::max(a, b) }];
+      }
+    }
+    // Boundary loops, traced along hole half-edges (the reverses of open face half-edges);
+    // at a pinch vertex (several openings) the next edge is found by turning around the
+    // vertex through its faces, so each gap is traced as its own loop.
+    auto isOpen = [&](int a, int b) { return uses[{ std::min(a, b), std::max(a, b) }] == 1; };
+    auto nextHole = [&](int a, int b) -> int
+    {
+      // Arrived at b by the hole edge a -> b: face half-edge b -> a.
+      auto it = halfEdges.find({ b, a });
+      for (int guard = 0; it != halfEdges.end() && guard < 64; ++guard)
+      {
+        const Triangle& t = out.triangles[it->second];
+        int k = 0;
+        while (t[(k + 1) % 3] != b)
+          ++k;
+        const int y = t[k]; // half-edge y -> b in this face
+        if (isOpen(y, b))
+          return y;
+        it = halfEdges.find({ b, y });
+      }
+      return -1;
+    };
+    std::set<std::pair<int, int>> visitedHoles;
+    std::vector<std::pair<int, int>> holes;
+    for (const auto& h : halfEdges)
+      if (isOpen(h.first.first, h.first.second))
+        holes.push_back({ h.first.second, h.first.first });
+    for (const auto& first : holes)
+    {
+      if (visitedHoles.count(first))
+        continue;
+      std::vector<int> loop;
+      std::pair<int, int> edge = first;
+      bool closed = false;
+      while (static_cast<int>(loop.size()) <= maximumGapLoop)
+      {
+        if (visitedHoles.count(edge))
+        {
+          closed = edge == first && !loop.empty();
+          break;
+        }
+        visitedHoles.insert(edge);
+        loop.push_back(edge.first);
+        const int nx = nextHole(edge.first, edge.second);
+        if (nx < 0)
+          break;
+        edge = { edge.second, nx };
+      }
+      std::vector<int> sortedLoop = loop;
+      std::sort(sortedLoop.begin(), sortedLoop.end());
+      const bool simple =
+        std::adjacent_find(sortedLoop.begin(), sortedLoop.end()) == sortedLoop.end();
+      const int n = static_cast<int>(loop.size());
+      if (!closed || !simple || n < 3 || n > maximumGapLoop)
+        continue;
+      // Seam loop?
+      std::vector<int> kids;
+      int tears = 0;
+      double perimeter = 0.0;
+      for (int i = 0; i < n; ++i)
+      {
+        kids.insert(kids.end(), children[loop[i]].begin(), children[loop[i]].end());
+        tears += isTear[loop[i]];
+        perimeter += (out.points[loop[i]] - out.points[loop[(i + 1) % n]]).norm();
+      }
+      std::sort(kids.begin(), kids.end());
+      kids.erase(std::unique(kids.begin(), kids.end()), kids.end());
+      if (kids.size() < 2 || 2 * tears < n)
+        continue;
+      const double reach = 2.0 * std::max(tol, perimeter / n);
+      bool narrow = true;
+      for (int i = 0; i < n && narrow; ++i)
+      {
+        bool near = children[loop[i]].size() > 1; // a stitched vertex: on both sides
+        for (int j = 0; j < n && !near; ++j)
+        {
+          if (i == j)
+            continue;
+          bool other = false;
+          for (int c : children[loop[j]])
+            other = other ||
+              !std::binary_search(children[loop[i]].begin(), children[loop[i]].end(), c);
+          near = other && (out.points[loop[i]] - out.points[loop[j]]).norm() <= reach;
+        }
+        narrow = near;
+      }
+      if (!narrow)
+        continue;
+      // Ear clipping: the ear with the shortest new diagonal, not an existing edge.
+      std::vector<int> poly = loop;
+      std::vector<Triangle> added;
+      std::vector<int> addedFace;
+      while (poly.size() > 3)
+      {
+        const int m = static_cast<int>(poly.size());
+        int best = -1;
+        double bestLength = std::numeric_limits<double>::infinity();
+        for (int i = 0; i < m; ++i)
+        {
+          const int a = poly[i], c = poly[(i + 2) % m];
+          if (uses.count({ std::min(a, c), std::max(a, c) }))
+            continue;
+          const double length = (out.points[a] - out.points[c]).norm();
+          if (length < bestLength)
+          {
+            bestLength = length;
+            best = i;
+          }
+        }
+        if (best < 0)
+          break;
+        const int a = poly[best], b = poly[(best + 1) % m], c = poly[(best + 2) % m];
+        added.push_back({ a, b, c });
+        addedFace.push_back(halfEdges.count({ b, a }) ? halfEdges[{ b, a }] : -1);
+        ++uses[{ std::min(a, c), std::max(a, c) }];
+        poly.erase(poly.begin() + (best + 1) % m);
+      }
+      std::array<int, 3> last{ poly[0], poly.size() > 1 ? poly[1] : -1,
+        poly.size() > 2 ? poly[2] : -1 };
+      std::sort(last.begin(), last.end());
+      if (poly.size() != 3 || faceSets.count(last))
+      {
+        // Gave up: the loop stays open (and is reported as a gap).
+        for (const Triangle& t : added)
+          --uses[{ std::min(t[0], t[2]), std::max(t[0], t[2]) }];
+        continue;
+      }
+      added.push_back({ poly[0], poly[1], poly[2] });
+      addedFace.push_back(
+        halfEdges.count({ poly[1], poly[0] }) ? halfEdges[{ poly[1], poly[0] }] : -1);
+      for (size_t k = 0; k < added.size(); ++k)
+      {
+        int from = addedFace[k];
+        if (from < 0)
+          from = halfEdges[{ loop[1], loop[0] }];
+        out.triangles.push_back(added[k]);
+        out.faceOrig.push_back(out.faceOrig[from]);
+        out.faceCopy.push_back(out.faceCopy[from]);
+        out.faceFilled.push_back(1);
+        faceChild.push_back(faceChild[from]);
+        std::array<int, 3> key{ added[k][0], added[k][1], added[k][2] };
+        std::sort(key.begin(), key.end());
+        faceSets.insert(key);
+      }
+      seam.filledFaces += static_cast<int>(added.size());
+      ++seam.filledLoops;
+    }
   }
 
   void Stitch(const FoldingNode& node, Piece& piece, const std::vector<int>& childOf,
@@ -410,6 +726,8 @@ private:
     // Remap faces; drop collapsed and duplicate ones.
     Piece out;
     std::vector<int> newId(n, -1);
+    std::vector<std::vector<int>> outChildren; // children a point belongs to (sorted)
+    std::vector<char> outMatched;
     for (int v = 0; v < n; ++v)
       if (rep[v] == v)
       {
@@ -419,12 +737,17 @@ private:
         out.pointCopy.push_back(piece.pointCopy[v]);
         out.tear.push_back(piece.tear[v]);
         out.onPlane.push_back(piece.onPlane[v]);
+        auto it = childrenOfRoot.find(v);
+        outChildren.push_back(it != childrenOfRoot.end() ? it->second : std::vector<int>{ childOf[v] });
+        outMatched.push_back(count[v] >= 2);
       }
-    std::vector<char> rough(out.points.size(), 0);
+    std::vector<int> faceChild;
+    // Smoothing budget: how far a merged vertex may move (its cluster's spread); 0: fixed.
+    std::vector<double> rough(out.points.size(), 0.0);
     for (int v = 0; v < n; ++v)
       if (rep[v] == v && count[v] >= 2 &&
         spread[v] > this->Options.exactStitchFraction * node.epsilon)
-        rough[newId[v]] = 1;
+        rough[newId[v]] = spread[v];
     std::map<std::array<int, 3>, int> seen;
     for (int f = 0; f < piece.NumberOfFaces(); ++f)
     {
@@ -445,6 +768,8 @@ private:
       out.triangles.push_back(u);
       out.faceOrig.push_back(piece.faceOrig[f]);
       out.faceCopy.push_back(piece.faceCopy[f]);
+      out.faceFilled.push_back(piece.faceFilled[f]);
+      faceChild.push_back(childOf[t[0]]);
     }
     // Drop points no face uses any more (keeps the output compact).
     {
@@ -454,7 +779,9 @@ private:
           used[v] = 1;
       Piece compact;
       std::vector<int> id(out.points.size(), -1);
-      std::vector<char> compactRough;
+      std::vector<double> compactRough;
+      std::vector<char> compactMatched;
+      std::vector<std::vector<int>> compactChildren;
       for (int v = 0; v < out.NumberOfPoints(); ++v)
         if (used[v])
         {
@@ -465,19 +792,47 @@ private:
           compact.tear.push_back(out.tear[v]);
           compact.onPlane.push_back(out.onPlane[v]);
           compactRough.push_back(rough[v]);
+          compactMatched.push_back(outMatched[v]);
+          compactChildren.push_back(outChildren[v]);
         }
       for (const Triangle& t : out.triangles)
         compact.triangles.push_back({ id[t[0]], id[t[1]], id[t[2]] });
       compact.faceOrig = std::move(out.faceOrig);
       compact.faceCopy = std::move(out.faceCopy);
+      compact.faceFilled = std::move(out.faceFilled);
       out = std::move(compact);
       rough = std::move(compactRough);
+      outMatched = std::move(compactMatched);
+      outChildren = std::move(compactChildren);
     }
 
-    // Constrained Laplacian smoothing of the rough seam vertices (others fixed).
+    // Zipper: tear vertices left without a partner vertex are inserted into the nearest open
+    // seam edge of another child (splitting its triangle), so seams whose two sides were
+    // tessellated differently close too.
+    if (this->Options.zipper)
+    {
+      std::vector<char> isTear(out.points.size());
+      for (int v = 0; v < out.NumberOfPoints(); ++v)
+        isTear[v] = IsTear(out.tear[v], level);
+      const int zipped = Zip(out, faceChild, outChildren, outMatched, isTear, tol, rough);
+      seam.zippedVertices = zipped;
+      seam.stitchedVertices += zipped;
+      seam.unmatchedTearVertices -= zipped;
+    }
+    if (this->Options.fillSeamGaps)
+    {
+      std::vector<char> isTear(out.points.size());
+      for (int v = 0; v < out.NumberOfPoints(); ++v)
+        isTear[v] = IsTear(out.tear[v], level);
+      FillSeamGaps(out, faceChild, outChildren, isTear, tol, seam);
+    }
+
+    // Constrained Laplacian smoothing of the rough seam vertices: the others are fixed, and
+    // each moves at most by its budget (the distance its stitch already moved it), so
+    // sharp features along a seam are not eroded.
     int smoothed = 0;
-    for (char r : rough)
-      smoothed += r;
+    for (double r : rough)
+      smoothed += r > 0.0;
     if (smoothed > 0 && this->Options.smoothingIterations > 0)
     {
       std::vector<std::vector<int>> ring(out.points.size());
@@ -485,9 +840,9 @@ private:
         for (int k = 0; k < 3; ++k)
         {
           const int a = t[k], b = t[(k + 1) % 3];
-          if (rough[a])
+          if (rough[a] > 0.0)
             ring[a].push_back(b);
-          if (rough[b])
+          if (rough[b] > 0.0)
             ring[b].push_back(a);
         }
       for (auto& r : ring)
@@ -496,17 +851,21 @@ private:
         r.erase(std::unique(r.begin(), r.end()), r.end());
       }
       const double lambda = this->Options.smoothingWeight;
+      const std::vector<Vec3> start = out.points;
       for (int iteration = 0; iteration < this->Options.smoothingIterations; ++iteration)
       {
         std::vector<Vec3> next = out.points;
         for (int v = 0; v < out.NumberOfPoints(); ++v)
-          if (rough[v] && !ring[v].empty())
+          if (rough[v] > 0.0 && !ring[v].empty())
           {
             Vec3 mean = Vec3::Zero();
             for (int w : ring[v])
               mean += out.points[w];
             mean /= static_cast<double>(ring[v].size());
             next[v] = (1.0 - lambda) * out.points[v] + lambda * mean;
+            const Vec3 moved = next[v] - start[v];
+            if (moved.norm() > rough[v])
+              next[v] = start[v] + moved * (rough[v] / moved.norm());
           }
         out.points.swap(next);
       }
@@ -517,13 +876,14 @@ private:
       for (int v = 0; v < out.NumberOfPoints(); ++v)
         isTear[v] = IsTear(out.tear[v], level);
       this->CountGaps(out, isTear, seam);
-      Consume(out, level);
+      Consume(out, 2 * level);
     }
     piece = std::move(out);
     this->Result.stitchedVertices += seam.stitchedVertices;
     this->Result.unmatchedTearVertices += seam.unmatchedTearVertices;
     this->Result.gapEdges += seam.gapEdges;
     this->Result.gapLength += seam.gapLength;
+    this->Result.filledFaces += seam.filledFaces;
   }
 
   const FoldingTree& Tree;
@@ -554,9 +914,21 @@ bool UnfoldFoldingTree(const FoldingTree& tree,
   result.pointCopy = std::move(piece.pointCopy);
   result.faceOriginalIds = std::move(piece.faceOrig);
   result.faceCopy = std::move(piece.faceCopy);
+  result.faceFilled = std::move(piece.faceFilled);
   result.pointMirrored.resize(result.points.size());
   for (size_t v = 0; v < result.points.size(); ++v)
     result.pointMirrored[v] = result.copies[result.pointCopy[v]].mirrored;
+  {
+    std::map<std::pair<int, int>, int> edges;
+    for (const Triangle& t : result.triangles)
+      for (int k = 0; k < 3; ++k)
+        ++edges[{ std::min(t[k], t[(k + 1) % 3]), std::max(t[k], t[(k + 1) % 3]) }];
+    for (const auto& e : edges)
+    {
+      result.openEdges += e.second == 1;
+      result.nonManifoldEdges += e.second > 2;
+    }
+  }
   result.faceLeaf.resize(result.triangles.size());
   result.faceMirrored.resize(result.triangles.size());
   for (size_t f = 0; f < result.triangles.size(); ++f)

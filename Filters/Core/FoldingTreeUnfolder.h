@@ -21,16 +21,30 @@ struct UnfoldOptions
   /// Tear vertices of different children closer than stitchToleranceScale * (the
   /// segmentation node's epsilon) may be merged.
   double stitchToleranceScale = 1.0;
+  /// After vertex pairing, insert each tear vertex still without a partner into the nearest
+  /// open seam edge of another child within the tolerance (splitting that triangle), which
+  /// closes seams whose two sides are tessellated differently.
+  bool zipper = true;
+  /// Then fill the small boundary loops left between two children along the seam (saw-tooth
+  /// gaps of approximately symmetric folds) by ear clipping; see SeamReport::filledFaces.
+  bool fillSeamGaps = true;
   /// Constrained Laplacian smoothing of the seam after stitching: only the merged vertices
   /// whose cluster spread exceeds exactStitchFraction * epsilon move (exactly coincident
-  /// partners - the usual case for symmetric tessellations - are left where they are); each
-  /// iteration moves them by smoothingWeight towards the mean of their 1-ring.
+  /// partners - the usual case for symmetric tessellations - are left where they are), and
+  /// zipped ones; each iteration moves them by smoothingWeight towards the mean of their
+  /// 1-ring, never farther in total than the stitch itself moved them (cluster spread, half
+  /// the zipped gap), so sharp edges along a seam are not eroded.
   int smoothingIterations = 3;
   double smoothingWeight = 0.5;
   double exactStitchFraction = 1e-3;
   /// Besides the vertices flagged in planeMask, vertices within planeTolerance * diagonal of
   /// a fold plane are merged with their mirror images.
   double planeTolerance = 1e-9;
+  /// ... and so are the end points of open boundary edges lying within
+  /// foldLineToleranceScale * (the folding node's epsilon) of the plane: copies of fold-line
+  /// vertices made by approximate symmetries deeper in the tree (not flagged: the builder
+  /// only flags copies within its snap distance). 0 turns this off.
+  double foldLineToleranceScale = 0.5;
   /// Called with progress in [0,1]; return false to abort.
   std::function<bool(double)> progress;
 };
@@ -60,10 +74,13 @@ struct SeamReport
   int node = -1;
   int depth = 0;
   int tearVertices = 0;      ///< vertices carrying this level's tear bit before stitching
-  int stitchedVertices = 0;  ///< of those, merged with a partner of another child
+  int stitchedVertices = 0;  ///< of those, merged with a partner of another child or zipped
+  int zippedVertices = 0;    ///< of those, inserted into an open seam edge of another child
   int unmatchedTearVertices = 0;
   int gapEdges = 0;          ///< boundary edges left between two tear vertices of this level
   double gapLength = 0.0;
+  int filledLoops = 0;        ///< seam gaps closed by new triangles
+  int filledFaces = 0;        ///< triangles added for them
   int smoothedVertices = 0;
   int droppedFaces = 0;      ///< faces collapsed or duplicated by the merge
   double maximumStitchDistance = 0.0; ///< largest distance of a merged vertex to its cluster mean
@@ -82,6 +99,9 @@ struct UnfoldedMesh
   std::vector<int> faceLeaf;        ///< node index of the leaf the face comes from
   std::vector<int> faceCopy;        ///< index into copies
   std::vector<char> faceMirrored;
+  /// 1: a triangle added to fill a seam gap (not a copy of a leaf triangle; its ids and copy
+  /// are those of a neighbouring face, for attributes).
+  std::vector<char> faceFilled;
 
   std::vector<UnfoldCopy> copies;
 
@@ -93,6 +113,10 @@ struct UnfoldedMesh
   int unmatchedTearVertices = 0;
   int gapEdges = 0;
   double gapLength = 0.0;
+  int filledFaces = 0;
+  /// The final mesh: edges used by one triangle, and by more than two.
+  int openEdges = 0;
+  int nonManifoldEdges = 0;
   bool aborted = false;
 
   int NumberOfPoints() const { return static_cast<int>(points.size()); }
@@ -111,7 +135,8 @@ struct UnfoldedMesh
  *   node's tear bit proposes the nearest tear vertex of another child within the tolerance;
  *   proposals are accepted by increasing distance (union-find) unless they would merge two
  *   vertices of the same child; each cluster becomes one vertex at its mean; collapsed and
- *   duplicate triangles are dropped; the seam is smoothed (UnfoldOptions). Tear vertices
+ *   duplicate triangles are dropped; tear vertices still alone are zipped into open seam
+ *   edges of other children (UnfoldOptions::zipper); the seam is smoothed. Tear vertices
  *   left unmatched and the boundary edges between tear vertices are reported per node
  *   (SeamReport) and in total - never hidden.
  * Returns false with `error` set when the tree is invalid (FoldingTree::Validate).

@@ -188,19 +188,25 @@ bool PrepareMesh(const TriangleMesh& input,
     for (int k = 0; k < 3; ++k)
       mesh.triangles[f][k] = mesh.inputToWelded[input.triangles[f][k]];
 
-  mesh.boundsMin = mesh.points[0];
-  mesh.boundsMax = mesh.points[0];
-  for (const Vec3& p : mesh.points)
-  {
-    mesh.boundsMin = mesh.boundsMin.cwiseMin(p);
-    mesh.boundsMax = mesh.boundsMax.cwiseMax(p);
-  }
+  // Bounds (and so epsilon) over the points that triangles use: stray points of vertex or
+  // line cells, or unused ones, must not change the tolerance.
+  bool anyUsed = false;
+  for (const Triangle& t : mesh.triangles)
+    for (int v : t)
+    {
+      if (!anyUsed)
+        mesh.boundsMin = mesh.boundsMax = mesh.points[v];
+      anyUsed = true;
+      mesh.boundsMin = mesh.boundsMin.cwiseMin(mesh.points[v]);
+      mesh.boundsMax = mesh.boundsMax.cwiseMax(mesh.points[v]);
+    }
   mesh.diagonal = (mesh.boundsMax - mesh.boundsMin).norm();
 
   // Areas and degeneracy (before orientation: independent of it).
   mesh.faceAreas.assign(nf, 0.0);
   mesh.faceDegenerate.assign(nf, 0);
-  const double areaFloor = 1e-14 * mesh.diagonal * mesh.diagonal;
+  // Round-off of float coordinates leaves collinear faces areas near 1e-14 diag^2.
+  const double areaFloor = 1e-12 * mesh.diagonal * mesh.diagonal;
   for (int f = 0; f < nf; ++f)
   {
     const Triangle& t = mesh.triangles[f];
@@ -208,7 +214,7 @@ bool PrepareMesh(const TriangleMesh& input,
       (mesh.points[t[1]] - mesh.points[t[0]]).cross(mesh.points[t[2]] - mesh.points[t[0]]).norm();
     const bool repeated = t[0] == t[1] || t[1] == t[2] || t[0] == t[2];
     mesh.faceDegenerate[f] = repeated || !(area > areaFloor);
-    mesh.faceAreas[f] = repeated ? 0.0 : area;
+    mesh.faceAreas[f] = mesh.faceDegenerate[f] ? 0.0 : area;
     mesh.totalArea += mesh.faceAreas[f];
   }
   if (!(mesh.totalArea > 0.0) || !(mesh.diagonal > 0.0))
@@ -456,7 +462,9 @@ void LinkNearbyParts(PreparedMesh& mesh, double gap)
     if (vertexPart[v] < 0)
       continue;
     const auto c = key(mesh.points[v]);
-    std::map<int, std::pair<double, int>> nearestByPart;
+    // Only the nearest vertex of another part: linear in the mesh size even for triangle
+    // soups, where every face is its own part.
+    std::pair<double, int> nearest{ gap, -1 };
     for (long long dx = -1; dx <= 1; ++dx)
       for (long long dy = -1; dy <= 1; ++dy)
         for (long long dz = -1; dz <= 1; ++dz)
@@ -466,18 +474,17 @@ void LinkNearbyParts(PreparedMesh& mesh, double gap)
             continue;
           for (int w : it->second)
           {
-            if (vertexPart[w] <= vertexPart[v])
+            if (vertexPart[w] == vertexPart[v])
               continue;
             const double d = (mesh.points[w] - mesh.points[v]).norm();
             if (d > gap)
               continue;
-            auto found = nearestByPart.find(vertexPart[w]);
-            if (found == nearestByPart.end() || d < found->second.first)
-              nearestByPart[vertexPart[w]] = { d, w };
+            if (d < nearest.first || (d == nearest.first && w < nearest.second))
+              nearest = { d, w };
           }
         }
-    for (const auto& entry : nearestByPart)
-      mesh.proximityLinks.push_back({ v, entry.second.second });
+    if (nearest.second >= 0)
+      mesh.proximityLinks.push_back({ v, nearest.second });
   }
 }
 }

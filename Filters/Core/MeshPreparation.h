@@ -34,9 +34,10 @@ bool PrepareMesh(const TriangleMesh& input,
 TriangleMesh SimplifiedMesh(const PreparedMesh& mesh, int targetFaces);
 
 /**
- * Records vertex pairs of different parts closer than `gap` in mesh.proximityLinks
- * (at most one per vertex and neighbouring part: the nearest). Region growing treats
- * them as connections, so symmetric regions may span touching parts.
+ * Records, for every vertex with a vertex of another part closer than `gap`, the pair
+ * (vertex, its nearest such vertex) in mesh.proximityLinks: linear in the mesh size even
+ * for triangle soups. Region growing treats them as connections, so symmetric regions
+ * may span touching parts.
  */
 void LinkNearbyParts(PreparedMesh& mesh, double gap);
 }

@@ -109,6 +109,17 @@ public:
         area += Mesh.vertexAreas[v];
       }
     run.rms = area > 0.0 ? std::sqrt(sum / area) : std::numeric_limits<double>::infinity();
+    if (std::getenv("FOLDINGMESHES_DEBUG"))
+    {
+      std::vector<double> values;
+      for (int v = 0; v < Mesh.NumberOfPoints(); ++v)
+        if (inRegion[v])
+          values.push_back(run.distance[v] / eps);
+      std::sort(values.begin(), values.end());
+      if (!values.empty())
+        std::fprintf(stderr, "  region stats: median %.3f p75 %.3f p90 %.3f\n",
+          values[values.size() / 2], values[values.size() * 3 / 4], values[values.size() * 9 / 10]);
+    }
   }
 
 private:
@@ -119,18 +130,18 @@ private:
     const double floor = 3.0 * Options.epsilon;
     if (metric == DistanceMetric::Fine)
       return floor;
+    // Median of the finite distances of the support's vertices (a vertex without a
+    // compatible face in the coarse metric has no distance to take a median of).
     std::vector<double> values;
     values.reserve(d.size());
     for (size_t i = 0; i < d.size(); ++i)
-      if (vertexInSupport[i])
+      if (vertexInSupport[i] && std::isfinite(d[i]))
         values.push_back(d[i]);
     if (values.empty())
       return floor;
     auto mid = values.begin() + values.size() / 2;
     std::nth_element(values.begin(), mid, values.end());
-    const double median = *mid;
-    return std::isfinite(median) ? std::max(1.4826 * median, floor)
-                                 : std::numeric_limits<double>::infinity();
+    return std::max(1.4826 * *mid, floor);
   }
 
   std::vector<char> SupportVertices(const std::vector<char>& support) const
@@ -162,10 +173,13 @@ private:
   }
 
   /// Closed-form step choosing the eigen-plane of lowest sum of rho (the paper's rule).
+  /// All three are scored with the same sigma: the current iteration's, or (first step)
+  /// the one the candidate's own distances give.
   Plane ChooseByCost(const std::vector<double>& weight,
     const std::vector<char>& support,
     DistanceMetric metric,
-    std::vector<double>* chosenDistances) const
+    std::vector<double>* chosenDistances,
+    double sigma = -1.0) const
   {
     std::array<Plane, 3> planes;
     if (!PrincipalPlanes(Mesh, weight, planes))
@@ -177,7 +191,7 @@ private:
     for (int k = 0; k < 3; ++k)
     {
       Distances.Compute(planes[k], metric, MaxDistance(metric), d);
-      const double c = Cost(d, vin, Sigma(metric, d, vin));
+      const double c = Cost(d, vin, sigma > 0.0 ? sigma : Sigma(metric, d, vin));
       if (c < bestCost)
       {
         bestCost = c;
@@ -204,7 +218,6 @@ private:
     int& iterations = coarse ? run.coarseIterations : run.fineIterations;
     for (int it = 0; it < maxIterations; ++it)
     {
-      ++iterations;
       if (!haveDistances)
         Distances.Compute(run.plane,
           metric,
@@ -226,6 +239,7 @@ private:
       const std::vector<char> sv = SupportVertices(support);
       run.support = support;
       run.cost.push_back(Cost(d, sv, sigma));
+      ++iterations; // one entry of the cost history per counted iteration
       run.weight.assign(Mesh.NumberOfPoints(), 0.0);
       for (int v = 0; v < Mesh.NumberOfPoints(); ++v)
         if (sv[v])
@@ -234,7 +248,7 @@ private:
       Plane next;
       if (!Options.robust)
       {
-        next = ChooseByCost(run.weight, run.support, metric, &d);
+        next = ChooseByCost(run.weight, run.support, metric, &d, sigma);
         haveDistances = true;
       }
       else
@@ -249,16 +263,19 @@ private:
       const double angle = PlaneAngleDegrees(next, run.plane);
       const double offset = PlaneOffsetAt(run.plane, next, next.origin);
       const bool converged = angle < angleTol && offset < offsetTol;
-      // A support that comes back (a cycle), or one that hardly changes while the plane
-      // hardly moves (the fine phase's near 2-cycles), ends the phase too.
-      const bool cycled = std::find(supports.begin(), supports.end(), support) != supports.end();
+      // A support that comes back after two or more iterations (a cycle: the fine phase's
+      // 2-cycles move the plane by hundredths of a degree forever), or one that hardly
+      // changes while the plane barely moves (within 3x the tolerances), ends the phase.
+      const bool cycled = supports.size() >= 2 &&
+        std::find(supports.begin(), supports.end() - 1, support) != supports.end() - 1 &&
+        angle < 50.0 * angleTol;
       double changedArea = 0.0;
       if (!supports.empty())
         for (int f = 0; f < Mesh.NumberOfFaces(); ++f)
           if (supports.back()[f] != support[f])
             changedArea += Mesh.faceAreas[f];
       const bool stalled = !supports.empty() && changedArea < 0.002 * Mesh.totalArea &&
-        angle < 10.0 * angleTol && offset < 10.0 * offsetTol;
+        angle < 3.0 * angleTol && offset < 3.0 * offsetTol;
       run.plane = next;
       if (converged || cycled || stalled)
         break;
@@ -278,9 +295,19 @@ bool SamePlane(const Plane& a, const Plane& b, double epsilon)
   return PlaneAngleDegrees(a, b) < 2.0 && PlaneOffsetAt(a, b, b.origin) < epsilon;
 }
 
-/// Better final result: larger region; within 2% of the mesh area, lower residual.
-bool Better(const Run& a, const Run& b, double totalArea)
+/// A region whose distances stay well below epsilon (the "symmetry found" residual rule):
+/// an accidental region spreads its distances over [0, epsilon).
+bool Tight(const Run& r, double epsilon)
 {
+  return r.regionArea > 0.0 && r.rms <= FoundResidualRatio * epsilon;
+}
+
+/// Better final result: a tight region beats a loose one; then the larger region; within
+/// 2% of the mesh area, the lower residual.
+bool Better(const Run& a, const Run& b, double totalArea, double epsilon)
+{
+  if (Tight(a, epsilon) != Tight(b, epsilon))
+    return Tight(a, epsilon);
   if (std::abs(a.regionArea - b.regionArea) > 0.02 * totalArea)
     return a.regionArea > b.regionArea;
   return a.rms < b.rms;
@@ -294,7 +321,7 @@ void Finish(const PreparedMesh& mesh, const SymmetryOptions& options, const Refi
   Run& best, SymmetryResult& result)
 {
   const int nf = mesh.NumberOfFaces();
-  refiner.Score(best, 9.0 * options.epsilon); // full-range distances for the output
+  refiner.Score(best, 9.0 * options.epsilon); // distances up to 3 sigma for the output
   result.plane = CanonicalPlane(best.plane, best.plane.origin);
   result.distance = best.distance;
   result.weight = best.weight;
@@ -308,7 +335,7 @@ void Finish(const PreparedMesh& mesh, const SymmetryOptions& options, const Refi
   result.symmetricAreaFraction = best.regionArea / mesh.totalArea;
   result.rmsResidual = best.rms;
   result.found = result.symmetricAreaFraction >= options.minimumSymmetricAreaFraction &&
-    best.rms <= 0.35 * options.epsilon;
+    best.rms <= FoundResidualRatio * options.epsilon;
 }
 
 /// Large meshes: candidate search on a simplified copy, finalists refined on the full mesh.
@@ -319,8 +346,9 @@ SymmetryResult DetectOnSimplified(const PreparedMesh& mesh, const SymmetryOption
   const auto t0 = Clock::now();
   PreparedMesh small;
   std::string error;
-  if (!PrepareMesh(SimplifiedMesh(mesh, SimplifiedMeshFaces), {}, small, error))
-    return result;
+  if (!PrepareMesh(SimplifiedMesh(mesh, SimplifiedMeshFaces), {}, small, error) ||
+    small.NumberOfFaces() > SimplifyAboveFaces || small.NumberOfFaces() < 4)
+    return DetectSymmetryOnFullMesh(mesh, options);
   if (!mesh.proximityLinks.empty())
     LinkNearbyParts(small, options.epsilon);
   SymmetryOptions coarseOptions = options;
@@ -351,10 +379,10 @@ SymmetryResult DetectOnSimplified(const PreparedMesh& mesh, const SymmetryOption
   result.fineSeconds = Seconds(t1);
   result.startsTried = coarse.startsTried;
   if (runs.empty())
-    return result;
+    return DetectSymmetryOnFullMesh(mesh, options);
   int bestRun = 0;
   for (size_t k = 1; k < runs.size(); ++k)
-    if (Better(runs[k], runs[bestRun], mesh.totalArea))
+    if (Better(runs[k], runs[bestRun], mesh.totalArea, options.epsilon))
       bestRun = static_cast<int>(k);
   for (size_t k = 0; k < runs.size(); ++k)
     result.finalists.push_back(runs[k].plane);
@@ -368,6 +396,11 @@ SymmetryResult DetectSymmetry(const PreparedMesh& mesh, const SymmetryOptions& o
 {
   if (options.robust && mesh.NumberOfFaces() > SimplifyAboveFaces)
     return DetectOnSimplified(mesh, options);
+  return DetectSymmetryOnFullMesh(mesh, options);
+}
+
+SymmetryResult DetectSymmetryOnFullMesh(const PreparedMesh& mesh, const SymmetryOptions& options)
+{
   SymmetryResult result;
   auto report = [&](double p) { return !options.progress || options.progress(p); };
   const bool debug = std::getenv("FOLDINGMESHES_DEBUG") != nullptr;
@@ -388,6 +421,7 @@ SymmetryResult DetectSymmetry(const PreparedMesh& mesh, const SymmetryOptions& o
   };
   Refiner refiner(mesh, options);
   std::vector<Run> runs;
+  std::vector<size_t> finished; // runs iterated to convergence
 
   // The paper's path: coarse phase from the principal start (or the user's plane).
   const auto t0 = Clock::now();
@@ -462,8 +496,8 @@ SymmetryResult DetectSymmetry(const PreparedMesh& mesh, const SymmetryOptions& o
     // Finish the best three distinct probes that could still win.
     std::stable_sort(probes.begin(),
       probes.end(),
-      [&](size_t a, size_t b) { return Better(runs[a], runs[b], mesh.totalArea); });
-    std::vector<size_t> chosen;
+      [&](size_t a, size_t b) { return Better(runs[a], runs[b], mesh.totalArea, options.epsilon); });
+    std::vector<size_t>& chosen = finished;
     for (size_t k : probes)
     {
       bool duplicate = false;
@@ -493,23 +527,18 @@ SymmetryResult DetectSymmetry(const PreparedMesh& mesh, const SymmetryOptions& o
     result.startsTried = 1;
   }
 
-  // Robust: runs[0] (the paper's coarse phase alone) only seeded a probe; it is not a result.
-  int bestRun = options.robust && runs.size() > 1 ? 1 : 0;
-  for (size_t k = bestRun + 1; k < runs.size(); ++k)
-    if (Better(runs[k], runs[bestRun], mesh.totalArea))
-      bestRun = static_cast<int>(k);
-  // Finalists: the runs iterated to convergence, best first.
-  std::vector<size_t> finished;
-  for (size_t k = options.robust ? 1 : 0; k < runs.size(); ++k)
-    if (!options.robust || runs[k].fineIterations > std::min(options.maximumIterations, 6))
+  // The result is the best converged run (robust: runs[0], the paper's coarse phase alone,
+  // only seeded a probe). Finalists: the converged runs, best first.
+  if (!options.robust)
+    finished.assign(1, 0);
+  if (finished.empty()) // no probe at all (cannot happen with a paper start): take any run
+    for (size_t k = 0; k < runs.size(); ++k)
       finished.push_back(k);
   std::stable_sort(finished.begin(), finished.end(),
-    [&](size_t a, size_t b) { return Better(runs[a], runs[b], mesh.totalArea); });
+    [&](size_t a, size_t b) { return Better(runs[a], runs[b], mesh.totalArea, options.epsilon); });
   for (size_t k : finished)
     result.finalists.push_back(runs[k].plane);
-  if (result.finalists.empty())
-    result.finalists.push_back(runs[bestRun].plane);
-  Finish(mesh, options, refiner, runs[bestRun], result);
+  Finish(mesh, options, refiner, runs[finished[0]], result);
   return result;
 }
 }

@@ -54,9 +54,14 @@ struct SymmetryResult
  */
 SymmetryResult DetectSymmetry(const PreparedMesh& mesh, const SymmetryOptions& options);
 
+/// DetectSymmetry without the simplified-copy candidate search of very large meshes.
+SymmetryResult DetectSymmetryOnFullMesh(const PreparedMesh& mesh, const SymmetryOptions& options);
+
 /// Meshes with more faces than this are searched for candidate planes on a simplified
 /// copy (SimplifiedMeshFaces faces); the finalists are then refined on the full mesh.
 constexpr int SimplifyAboveFaces = 120000;
+/// The "symmetry found" residual rule: area-weighted RMS of d over S <= this * epsilon.
+constexpr double FoundResidualRatio = 0.35;
 constexpr int SimplifiedMeshFaces = 60000;
 }
 

@@ -30,13 +30,13 @@
 #include <vtkPolyData.h>
 #include <vtkSMPTools.h>
 
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <functional>
 #include <limits>
-#include <array>
 #include <map>
 #include <set>
 #include <sstream>
@@ -120,8 +120,10 @@ void ExpectFailure(const std::string& name, vtkPolyData* input)
   Run run;
   Execute(run, input);
   EXPECT(run.status == 0, name << ": Update() returned " << run.status << ", expected 0");
-  EXPECT(!run.log.errors.empty() && !run.log.errors[0].empty(), name << ": no ErrorEvent with a message");
-  std::printf("%-28s -> error: %s", name.c_str(),
+  EXPECT(!run.log.errors.empty() && !run.log.errors[0].empty(),
+    name << ": no ErrorEvent with a message");
+  std::printf("%-28s -> error: %s",
+    name.c_str(),
     run.log.errors.empty() ? "(none)\n" : run.log.errors[0].c_str());
 }
 
@@ -141,7 +143,8 @@ std::vector<int> ExpectSuccess(const std::string& name, Run& run, vtkPolyData* i
   vtkPolyData* out = run.output;
   EXPECT(out->GetNumberOfPoints() == input->GetNumberOfPoints(), name << ": point count changed");
   vtkDataArray* region = out->GetCellData()->GetArray("SymmetryRegion");
-  EXPECT(region && region->GetNumberOfTuples() == out->GetNumberOfCells(), name << ": no SymmetryRegion");
+  EXPECT(region && region->GetNumberOfTuples() == out->GetNumberOfCells(),
+    name << ": no SymmetryRegion");
   if (region)
     for (vtkIdType c = 0; c < region->GetNumberOfTuples(); ++c)
     {
@@ -150,19 +153,29 @@ std::vector<int> ExpectSuccess(const std::string& name, Run& run, vtkPolyData* i
       labels.push_back(static_cast<int>(v));
     }
   vtkDataArray* fieldNormal = out->GetFieldData()->GetArray("SymmetryPlaneNormal");
-  EXPECT(fieldNormal && std::abs(Vec3(fieldNormal->GetComponent(0, 0), fieldNormal->GetComponent(0, 1),
-                                        fieldNormal->GetComponent(0, 2)).norm() - 1.0) < 1e-12,
+  EXPECT(fieldNormal &&
+      std::abs(Vec3(fieldNormal->GetComponent(0, 0),
+                 fieldNormal->GetComponent(0, 1),
+                 fieldNormal->GetComponent(0, 2))
+                 .norm() -
+        1.0) < 1e-12,
     name << ": field SymmetryPlaneNormal missing or not unit");
   vtkDataArray* fieldFraction = out->GetFieldData()->GetArray("SymmetricAreaFraction");
-  EXPECT(fieldFraction && fieldFraction->GetTuple1(0) == fraction, name << ": field SymmetricAreaFraction");
+  EXPECT(fieldFraction && fieldFraction->GetTuple1(0) == fraction,
+    name << ": field SymmetricAreaFraction");
   for (vtkIdType c = 0; c < out->GetNumberOfCells(); ++c)
     if (out->GetCellSize(c) != 3)
     {
       EXPECT(false, name << ": output cell " << c << " has " << out->GetCellSize(c) << " points");
       break;
     }
-  std::printf("%-28s -> ok: found %d, area fraction %.3f, normal (%.3f %.3f %.3f)\n", name.c_str(),
-    int(run.filter->GetSymmetryFound()), fraction, n[0], n[1], n[2]);
+  std::printf("%-28s -> ok: found %d, area fraction %.3f, normal (%.3f %.3f %.3f)\n",
+    name.c_str(),
+    int(run.filter->GetSymmetryFound()),
+    fraction,
+    n[0],
+    n[1],
+    n[2]);
   return labels;
 }
 
@@ -181,7 +194,8 @@ vtkSmartPointer<vtkPolyData> QuadBox(int n)
 {
   std::map<std::array<int, 3>, vtkIdType> ids;
   std::vector<Vec3> points;
-  auto id = [&](int i, int j, int k) {
+  auto id = [&](int i, int j, int k)
+  {
     const std::array<int, 3> key{ i, j, k };
     auto it = ids.find(key);
     if (it != ids.end())
@@ -195,7 +209,8 @@ vtkSmartPointer<vtkPolyData> QuadBox(int n)
       for (int a = 0; a < n; ++a)
         for (int b = 0; b < n; ++b)
         {
-          auto at = [&](int u, int v) {
+          auto at = [&](int u, int v)
+          {
             int c[3];
             c[axis] = side;
             c[(axis + 1) % 3] = u;
@@ -231,9 +246,11 @@ vtkSmartPointer<vtkPolyData> Hemisphere(int rings, int sectors)
     for (int s = 0; s < sectors; ++s)
     {
       const double theta = 0.5 * M_PI * r / rings, phi = 2 * M_PI * s / sectors;
-      points.push_back(Vec3(std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi), std::cos(theta)));
+      points.push_back(
+        Vec3(std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi), std::cos(theta)));
     }
-  auto ring = [sectors](int r, int s) { return static_cast<vtkIdType>(1 + (r - 1) * sectors + (s % sectors)); };
+  auto ring = [sectors](int r, int s)
+  { return static_cast<vtkIdType>(1 + (r - 1) * sectors + (s % sectors)); };
   std::vector<std::vector<vtkIdType>> tris;
   for (int s = 0; s < sectors; ++s)
     tris.push_back({ 0, ring(1, s), ring(1, s + 1) });
@@ -265,7 +282,8 @@ void CheckTriangulation(const std::string& name, vtkPolyData* input, vtkPolyData
     bool inside = out->GetNumberOfIds() == 3;
     for (vtkIdType k = 0; inside && k < 3; ++k)
       inside = polygon.count(out->GetId(k)) > 0;
-    EXPECT(inside, name << ": output triangle " << c << " is not in input polygon " << polyId->GetTuple1(c));
+    EXPECT(inside,
+      name << ": output triangle " << c << " is not in input polygon " << polyId->GetTuple1(c));
     Vec3 p[3];
     for (int k = 0; k < 3 && k < out->GetNumberOfIds(); ++k)
       output->GetPoint(out->GetId(k), p[k].data());
@@ -285,8 +303,8 @@ void CheckTriangulation(const std::string& name, vtkPolyData* input, vtkPolyData
       expected += 0.5 * (b - a).cross(d - a).norm(); // convex polygons: a fan is exact
     }
   }
-  EXPECT(std::abs(area - expected) < 1e-12 * expected, name << ": triangles cover area " << area
-                                                            << ", polygons " << expected);
+  EXPECT(std::abs(area - expected) < 1e-12 * expected,
+    name << ": triangles cover area " << area << ", polygons " << expected);
 }
 
 void AddPolyIds(vtkPolyData* pd)
@@ -327,7 +345,8 @@ bool SameResult(Run& a, Run& b, std::string& what)
         b.output->GetCellData()->GetArray("SymmetryRegion")))
     what += " SymmetryRegion";
   for (const char* name : { "SymmetryDistance", "SymmetryWeight" })
-    if (!SameBits(a.output->GetPointData()->GetArray(name), b.output->GetPointData()->GetArray(name)))
+    if (!SameBits(
+          a.output->GetPointData()->GetArray(name), b.output->GetPointData()->GetArray(name)))
       what += std::string(" ") + name;
   return what.empty();
 }
@@ -372,8 +391,9 @@ int main()
     }
 
     // Triangles with collinear or coincident points only.
-    auto degenerate = MakePolyData({ Vec3(0, 0, 0), Vec3(1, 1, 1), Vec3(2, 2, 2), Vec3(3, 3, 3), Vec3(1, 1, 1) },
-      { { 0, 1, 2 }, { 1, 2, 3 }, { 1, 4, 2 }, { 0, 0, 3 } });
+    auto degenerate =
+      MakePolyData({ Vec3(0, 0, 0), Vec3(1, 1, 1), Vec3(2, 2, 2), Vec3(3, 3, 3), Vec3(1, 1, 1) },
+        { { 0, 1, 2 }, { 1, 2, 3 }, { 1, 4, 2 }, { 0, 0, 3 } });
     ExpectFailure("all faces degenerate", degenerate);
   }
 
@@ -387,9 +407,11 @@ int main()
     if (run.status == 1)
     {
       EXPECT(run.output->GetNumberOfCells() == 2 * box->GetNumberOfCells(),
-        "quad box: " << run.output->GetNumberOfCells() << " triangles for " << box->GetNumberOfCells() << " quads");
+        "quad box: " << run.output->GetNumberOfCells() << " triangles for "
+                     << box->GetNumberOfCells() << " quads");
       CheckTriangulation("quad box", box, run.output);
-      // Every lattice vertex has its mirror image in the lattice: exactly symmetric about x, y, z = 0.
+      // Every lattice vertex has its mirror image in the lattice: exactly symmetric about x, y, z =
+      // 0.
       EXPECT(run.filter->GetSymmetryFound() && run.filter->GetSymmetricAreaFraction() > 0.9 &&
           BestAngle(run.filter, { Vec3::UnitX(), Vec3::UnitY(), Vec3::UnitZ() }) < 1.0,
         "quad box: not found symmetric about a coordinate plane");
@@ -463,11 +485,13 @@ int main()
       vtkDataArray* found = run.output->GetFieldData()->GetArray("SymmetryFound");
       EXPECT(found && found->GetTuple1(0) == 0.0, "asymmetric blob: field SymmetryFound not 0");
       // Input arrays on output 0, same values (the input is all triangles: cells map 1:1).
-      EXPECT(run.output->GetNumberOfCells() == in->GetNumberOfCells(), "asymmetric blob: cell count changed");
+      EXPECT(run.output->GetNumberOfCells() == in->GetNumberOfCells(),
+        "asymmetric blob: cell count changed");
       EXPECT(SameBits(in->GetPointData()->GetArray("Temperature"),
                run.output->GetPointData()->GetArray("Temperature")),
         "point array Temperature missing or changed");
-      EXPECT(SameBits(in->GetCellData()->GetArray("Material"), run.output->GetCellData()->GetArray("Material")),
+      EXPECT(SameBits(in->GetCellData()->GetArray("Material"),
+               run.output->GetCellData()->GetArray("Material")),
         "cell array Material missing or changed");
     }
   }
@@ -489,8 +513,9 @@ int main()
     first->DeepCopy(c.output);
     c.filter->Modified();
     c.status = c.filter->GetExecutive()->Update();
-    EXPECT(c.status == 1 && SameBits(first->GetCellData()->GetArray("SymmetryRegion"),
-                              c.output->GetCellData()->GetArray("SymmetryRegion")) &&
+    EXPECT(c.status == 1 &&
+        SameBits(first->GetCellData()->GetArray("SymmetryRegion"),
+          c.output->GetCellData()->GetArray("SymmetryRegion")) &&
         SameResult(a, c, what),
       "re-execution differs:" << what);
 
@@ -501,8 +526,8 @@ int main()
     vtkSMPTools::Initialize(2);
     EXPECT(std::strcmp(vtkSMPTools::GetBackend(), "STDThread") == 0 &&
         vtkSMPTools::GetEstimatedNumberOfThreads() == 2,
-      "STDThread backend with 2 threads not active: " << vtkSMPTools::GetBackend() << ", "
-                                                      << vtkSMPTools::GetEstimatedNumberOfThreads());
+      "STDThread backend with 2 threads not active: "
+        << vtkSMPTools::GetBackend() << ", " << vtkSMPTools::GetEstimatedNumberOfThreads());
     Run threaded;
     Execute(threaded, m.mesh);
     vtkSMPTools::SetBackend("Sequential");

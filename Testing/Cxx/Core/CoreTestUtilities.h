@@ -32,7 +32,7 @@ inline int& Failures()
     {                                                                                              \
       std::ostringstream os_;                                                                      \
       os_ << msg;                                                                                  \
-      std::printf("FAIL (%s:%d): %s\n", __FILE__, __LINE__, os_.str().c_str());                   \
+      std::printf("FAIL (%s:%d): %s\n", __FILE__, __LINE__, os_.str().c_str());                    \
       ++coretest::Failures();                                                                      \
     }                                                                                              \
   } while (0)
@@ -67,7 +67,8 @@ inline foldingmeshes::TriangleMesh ToTriangleMesh(vtkPolyData* pd)
   {
     pd->GetCellPoints(c, ids);
     REQUIRE(ids->GetNumberOfIds() == 3, "procedural mesh cell " << c << " is not a triangle");
-    mesh.triangles.push_back({ static_cast<int>(ids->GetId(0)), static_cast<int>(ids->GetId(1)),
+    mesh.triangles.push_back({ static_cast<int>(ids->GetId(0)),
+      static_cast<int>(ids->GetId(1)),
       static_cast<int>(ids->GetId(2)) });
   }
   return mesh;

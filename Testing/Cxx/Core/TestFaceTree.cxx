@@ -1,8 +1,8 @@
 // FaceTree against brute force over all faces:
 // - ClosestCompatibleFace: thousands of random query points (near the surface and anywhere in
 //   an enlarged box) with random or surface-derived unit normals, several compatibility angles
-//   (10, 45 and 90 degrees: the filter's range) and maxDistance values; the reference is the
-//   minimum exact
+//   (10, 45, 90 degrees -- the filter's range -- and 120 degrees, cosLimit < 0, allowed by
+//   the core API) and maxDistance values; the reference is the minimum exact
 //   point-triangle distance over the non-degenerate faces whose barycentrically interpolated
 //   vertex normal at the closest point makes a cosine >= cosLimit with the query normal;
 // - NearestCentroidFace: minimum centroid distance over the non-degenerate faces, including
@@ -10,12 +10,8 @@
 // - on two meshes (bilateral and asymmetric blobs);
 // - two parallel plates facing each other: a point near plate A with a normal matching plate B
 //   gets plate B (the plain closest face is excluded), a normal at 90 degrees gets nothing.
-// With the argument "wide-angle" (registered as TestFaceTree_WideAngle, label knownbug): the
-// same comparison at 120 degrees (cosLimit < 0, allowed by the core API) plus a minimal
-// reproducer. KNOWN BUG: the normal-cone pruning assumes half-angle + limit < 180 degrees; its
-// guard (coneCos > 0 || cosL > 0) does not ensure it (the right condition is coneCos + cosL > 0),
-// so subtrees holding compatible faces are skipped. Unreachable from vtkSymmetryPlaneDetector
-// (CompatibilityAngle is clamped to 1..90) but reachable through SymmetryOptions/MirrorDistance.
+// - regression: a minimal fan where the cone half-angle + compatibility angle exceed 180
+//   degrees (the normal-cone pruning used to skip compatible faces there).
 #include "CoreTestUtilities.h"
 #include "FaceTree.h"
 #include "PointTriangleDistance.h"
@@ -87,10 +83,14 @@ Reference BruteCompatible(const PreparedMesh& m, const Vec3& p, const Vec3& n, d
 double FaceDistance(const PreparedMesh& m, int f, const Vec3& p)
 {
   const auto& t = m.triangles[f];
-  return std::sqrt(ClosestPointTriangle(p, m.points[t[0]], m.points[t[1]], m.points[t[2]]).squaredDistance);
+  return std::sqrt(
+    ClosestPointTriangle(p, m.points[t[0]], m.points[t[1]], m.points[t[2]]).squaredDistance);
 }
 
-void CheckMesh(const char* name, const PreparedMesh& m, int queries, const std::vector<double>& angles,
+void CheckMesh(const char* name,
+  const PreparedMesh& m,
+  int queries,
+  const std::vector<double>& angles,
   bool mirrorX)
 {
   const FaceTree tree(m);
@@ -150,19 +150,25 @@ void CheckMesh(const char* name, const PreparedMesh& m, int queries, const std::
         if (!ok && !expectHit)
           ok = hit.face < 0 && hit.distance == kInf;
         if (!ok && ++mismatches <= 5)
-          EXPECT(false, name << ": angle " << angle << " maxDistance/diag " << maxDistance / diag
-                             << " query " << p.transpose() << " n " << n.transpose()
-                             << ": tree face " << hit.face << " d " << hit.distance
-                             << ", brute force face " << ref.face << " d " << ref.distance);
+          EXPECT(false,
+            name << ": angle " << angle << " maxDistance/diag " << maxDistance / diag << " query "
+                 << p.transpose() << " n " << n.transpose() << ": tree face " << hit.face << " d "
+                 << hit.distance << ", brute force face " << ref.face << " d " << ref.distance);
       }
     }
   }
   EXPECT(mismatches == 0, name << ": " << mismatches << " ClosestCompatibleFace mismatches");
   // The test must exercise hits and misses, and ties must be rare.
-  EXPECT(found > compared / 5 && found < compared, name << ": only " << found << " hits of " << compared);
-  EXPECT(sameFace >= 0.95 * found, name << ": only " << sameFace << " of " << found << " same faces");
-  std::printf("%s: %d faces, %d queries, %d hits (%d same face)\n", name, m.NumberOfFaces(),
-    compared, found, sameFace);
+  EXPECT(found > compared / 5 && found < compared,
+    name << ": only " << found << " hits of " << compared);
+  EXPECT(
+    sameFace >= 0.95 * found, name << ": only " << sameFace << " of " << found << " same faces");
+  std::printf("%s: %d faces, %d queries, %d hits (%d same face)\n",
+    name,
+    m.NumberOfFaces(),
+    compared,
+    found,
+    sameFace);
 
   // NearestCentroidFace. On a mesh exactly symmetric about x = 0, points on that plane are
   // exactly equidistant from mirrored centroids: ties, which must go to the lowest face id.
@@ -192,12 +198,14 @@ void CheckMesh(const char* name, const PreparedMesh& m, int queries, const std::
     ties += atBest > 1;
     const int got = tree.NearestCentroidFace(p);
     if (got != best && ++centroidMismatches <= 5)
-      EXPECT(false, name << ": NearestCentroidFace " << got << " brute force " << best << " at "
-                         << p.transpose() << (atBest > 1 ? " (tie)" : ""));
+      EXPECT(false,
+        name << ": NearestCentroidFace " << got << " brute force " << best << " at "
+             << p.transpose() << (atBest > 1 ? " (tie)" : ""));
   }
   if (mirrorX)
     EXPECT(ties > queries / 4, name << ": only " << ties << " exact centroid ties were tested");
-  EXPECT(centroidMismatches == 0, name << ": " << centroidMismatches << " NearestCentroidFace mismatches");
+  EXPECT(centroidMismatches == 0,
+    name << ": " << centroidMismatches << " NearestCentroidFace mismatches");
 }
 
 TriangleMesh Plate(double z, bool up, int n)
@@ -225,36 +233,36 @@ TriangleMesh Plate(double z, bool up, int n)
 }
 }
 
-int main(int argc, char* argv[])
+int main()
 {
   const auto t0 = std::chrono::steady_clock::now();
   using namespace foldingmeshes::testing;
-  const bool wide = argc > 1 && std::string(argv[1]) == "wide-angle";
-  const std::vector<double> angles = wide ? std::vector<double>{ 120.0 }
-                                          : std::vector<double>{ 10.0, 45.0, 90.0 };
+  const std::vector<double> angles = { 10.0, 45.0, 90.0, 120.0 };
   {
-    const PreparedMesh m = coretest::Prepare(coretest::ToTriangleMesh(MakeBilateralBlob(3000).mesh));
-    CheckMesh("bilateral blob", m, wide ? 2000 : 1000, angles, true);
+    const PreparedMesh m =
+      coretest::Prepare(coretest::ToTriangleMesh(MakeBilateralBlob(3000).mesh));
+    CheckMesh("bilateral blob", m, 1000, angles, true);
     // The same faces in reverse order, so that ties are met in the other traversal order.
     TriangleMesh reversed = coretest::ToTriangleMesh(MakeBilateralBlob(3000).mesh);
     std::reverse(reversed.triangles.begin(), reversed.triangles.end());
     CheckMesh("bilateral blob, faces reversed", coretest::Prepare(reversed), 500, angles, true);
   }
   {
-    const PreparedMesh m = coretest::Prepare(coretest::ToTriangleMesh(MakeAsymmetricBlob(2000, 5).mesh));
-    CheckMesh("asymmetric blob", m, wide ? 1200 : 600, angles, false);
+    const PreparedMesh m =
+      coretest::Prepare(coretest::ToTriangleMesh(MakeAsymmetricBlob(2000, 5).mesh));
+    CheckMesh("asymmetric blob", m, 600, angles, false);
   }
-  if (wide)
   {
-    // Minimal reproducer: a flat fan whose corner normals lean 70 degrees outward (root cone
+    // Regression, minimal case: a flat fan whose corner normals lean 70 degrees outward (root cone
     // half-angle 70); at vertex 2 the normal (sin 70, 0, cos 70) is 110 degrees from -z, so with
     // a 120-degree limit the faces at vertex 2 are compatible with the query normal -z.
     TriangleMesh fan;
     fan.points = { Vec3(-1, 0, 0), Vec3(0, -1, 0), Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(0, 0, 0) };
     fan.triangles = { { 4, 0, 1 }, { 4, 1, 2 }, { 4, 2, 3 }, { 4, 3, 0 } };
     const double s70 = std::sin(70 * kPi / 180), c70 = std::cos(70 * kPi / 180);
-    const std::vector<Vec3> normals = { Vec3(-s70, 0, c70), Vec3(0, -s70, c70), Vec3(s70, 0, c70),
-      Vec3(0, s70, c70), Vec3(0, 0, 1) };
+    const std::vector<Vec3> normals = {
+      Vec3(-s70, 0, c70), Vec3(0, -s70, c70), Vec3(s70, 0, c70), Vec3(0, s70, c70), Vec3(0, 0, 1)
+    };
     PreparedMesh m;
     std::string error;
     REQUIRE(foldingmeshes::PrepareMesh(fan, normals, m, error), "fan: " << error);
@@ -265,10 +273,8 @@ int main(int argc, char* argv[])
     const FaceTree::Hit hit = tree.ClosestCompatibleFace(p, n, cos120, kInf);
     EXPECT(ref.face >= 0 && std::abs(ref.distance - 0.5) < 1e-15, "fan: brute force found no face");
     EXPECT(hit.face >= 0 && std::abs(hit.distance - 0.5) < 1e-15,
-      "fan reproducer: ClosestCompatibleFace(p=(1,0,0.5), n=(0,0,-1), cos 120 deg) gave face "
+      "fan: ClosestCompatibleFace(p=(1,0,0.5), n=(0,0,-1), cos 120 deg) gave face "
         << hit.face << " d " << hit.distance << "; brute force face " << ref.face << " d 0.5");
-    std::printf("TestFaceTree wide-angle: %.2f s\n", coretest::Seconds(t0));
-    return coretest::Finish("TestFaceTree (wide-angle)");
   }
 
   // Two parallel plates: A at z = 0 facing up (+z), B at z = 1 facing down (-z).
@@ -288,10 +294,12 @@ int main(int argc, char* argv[])
     const FaceTree::Hit down = tree.ClosestCompatibleFace(p, Vec3(0, 0, -1), cos45, kInf);
     EXPECT(down.face >= na && std::abs(down.distance - 0.7) < 1e-14 &&
         (down.point - Vec3(0.37, 0.61, 1.0)).norm() < 1e-14,
-      "plates, normal -z: face " << down.face << " distance " << down.distance << ", expected plate B at 0.7");
+      "plates, normal -z: face " << down.face << " distance " << down.distance
+                                 << ", expected plate B at 0.7");
     const FaceTree::Hit up = tree.ClosestCompatibleFace(p, Vec3(0, 0, 1), cos45, kInf);
     EXPECT(up.face >= 0 && up.face < na && std::abs(up.distance - 0.3) < 1e-14,
-      "plates, normal +z: face " << up.face << " distance " << up.distance << ", expected plate A at 0.3");
+      "plates, normal +z: face " << up.face << " distance " << up.distance
+                                 << ", expected plate A at 0.3");
     const FaceTree::Hit side = tree.ClosestCompatibleFace(p, Vec3(1, 0, 0), cos45, kInf);
     EXPECT(side.face == -1 && side.distance == kInf,
       "plates, normal +x: got face " << side.face << ", expected none");

@@ -33,8 +33,9 @@ namespace
 TriangleMesh Octahedron(const Vec3& center, double r)
 {
   TriangleMesh m;
-  const Vec3 d[6] = { Vec3::UnitX(), -Vec3::UnitX(), Vec3::UnitY(), -Vec3::UnitY(), Vec3::UnitZ(),
-    -Vec3::UnitZ() };
+  const Vec3 d[6] = {
+    Vec3::UnitX(), -Vec3::UnitX(), Vec3::UnitY(), -Vec3::UnitY(), Vec3::UnitZ(), -Vec3::UnitZ()
+  };
   for (const Vec3& v : d)
     m.points.push_back(center + r * v);
   // (x: 0/1, y: 2/3, z: 4/5): face (sx, sy, sz) ordered so that the normal points outward.
@@ -57,8 +58,9 @@ TriangleMesh Cube(const Vec3& offset)
   TriangleMesh m;
   for (int i = 0; i < 8; ++i)
     m.points.push_back(offset + Vec3(i & 1, (i >> 1) & 1, (i >> 2) & 1));
-  const int quads[6][4] = { { 0, 2, 3, 1 }, { 4, 5, 7, 6 }, { 0, 1, 5, 4 }, { 2, 6, 7, 3 },
-    { 0, 4, 6, 2 }, { 1, 3, 7, 5 } };
+  const int quads[6][4] = {
+    { 0, 2, 3, 1 }, { 4, 5, 7, 6 }, { 0, 1, 5, 4 }, { 2, 6, 7, 3 }, { 0, 4, 6, 2 }, { 1, 3, 7, 5 }
+  };
   for (const auto& q : quads)
   {
     m.triangles.push_back({ q[0], q[1], q[2] });
@@ -137,8 +139,12 @@ std::vector<int> AllFaces(const PreparedMesh& m)
 
 /// Checks that a closed convex mesh with centre c, whose input had `wrong` faces with reversed
 /// orientation (flags), was oriented outward and reported correctly.
-void CheckOutward(const TriangleMesh& input, const PreparedMesh& m, const std::vector<int>& faces,
-  const Vec3& c, int expectedFlips, const std::string& what)
+void CheckOutward(const TriangleMesh& input,
+  const PreparedMesh& m,
+  const std::vector<int>& faces,
+  const Vec3& c,
+  int expectedFlips,
+  const std::string& what)
 {
   EXPECT(Consistent(m), what << ": orientation not consistent");
   EXPECT(SignedVolume(m, faces) > 0.0, what << ": signed volume " << SignedVolume(m, faces));
@@ -167,8 +173,9 @@ int main()
   // ---- Welding ----
   {
     TriangleMesh in;
-    in.points = { Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(1, 0, 0), Vec3(0, 1, 0),
-      Vec3(1, 1, 0) };
+    in.points = {
+      Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(1, 1, 0)
+    };
     in.triangles = { { 0, 1, 2 }, { 4, 3, 5 } };
     REQUIRE(PrepareMesh(in, {}, m, error), "welding mesh: " << error);
     EXPECT(m.NumberOfPoints() == 4, "welding: " << m.NumberOfPoints() << " points, expected 4");
@@ -208,11 +215,11 @@ int main()
         }
       REQUIRE(PrepareMesh(in, {}, m, error), "octahedron: " << error);
       CheckOutward(in, m, AllFaces(m), c, wrong, "octahedron subset " + std::to_string(subset));
-      EXPECT(m.numberOfParts == 1 && m.numberOfBoundaryEdges == 0 &&
-          m.numberOfNonManifoldEdges == 0,
+      EXPECT(
+        m.numberOfParts == 1 && m.numberOfBoundaryEdges == 0 && m.numberOfNonManifoldEdges == 0,
         "octahedron: parts/boundary/non-manifold " << m.numberOfParts << "/"
-                                                     << m.numberOfBoundaryEdges << "/"
-                                                     << m.numberOfNonManifoldEdges);
+                                                   << m.numberOfBoundaryEdges << "/"
+                                                   << m.numberOfNonManifoldEdges);
     }
   }
 
@@ -232,7 +239,11 @@ int main()
           ++wrong;
         }
       REQUIRE(PrepareMesh(in, {}, m, error), "cube: " << error);
-      CheckOutward(in, m, AllFaces(m), offset + Vec3(0.5, 0.5, 0.5), wrong,
+      CheckOutward(in,
+        m,
+        AllFaces(m),
+        offset + Vec3(0.5, 0.5, 0.5),
+        wrong,
         "cube trial " + std::to_string(trial));
       EXPECT(std::abs(SignedVolume(m, AllFaces(m)) - 1.0) < 1e-12, "cube volume is not 1");
     }
@@ -277,8 +288,8 @@ int main()
       EXPECT(ok, "open pyramid subset " << subset << ": not the majority orientation");
       EXPECT(m.numberOfFlippedFaces == std::min(wrong, 5 - wrong),
         "open pyramid subset " << subset << ": numberOfFlippedFaces " << m.numberOfFlippedFaces);
-      EXPECT(m.numberOfBoundaryEdges == 5 && m.numberOfNonManifoldEdges == 0 &&
-          m.numberOfParts == 1,
+      EXPECT(
+        m.numberOfBoundaryEdges == 5 && m.numberOfNonManifoldEdges == 0 && m.numberOfParts == 1,
         "open pyramid: boundary " << m.numberOfBoundaryEdges << " non-manifold "
                                   << m.numberOfNonManifoldEdges);
     }
@@ -295,8 +306,9 @@ int main()
 
     // Three triangles sharing the edge (0,1) (a "fin"): 1 non-manifold, 6 boundary edges.
     TriangleMesh fin;
-    fin.points = { Vec3(0, 0, 0), Vec3(0, 0, 1), Vec3(1, 0, 0.5), Vec3(-0.5, 0.8, 0.5),
-      Vec3(-0.5, -0.8, 0.5) };
+    fin.points = {
+      Vec3(0, 0, 0), Vec3(0, 0, 1), Vec3(1, 0, 0.5), Vec3(-0.5, 0.8, 0.5), Vec3(-0.5, -0.8, 0.5)
+    };
     fin.triangles = { { 0, 1, 2 }, { 0, 1, 3 }, { 1, 0, 4 } };
     REQUIRE(PrepareMesh(fin, {}, m, error), "fin: " << error);
     EXPECT(m.numberOfNonManifoldEdges == 1 && m.numberOfBoundaryEdges == 6 && m.numberOfParts == 1,
@@ -308,12 +320,16 @@ int main()
 
     // Bowtie (two triangles sharing a vertex only) + a separate octahedron: 3 parts.
     TriangleMesh bowtie;
-    bowtie.points = { Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(1, 1, 0), Vec3(-1, 0, 0), Vec3(-1, -1, 0) };
+    bowtie.points = {
+      Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(1, 1, 0), Vec3(-1, 0, 0), Vec3(-1, -1, 0)
+    };
     bowtie.triangles = { { 0, 1, 2 }, { 0, 3, 4 } };
     const TriangleMesh three = Append(bowtie, Octahedron(Vec3(5, 5, 5), 1.0));
     REQUIRE(PrepareMesh(three, {}, m, error), "bowtie + octahedron: " << error);
-    EXPECT(m.numberOfParts == 3, "bowtie + octahedron: " << m.numberOfParts << " parts, expected 3");
-    EXPECT(m.numberOfBoundaryEdges == 6, "bowtie + octahedron: boundary " << m.numberOfBoundaryEdges);
+    EXPECT(
+      m.numberOfParts == 3, "bowtie + octahedron: " << m.numberOfParts << " parts, expected 3");
+    EXPECT(
+      m.numberOfBoundaryEdges == 6, "bowtie + octahedron: boundary " << m.numberOfBoundaryEdges);
     std::set<int> octaParts;
     for (int f = 2; f < 10; ++f)
       octaParts.insert(m.facePart[f]);
@@ -327,8 +343,9 @@ int main()
   // ---- Degenerate faces ----
   {
     TriangleMesh in;
-    in.points = { Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(2, 0, 0), Vec3(0, 0, 0),
-      Vec3(0, 0, 1) };
+    in.points = {
+      Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(2, 0, 0), Vec3(0, 0, 0), Vec3(0, 0, 1)
+    };
     in.triangles = {
       { 0, 1, 2 }, // fine
       { 0, 0, 1 }, // repeated index
@@ -340,14 +357,14 @@ int main()
     const char expected[5] = { 0, 1, 1, 1, 0 };
     for (int f = 0; f < 5; ++f)
     {
-      EXPECT(m.faceDegenerate[f] == expected[f], "face " << f << " degenerate flag "
-                                                         << int(m.faceDegenerate[f]));
+      EXPECT(m.faceDegenerate[f] == expected[f],
+        "face " << f << " degenerate flag " << int(m.faceDegenerate[f]));
       if (expected[f])
         EXPECT(m.faceNormals[f] == Vec3::Zero() && m.faceAreas[f] < 1e-15,
           "degenerate face " << f << " has a normal or an area");
       else
-        EXPECT(std::abs(m.faceNormals[f].norm() - 1) < 1e-15 &&
-            std::abs(m.faceAreas[f] - 0.5) < 1e-15,
+        EXPECT(
+          std::abs(m.faceNormals[f].norm() - 1) < 1e-15 && std::abs(m.faceAreas[f] - 0.5) < 1e-15,
           "face " << f << " normal/area wrong");
     }
     EXPECT(std::abs(m.totalArea - 1.0) < 1e-15, "degenerate faces: total area " << m.totalArea);
@@ -387,7 +404,8 @@ int main()
     {
       error.clear();
       const bool ok = PrepareMesh(mesh, {}, m, error);
-      EXPECT(!ok && !error.empty(), name << ": PrepareMesh returned " << ok << " error '" << error << "'");
+      EXPECT(!ok && !error.empty(),
+        name << ": PrepareMesh returned " << ok << " error '" << error << "'");
     }
   }
 
@@ -402,9 +420,8 @@ int main()
     std::vector<double> vertexArea(m.NumberOfPoints(), 0.0);
     for (const Triangle& t : in.triangles)
     {
-      const double a = 0.5 * (in.points[t[1]] - in.points[t[0]])
-                               .cross(in.points[t[2]] - in.points[t[0]])
-                               .norm();
+      const double a =
+        0.5 * (in.points[t[1]] - in.points[t[0]]).cross(in.points[t[2]] - in.points[t[0]]).norm();
       total += a;
       for (int v : t)
         vertexArea[m.inputToWelded[v]] += a / 3.0;
@@ -416,7 +433,8 @@ int main()
     {
       sum += m.vertexAreas[v];
       EXPECT(std::abs(m.vertexAreas[v] - vertexArea[v]) < 1e-12 * total, "vertex area " << v);
-      EXPECT(std::abs(m.vertexNormals[v].norm() - 1.0) < 1e-12, "vertex normal " << v << " not unit");
+      EXPECT(
+        std::abs(m.vertexNormals[v].norm() - 1.0) < 1e-12, "vertex normal " << v << " not unit");
     }
     EXPECT(std::abs(sum - m.totalArea) < 1e-12 * total,
       "vertex areas sum to " << sum << ", total area " << m.totalArea);
@@ -434,31 +452,27 @@ int main()
     REQUIRE(PrepareMesh(in, {}, m, error), "two octahedra: " << error);
     REQUIRE(m.numberOfParts == 2, "two octahedra: " << m.numberOfParts << " parts");
     LinkNearbyParts(m, gap);
-    // Brute force: for every vertex, every part of higher id with a vertex within the gap gives
-    // exactly one link, to a nearest such vertex.
+    // Brute force: every vertex with a vertex of another part within the gap gives exactly one
+    // link, to its nearest such vertex.
     std::vector<int> vertexPart(m.NumberOfPoints(), -1);
     for (int f = 0; f < m.NumberOfFaces(); ++f)
       for (int v : m.triangles[f])
         vertexPart[v] = m.facePart[f];
-    std::map<std::pair<int, int>, double> nearest; // (vertex, part) -> distance
+    std::map<int, double> nearest; // vertex -> distance to its nearest other-part vertex
     for (int v = 0; v < m.NumberOfPoints(); ++v)
       for (int w = 0; w < m.NumberOfPoints(); ++w)
-        if (vertexPart[w] > vertexPart[v])
+        if (vertexPart[w] != vertexPart[v])
         {
           const double d = (m.points[v] - m.points[w]).norm();
-          if (d <= gap)
-          {
-            auto key = std::make_pair(v, vertexPart[w]);
-            if (!nearest.count(key) || d < nearest[key])
-              nearest[key] = d;
-          }
+          if (d <= gap && (!nearest.count(v) || d < nearest[v]))
+            nearest[v] = d;
         }
     EXPECT(m.proximityLinks.size() == nearest.size(),
       "delta " << delta << ": " << m.proximityLinks.size() << " links, brute force "
                << nearest.size());
     for (const auto& [v, w] : m.proximityLinks)
     {
-      auto it = nearest.find({ v, vertexPart[w] });
+      auto it = nearest.find(v);
       EXPECT(it != nearest.end() && (m.points[v] - m.points[w]).norm() == it->second,
         "link " << v << "-" << w << " is not a nearest cross-part pair within the gap");
     }
@@ -467,7 +481,8 @@ int main()
       const int a = m.inputToWelded[0], b = m.inputToWelded[6 + 1]; // A's +x, B's -x vertex
       bool found = false;
       for (const auto& link : m.proximityLinks)
-        found = found || (link.first == a && link.second == b) || (link.first == b && link.second == a);
+        found =
+          found || (link.first == a && link.second == b) || (link.first == b && link.second == a);
       EXPECT(found, "the touching vertices of the two octahedra are not linked");
     }
     else

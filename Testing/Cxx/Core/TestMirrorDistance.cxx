@@ -31,8 +31,11 @@ const double kInf = std::numeric_limits<double>::infinity();
 const double kPi = 3.14159265358979323846;
 
 /// The paper's coarse distance, by brute force over all faces.
-void BruteCoarse(const PreparedMesh& m, const Plane& plane, std::vector<double>& d,
-  std::vector<Vec3>& closest, std::vector<Vec3>& normals)
+void BruteCoarse(const PreparedMesh& m,
+  const Plane& plane,
+  std::vector<double>& d,
+  std::vector<Vec3>& closest,
+  std::vector<Vec3>& normals)
 {
   const int nv = m.NumberOfPoints();
   d.assign(nv, kInf);
@@ -110,11 +113,12 @@ int main()
   {
     worst = std::max(worst, d[i]);
     const double dc = (closest[i] - truth.Reflect(m.points[i])).norm();
-    EXPECT(std::abs(dc - d[i]) <= 1e-12 * diag, "fine: closest point of vertex " << i
-                                                  << " is at " << dc << ", distance " << d[i]);
+    EXPECT(std::abs(dc - d[i]) <= 1e-12 * diag,
+      "fine: closest point of vertex " << i << " is at " << dc << ", distance " << d[i]);
     EXPECT(std::abs(normals[i].norm() - 1.0) < 1e-12, "fine: closest normal " << i << " not unit");
   }
-  EXPECT(worst < 1e-9 * diag, "fine distance at the true plane: max " << worst / diag << " x diagonal");
+  EXPECT(
+    worst < 1e-9 * diag, "fine distance at the true plane: max " << worst / diag << " x diagonal");
   // Sensitivity: the origin moved by 1e-3 diagonal gives distances of about 2e-3 diagonal.
   {
     Plane shifted = truth;
@@ -123,22 +127,27 @@ int main()
     int far = 0;
     for (double v : d)
       far += v > 1e-4 * diag;
-    EXPECT(far > m.NumberOfPoints() / 2, "fine: a shifted plane still gives small distances (" << far << ")");
+    EXPECT(far > m.NumberOfPoints() / 2,
+      "fine: a shifted plane still gives small distances (" << far << ")");
   }
 
   // ---- Fine metric at the plane tilted by 10 degrees ----
   const Vec3 tiltAxis = truth.normal.unitOrthogonal();
   const Plane tilted = Tilted(truth, 10.0, tiltAxis, center);
-  EXPECT(std::abs(foldingmeshes::PlaneAngleDegrees(tilted, truth) - 10.0) < 1e-9, "tilt construction");
+  EXPECT(
+    std::abs(foldingmeshes::PlaneAngleDegrees(tilted, truth) - 10.0) < 1e-9, "tilt construction");
   distances.Compute(tilted, DistanceMetric::Fine, kInf, d);
   int far = 0;
   for (double v : d)
     far += v > 1e-3 * diag;
   EXPECT(far > 0.5 * m.NumberOfPoints(),
-    "tilted 10 degrees: only " << far << " of " << m.NumberOfPoints() << " vertices beyond 1e-3 diagonal");
+    "tilted 10 degrees: only " << far << " of " << m.NumberOfPoints()
+                               << " vertices beyond 1e-3 diagonal");
 
   // ---- Coarse metric vs brute force, at several planes ----
-  std::vector<Plane> planes = { truth, tilted, Tilted(truth, 45.0, tiltAxis, center),
+  std::vector<Plane> planes = { truth,
+    tilted,
+    Tilted(truth, 45.0, tiltAxis, center),
     Tilted(truth, 90.0, truth.normal.cross(tiltAxis), center) };
   for (size_t k = 0; k < planes.size(); ++k)
   {
@@ -154,11 +163,12 @@ int main()
         (std::abs(bd[i] - d[i]) <= 1e-12 * diag && (bc[i] - closest[i]).norm() <= 1e-12 * diag &&
           (bn[i] - normals[i]).norm() <= 1e-12);
       if (!same && ++mismatches <= 3)
-        EXPECT(false, "coarse, plane " << k << ", vertex " << i << ": " << d[i] << " brute force " << bd[i]);
+        EXPECT(false,
+          "coarse, plane " << k << ", vertex " << i << ": " << d[i] << " brute force " << bd[i]);
     }
     EXPECT(mismatches == 0, "coarse, plane " << k << ": " << mismatches << " mismatches");
-    std::printf("plane %zu: coarse metric infinite for %d of %d vertices\n", k, infinite,
-      m.NumberOfPoints());
+    std::printf(
+      "plane %zu: coarse metric infinite for %d of %d vertices\n", k, infinite, m.NumberOfPoints());
   }
 
   // ---- Sequential vs STDThread ----
@@ -175,14 +185,19 @@ int main()
       EXPECT(vtkSMPTools::GetEstimatedNumberOfThreads() == 2,
         "STDThread threads: " << vtkSMPTools::GetEstimatedNumberOfThreads());
     const MirrorDistance md(m, 45.0);
-    md.Compute(tilted, DistanceMetric::Fine, 0.1 * diag, threads ? thrFine : seqFine,
-      threads ? &thrClosest : &seqClosest, threads ? &thrNormals : &seqNormals);
+    md.Compute(tilted,
+      DistanceMetric::Fine,
+      0.1 * diag,
+      threads ? thrFine : seqFine,
+      threads ? &thrClosest : &seqClosest,
+      threads ? &thrNormals : &seqNormals);
     md.Compute(planes[2], DistanceMetric::Coarse, kInf, threads ? thrCoarse : seqCoarse);
   }
   EXPECT(BitIdentical(seqFine, thrFine) && BitIdentical(seqClosest, thrClosest) &&
       BitIdentical(seqNormals, thrNormals),
     "fine distances differ between Sequential and STDThread");
-  EXPECT(BitIdentical(seqCoarse, thrCoarse), "coarse distances differ between Sequential and STDThread");
+  EXPECT(
+    BitIdentical(seqCoarse, thrCoarse), "coarse distances differ between Sequential and STDThread");
   vtkSMPTools::SetBackend("Sequential");
   std::printf("TestMirrorDistance: %.2f s\n", coretest::Seconds(t0));
   return coretest::Finish("TestMirrorDistance");

@@ -6,18 +6,16 @@
 // - a brute-force dense barycentric sampling refined around its best sample;
 // - barycentrics non-negative, summing to 1 and reproducing the point, squaredDistance
 //   consistent; points on the triangle are at distance 0.
-// With the argument "degenerate" (registered as TestPointTriangleDistance_Degenerate): point,
-// repeated-vertex, collinear and needle triangles give finite results (no NaN), consistent
-// barycentrics and the distance to the degenerate set (a point or a segment).
-// KNOWN BUGS (see the comments in that section): a == b gives NaN; exactly collinear triangles
-// in general position give a wrong closest point (rounding sends them to the face branch).
+// - degenerate triangles (a point, a repeated vertex, collinear points) and a needle give
+//   finite results (no NaN), consistent barycentrics and the distance to the degenerate set
+//   (a point or a segment). Regression checks: a == b used to give NaN, and exactly collinear
+//   triangles in general position used to give a wrong closest point.
 #include "CoreTestUtilities.h"
 #include "PointTriangleDistance.h"
 
 #include <algorithm>
 #include <cmath>
 #include <random>
-#include <string>
 
 using foldingmeshes::ClosestPointOnTriangle;
 using foldingmeshes::ClosestPointTriangle;
@@ -98,8 +96,12 @@ double BruteForceDistance(const Vec3& p, const Vec3& a, const Vec3& b, const Vec
 }
 
 /// Checks of the result's own consistency; returns true when all hold.
-bool CheckConsistency(const ClosestPointOnTriangle& r, const Vec3& p, const Vec3& a,
-  const Vec3& b, const Vec3& c, const char* what)
+bool CheckConsistency(const ClosestPointOnTriangle& r,
+  const Vec3& p,
+  const Vec3& a,
+  const Vec3& b,
+  const Vec3& c,
+  const char* what)
 {
   const double scale = std::max({ (b - a).norm(), (c - a).norm(), (p - a).norm(), 1.0 });
   const Vec3& w = r.barycentric;
@@ -147,9 +149,8 @@ void RegularTriangles()
         const ClosestPointOnTriangle r = ClosestPointTriangle(p, v[0], v[1], v[2]);
         CheckConsistency(r, p, v[0], v[1], v[2], which == 0 ? "vertex region" : "edge region");
         EXPECT((r.point - expected).norm() <= 1e-12,
-          (which == 0 ? "vertex" : "edge") << " region " << k << ": closest "
-                                           << r.point.transpose() << " expected "
-                                           << expected.transpose());
+          (which == 0 ? "vertex" : "edge") << " region " << k << ": closest " << r.point.transpose()
+                                           << " expected " << expected.transpose());
         // The barycentric of the vertex opposite an edge (or of the other two vertices for a
         // vertex region) must be exactly zero.
         const int ia = k, ib = (k + 1) % 3, ic = (k + 2) % 3;
@@ -216,15 +217,10 @@ void RegularTriangles()
 void DegenerateTriangles()
 {
   // ---- 4. Degenerate and needle triangles ----
-  // KNOWN BUG 1: "repeated a=b" -- with a == b the edge-ab branch is taken (vc = 0, d1 = 0,
-  // d3 = 0) and divides 0 / 0: ClosestPointTriangle(p, o, o, o + e) is NaN whenever
-  // (p - o).(e) > 0, e.g. p = (0.5, 1, 0), o = 0, e = (1, 0, 0).
-  // KNOWN BUG 2: "collinear a between" -- for a = o + e, b = o, c = o + 2e with e in general
-  // position (not axis-aligned), rounding makes va, vb, vc tiny but not all <= 0, so the face
-  // branch runs with a tiny denominator and returns a point of the segment that is not the
-  // closest (about 1.7% of random points, distance errors up to ~1%); the "degenerate
-  // triangle" fallback (denom <= 0) is not reached. PrepareMesh flags such faces degenerate, so
-  // FaceTree never calls it with them; direct callers are affected.
+  // Regressions: "repeated a=b" used to divide 0 / 0 in the edge-ab branch (NaN for
+  // p = (0.5, 1, 0), a = b = 0, c = (1, 0, 0)); "collinear a between" (a = o + e, b = o,
+  // c = o + 2e, e in general position) used to reach the face branch with a tiny rounded
+  // denominator and return a non-closest point of the segment (~1.7% of random points).
   const Vec3 o(0.3, -0.2, 0.1), e(1.0, 2.0, -0.5);
   struct Case
   {
@@ -254,9 +250,9 @@ void DegenerateTriangles()
       const double ref = (ReferenceClosest(p, k.a, k.b, k.c) - p).norm();
       if (std::abs(std::sqrt(r.squaredDistance) - ref) > 1e-8)
       {
-        EXPECT(false, k.name << ": distance " << std::sqrt(r.squaredDistance)
-                             << " but the degenerate triangle is at " << ref << " from "
-                             << p.transpose());
+        EXPECT(false,
+          k.name << ": distance " << std::sqrt(r.squaredDistance)
+                 << " but the degenerate triangle is at " << ref << " from " << p.transpose());
         break;
       }
     }
@@ -264,15 +260,11 @@ void DegenerateTriangles()
 }
 }
 
-int main(int argc, char* argv[])
+int main()
 {
   const auto t0 = std::chrono::steady_clock::now();
-  const bool degenerate = argc > 1 && std::string(argv[1]) == "degenerate";
-  if (degenerate)
-    DegenerateTriangles();
-  else
-    RegularTriangles();
-  std::printf("%.2f s\n", coretest::Seconds(t0));
-  return coretest::Finish(
-    degenerate ? "TestPointTriangleDistance (degenerate)" : "TestPointTriangleDistance");
+  RegularTriangles();
+  DegenerateTriangles();
+  std::printf("TestPointTriangleDistance: %.2f s\n", coretest::Seconds(t0));
+  return coretest::Finish("TestPointTriangleDistance");
 }

@@ -70,10 +70,10 @@ int main()
         double maxD = 0.0;
         for (int v : m.triangles[f])
           maxD = std::max(maxD, d[v]);
-        EXPECT(bool(inclusive[f]) == (maxD <= threshold), "inclusive: face " << f << " max d " << maxD
-                                                                         << " threshold " << threshold);
-        EXPECT(bool(strict[f]) == (maxD < threshold), "strict: face " << f << " max d " << maxD
-                                                                   << " threshold " << threshold);
+        EXPECT(bool(inclusive[f]) == (maxD <= threshold),
+          "inclusive: face " << f << " max d " << maxD << " threshold " << threshold);
+        EXPECT(bool(strict[f]) == (maxD < threshold),
+          "strict: face " << f << " max d " << maxD << " threshold " << threshold);
       }
     }
     std::vector<double> d(m.NumberOfPoints(), 1.0);
@@ -85,8 +85,8 @@ int main()
   // ---- Two separate strips, gaps, vertex-only contact ----
   {
     TriangleMesh soup;
-    AddStrip(soup, 0, 0, 5, 1, 1);   // faces 0..9
-    AddStrip(soup, 0, 10, 4, 1, 1);  // faces 10..17
+    AddStrip(soup, 0, 0, 5, 1, 1);  // faces 0..9
+    AddStrip(soup, 0, 10, 4, 1, 1); // faces 10..17
     const PreparedMesh m = coretest::Prepare(soup);
     REQUIRE(m.numberOfParts == 2, "two strips: " << m.numberOfParts << " parts");
     std::vector<int> labels;
@@ -103,8 +103,8 @@ int main()
     for (int f = 0; f < m.NumberOfFaces(); ++f)
     {
       const int expected = (f == 4 || f == 5) ? -1 : (f < 4 ? 0 : (f < 10 ? 1 : 2));
-      EXPECT(labels[f] == expected, "strip with a gap: face " << f << " label " << labels[f]
-                                                              << " expected " << expected);
+      EXPECT(labels[f] == expected,
+        "strip with a gap: face " << f << " label " << labels[f] << " expected " << expected);
     }
     // The dual graph of a strip is a path (1-0-3-2-5-4-7-6-9-8): removing the single
     // triangle 5 splits the first strip into {0..3} and {4, 6..9}.
@@ -120,14 +120,15 @@ int main()
     bow.points = { Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(1, 1, 0), Vec3(-1, 0, 0), Vec3(-1, -1, 0) };
     bow.triangles = { { 0, 1, 2 }, { 0, 3, 4 } };
     const PreparedMesh b = coretest::Prepare(bow);
-    EXPECT(LabelConnectedRegions(b, All(b), labels) == 2, "faces sharing a vertex only were connected");
+    EXPECT(
+      LabelConnectedRegions(b, All(b), labels) == 2, "faces sharing a vertex only were connected");
   }
 
   // ---- LargestConnectedRegion: by area, not by count ----
   {
     TriangleMesh soup;
-    AddStrip(soup, 0, 0, 10, 1, 1);   // 20 faces, area 10
-    AddStrip(soup, 0, 10, 2, 4, 4);   // 4 faces, area 32
+    AddStrip(soup, 0, 0, 10, 1, 1); // 20 faces, area 10
+    AddStrip(soup, 0, 10, 2, 4, 4); // 4 faces, area 32
     const PreparedMesh m = coretest::Prepare(soup);
     const auto region = LargestConnectedRegion(m, All(m));
     int count = 0;
@@ -137,7 +138,8 @@ int main()
       count += region[f];
     }
     EXPECT(count == 4 && RegionArea(m, region) == 32.0,
-      "largest region: " << count << " faces, area " << RegionArea(m, region) << ", expected 4 and 32");
+      "largest region: " << count << " faces, area " << RegionArea(m, region)
+                         << ", expected 4 and 32");
     EXPECT(RegionArea(m, All(m)) == 42.0, "RegionArea of all faces " << RegionArea(m, All(m)));
 
     // Masking most of the big strip makes the small one the largest.
@@ -145,7 +147,8 @@ int main()
     for (int f = 20; f < 23; ++f)
       mask[f] = 0;
     const auto r2 = LargestConnectedRegion(m, mask);
-    EXPECT(RegionArea(m, r2) == 10.0 && r2[0] && !r2[23], "largest after masking: area " << RegionArea(m, r2));
+    EXPECT(RegionArea(m, r2) == 10.0 && r2[0] && !r2[23],
+      "largest after masking: area " << RegionArea(m, r2));
 
     // Empty mask: empty region.
     const auto none = LargestConnectedRegion(m, std::vector<char>(m.NumberOfFaces(), 0));
@@ -156,8 +159,8 @@ int main()
   // ---- Ties: equal areas -> the region with the lowest face id ----
   {
     TriangleMesh soup;
-    AddStrip(soup, 0, 0, 3, 1, 1);    // faces 0..5, area 3
-    AddStrip(soup, 0, 10, 3, 1, 1);   // faces 6..11, area 3 (a translated copy: exact)
+    AddStrip(soup, 0, 0, 3, 1, 1);  // faces 0..5, area 3
+    AddStrip(soup, 0, 10, 3, 1, 1); // faces 6..11, area 3 (a translated copy: exact)
     const PreparedMesh m = coretest::Prepare(soup);
     const auto region = LargestConnectedRegion(m, All(m));
     EXPECT(region[0] && !region[6], "tie: the region of face 0 should win");
@@ -170,8 +173,8 @@ int main()
   // ---- Proximity links join parts ----
   {
     TriangleMesh soup;
-    AddStrip(soup, 0, 0, 4, 1, 1);       // faces 0..7, points 0..9
-    AddStrip(soup, 4.001, 0, 3, 1, 1);   // faces 8..13, starts 0.001 after the first ends
+    AddStrip(soup, 0, 0, 4, 1, 1);     // faces 0..7, points 0..9
+    AddStrip(soup, 4.001, 0, 3, 1, 1); // faces 8..13, starts 0.001 after the first ends
     PreparedMesh m = coretest::Prepare(soup);
     REQUIRE(m.numberOfParts == 2, "linked strips: " << m.numberOfParts << " parts");
     std::vector<int> labels;
@@ -180,7 +183,8 @@ int main()
     EXPECT(!m.proximityLinks.empty(), "no proximity links between strips 0.001 apart");
     EXPECT(LabelConnectedRegions(m, All(m), labels) == 1, "linked strips must be 1 region");
     const auto region = LargestConnectedRegion(m, All(m));
-    EXPECT(std::abs(RegionArea(m, region) - 7.0) < 1e-12, "linked largest region area " << RegionArea(m, region));
+    EXPECT(std::abs(RegionArea(m, region) - 7.0) < 1e-12,
+      "linked largest region area " << RegionArea(m, region));
     // Deselect the faces touching the linked vertices on one side: no more connection.
     std::vector<char> mask = All(m);
     for (const auto& link : m.proximityLinks)

@@ -22,19 +22,22 @@ int main()
     for (double t = 1e-3; t <= 1e3; t *= 1.1)
     {
       const double d = t * sigma, h = 1e-5 * d;
-      const double derivative = (GemanMcClureCost(d + h, sigma) - GemanMcClureCost(d - h, sigma)) / (2 * h);
+      const double derivative =
+        (GemanMcClureCost(d + h, sigma) - GemanMcClureCost(d - h, sigma)) / (2 * h);
       const double fd = derivative / d;
       const double w = GemanMcClureWeight(d, sigma);
       // Relative to the weight scale at 0, 2/sigma^2 (rho' is tiny far out).
       worst = std::max(worst, std::abs(w - fd) * sigma * sigma / 2.0);
     }
-    EXPECT(worst < 1e-6, "sigma " << sigma << ": weight differs from finite-difference rho'/d by "
-                                  << worst << " (relative to 2/sigma^2)");
+    EXPECT(worst < 1e-6,
+      "sigma " << sigma << ": weight differs from finite-difference rho'/d by " << worst
+               << " (relative to 2/sigma^2)");
 
     // d = 0 and its neighbourhood.
     EXPECT(GemanMcClureCost(0.0, sigma) == 0.0, "rho(0) = " << GemanMcClureCost(0.0, sigma));
     const double w0 = GemanMcClureWeight(0.0, sigma);
-    EXPECT(std::abs(w0 * sigma * sigma / 2.0 - 1.0) < 1e-14, "w(0) = " << w0 << ", expected 2/sigma^2");
+    EXPECT(
+      std::abs(w0 * sigma * sigma / 2.0 - 1.0) < 1e-14, "w(0) = " << w0 << ", expected 2/sigma^2");
     const double small = 1e-4 * sigma;
     const double fdSmall =
       (GemanMcClureCost(2 * small, sigma) - GemanMcClureCost(0.0, sigma)) / (2 * small) / small;
@@ -45,7 +48,8 @@ int main()
     EXPECT(GemanMcClureCost(inf, sigma) == 1.0, "rho(inf) = " << GemanMcClureCost(inf, sigma));
     EXPECT(GemanMcClureWeight(inf, sigma) == 0.0, "w(inf) = " << GemanMcClureWeight(inf, sigma));
     const double big = 1e6 * sigma;
-    EXPECT(std::abs(GemanMcClureCost(big, sigma) - 1.0) < 1e-11 && GemanMcClureCost(big, sigma) <= 1.0,
+    EXPECT(
+      std::abs(GemanMcClureCost(big, sigma) - 1.0) < 1e-11 && GemanMcClureCost(big, sigma) <= 1.0,
       "rho(1e6 sigma) = " << GemanMcClureCost(big, sigma) << ", not close to its limit 1");
     EXPECT(GemanMcClureWeight(big, sigma) * sigma * sigma < 1e-23,
       "w(1e6 sigma) = " << GemanMcClureWeight(big, sigma) << ", not close to its limit 0");
@@ -63,7 +67,8 @@ int main()
       lastRho = rho;
       lastW = w;
     }
-    EXPECT(monotone, "sigma " << sigma << ": rho not strictly increasing or w not strictly decreasing");
+    EXPECT(
+      monotone, "sigma " << sigma << ": rho not strictly increasing or w not strictly decreasing");
     EXPECT(inRange, "sigma " << sigma << ": rho outside [0,1) or w not positive");
     EXPECT(even, "sigma " << sigma << ": rho or w not even in d");
 
