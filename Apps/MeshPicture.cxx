@@ -15,7 +15,11 @@
 #include <vtkRenderer.h>
 #include <vtkWindowToImageFilter.h>
 
+#include <vtkVariant.h>
+
+#include <algorithm>
 #include <cmath>
+#include <set>
 
 namespace foldingmeshes
 {
@@ -97,6 +101,91 @@ vtkSmartPointer<vtkRenderWindow> MakeSymmetryScene(vtkPolyData* labelledMesh,
   double dir[3];
   for (int k = 0; k < 3; ++k)
     dir[k] = (len > 0 ? side[k] / len : 0.0) + 0.6 * n[k] + 0.35 * up[k];
+  camera->SetPosition(center[0] + dir[0], center[1] + dir[1], center[2] + dir[2]);
+  camera->SetViewUp(up);
+  renderer->ResetCamera();
+  camera->Zoom(1.15);
+
+  vtkSmartPointer<vtkRenderWindow> window = vtkSmartPointer<vtkRenderWindow>::New();
+  window->SetOffScreenRendering(1);
+  window->SetMultiSamples(0);
+  window->SetSize(width, height);
+  window->AddRenderer(renderer);
+  return window;
+}
+
+vtkSmartPointer<vtkRenderWindow> MakeCategoryScene(vtkPolyData* mesh,
+  const char* cellArrayName,
+  int width,
+  int height)
+{
+  vtkNew<vtkPolyDataMapper> mapper;
+  mapper->SetInputData(mesh);
+  mapper->ScalarVisibilityOff();
+  vtkNew<vtkLookupTable> colors;
+  vtkDataArray* labels = cellArrayName ? mesh->GetCellData()->GetArray(cellArrayName) : nullptr;
+  if (labels && labels->GetNumberOfComponents() == 1)
+  {
+    // A qualitative palette (ColorBrewer Set1/Set3-like), cycled for many categories.
+    static const double palette[][3] = { { 0.89, 0.10, 0.11 }, { 0.22, 0.49, 0.72 },
+      { 0.30, 0.69, 0.29 }, { 0.60, 0.31, 0.64 }, { 1.00, 0.50, 0.00 }, { 0.90, 0.80, 0.20 },
+      { 0.65, 0.34, 0.16 }, { 0.97, 0.51, 0.75 }, { 0.40, 0.76, 0.65 }, { 0.55, 0.63, 0.80 },
+      { 0.65, 0.85, 0.33 }, { 0.17, 0.30, 0.45 } };
+    const int paletteSize = static_cast<int>(sizeof(palette) / sizeof(palette[0]));
+    std::set<long long> values;
+    for (vtkIdType i = 0; i < labels->GetNumberOfTuples(); ++i)
+      values.insert(static_cast<long long>(std::llround(labels->GetTuple1(i))));
+    colors->IndexedLookupOn();
+    colors->SetNumberOfTableValues(static_cast<vtkIdType>(std::max<size_t>(values.size(), 1)));
+    int index = 0, colour = 0;
+    for (long long v : values)
+    {
+      colors->SetAnnotation(vtkVariant(v), std::to_string(v));
+      if (v < 0)
+        colors->SetTableValue(index, 0.80, 0.80, 0.82, 1.0);
+      else
+      {
+        const double* c = palette[colour++ % paletteSize];
+        colors->SetTableValue(index, c[0], c[1], c[2], 1.0);
+      }
+      ++index;
+    }
+    colors->SetNanColor(0.80, 0.80, 0.82, 1.0);
+    mapper->SetLookupTable(colors);
+    mapper->SetScalarModeToUseCellFieldData();
+    mapper->SelectColorArray(cellArrayName);
+    mapper->UseLookupTableScalarRangeOn();
+    mapper->ScalarVisibilityOn();
+  }
+  vtkNew<vtkActor> actor;
+  actor->SetMapper(mapper);
+  actor->GetProperty()->SetInterpolationToFlat();
+  if (!mapper->GetScalarVisibility())
+    actor->GetProperty()->SetColor(0.62, 0.62, 0.64);
+
+  vtkNew<vtkRenderer> renderer;
+  renderer->AddActor(actor);
+  renderer->SetBackground(1.0, 1.0, 1.0);
+
+  double bounds[6];
+  mesh->GetBounds(bounds);
+  const double center[3] = {
+    0.5 * (bounds[0] + bounds[1]), 0.5 * (bounds[2] + bounds[3]), 0.5 * (bounds[4] + bounds[5])
+  };
+  // Up: +Y (the convention of most mesh files) unless Y is the mesh's thinnest extent, then
+  // +Z; view: mostly along the thinner horizontal axis, turned towards the longer one and
+  // slightly from above, so a side view of animals and furniture with visible depth.
+  const double extent[3] = { bounds[1] - bounds[0], bounds[3] - bounds[2], bounds[5] - bounds[4] };
+  const int upAxis = (extent[1] <= extent[0] && extent[1] <= extent[2]) ? 2 : 1;
+  const int h1 = 0, h2 = upAxis == 1 ? 2 : 1;
+  const int thin = extent[h1] <= extent[h2] ? h1 : h2, wide = thin == h1 ? h2 : h1;
+  double up[3] = { 0, 0, 0 }, dir[3] = { 0, 0, 0 };
+  up[upAxis] = 1.0;
+  dir[thin] = 1.0;
+  dir[wide] = 0.5;
+  dir[upAxis] = 0.35;
+  vtkCamera* camera = renderer->GetActiveCamera();
+  camera->SetFocalPoint(center);
   camera->SetPosition(center[0] + dir[0], center[1] + dir[1], center[2] + dir[2]);
   camera->SetViewUp(up);
   renderer->ResetCamera();

@@ -23,6 +23,16 @@ namespace foldingmeshes
 vtkSmartPointer<vtkRenderWindow> MakeSymmetryScene(
   vtkPolyData* labelledMesh, vtkPolyData* planeGlyph, int width, int height);
 
+/**
+ * A render window (off-screen, fixed size, no multisampling) showing `mesh` coloured by its
+ * integer cell array `cellArrayName` with a categorical lookup table (indexed lookup: every
+ * distinct value gets its own colour from a fixed palette; negative values, e.g. faces not
+ * stored in any leaf, are light grey). Without that array the mesh is plain grey. The camera
+ * looks obliquely at the mesh, up along +Y (+Z when Y is the thinnest extent).
+ */
+vtkSmartPointer<vtkRenderWindow> MakeCategoryScene(
+  vtkPolyData* mesh, const char* cellArrayName, int width, int height);
+
 /// Renders the scene to a PNG file. Returns false and sets error on failure.
 bool WritePicture(vtkRenderWindow* window, const std::string& path, std::string& error);
 }

@@ -26,13 +26,13 @@ enum class FoldingNodeKind
 enum class LeafReason
 {
   None,
-  MinimumFaces,        ///< fewer faces than FoldingTreeOptions::minimumFaces
-  MinimumArea,         ///< area below minimumAreaFraction of the original mesh
-  MaximumFolds,        ///< maximumFolds folds already on the path from the root
-  NoSymmetry,          ///< no meaningful symmetric region (see FoldingTreeBuilder.h)
-  MaximumDepth,        ///< maximumDepth reached (hard bound on the recursion)
-  DetectionFailed,     ///< the region could not be prepared for detection (e.g. zero area)
-  Aborted              ///< the progress callback asked to stop; the subtree was not refined
+  MinimumFaces,    ///< fewer faces than FoldingTreeOptions::minimumFaces
+  MinimumArea,     ///< area below minimumAreaFraction of the original mesh
+  MaximumFolds,    ///< maximumFolds folds already on the path from the root
+  NoSymmetry,      ///< no meaningful symmetric region (see FoldingTreeBuilder.h)
+  MaximumDepth,    ///< maximumDepth reached (hard bound on the recursion)
+  DetectionFailed, ///< the region could not be prepared for detection (e.g. zero area)
+  Aborted          ///< the progress callback asked to stop; the subtree was not refined
 };
 
 const char* ToString(FoldingNodeKind kind);
@@ -41,8 +41,8 @@ const char* ToString(LeafReason reason);
 /// The two per-level vertex flags of the tree (see FoldingLeafMesh).
 enum class LevelFlag
 {
-  Tear,  ///< on the segmentation boundary of the segmentation node at that depth
-  Plane  ///< on the plane of the folding node at that depth
+  Tear, ///< on the segmentation boundary of the segmentation node at that depth
+  Plane ///< on the plane of the folding node at that depth
 };
 
 /**
@@ -88,7 +88,7 @@ struct FoldingLeafMesh
   std::vector<int> originalFaceIds;  ///< input triangle id of each triangle
   std::vector<uint64_t> tearMask;
   std::vector<uint64_t> planeMask;
-  std::vector<char> projected; ///< 1: moved from the discarded side onto a fold plane
+  std::vector<char> projected;             ///< 1: moved from the discarded side onto a fold plane
   std::vector<MirroredFlag> mirroredFlags; ///< sorted by point, level, flag, mask
 
   int NumberOfPoints() const { return static_cast<int>(points.size()); }
@@ -111,7 +111,7 @@ struct FoldingNode
 
   // Folding nodes.
   Plane plane;             ///< normal points into the kept half
-  int discardedFaces = 0;  ///< faces of the region removed by the fold (mirrored away)
+  int discardedFaces = 0;  ///< faces removed by the fold (mirrored away, or collapsed)
   int projectedPoints = 0; ///< points moved from the discarded side onto the plane
   std::vector<int> discardedOriginalFaces; ///< sorted input ids of the removed faces
 
@@ -136,7 +136,7 @@ struct FoldingTree
   int numberOfOriginalPoints = 0; ///< input points
   int numberOfDroppedFaces = 0;   ///< input triangles with a repeated vertex (not stored)
   double originalArea = 0.0;
-  double diagonal = 0.0;          ///< bounding-box diagonal of the input
+  double diagonal = 0.0; ///< bounding-box diagonal of the input
   double rootEpsilon = 0.0;
   double buildSeconds = 0.0;
   bool aborted = false;

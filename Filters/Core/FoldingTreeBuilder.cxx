@@ -78,12 +78,41 @@ WorkMesh Extract(const WorkMesh& w, const std::vector<char>& mask)
   return out;
 }
 
+/// The faces `faces` (increasing ids), with their points (renumbered in increasing old order).
+WorkMesh ExtractFaces(const WorkMesh& w, const std::vector<int>& faces)
+{
+  std::vector<int> points;
+  for (int f : faces)
+    points.insert(points.end(), w.triangles[f].begin(), w.triangles[f].end());
+  std::sort(points.begin(), points.end());
+  points.erase(std::unique(points.begin(), points.end()), points.end());
+  WorkMesh out;
+  for (int v : points)
+  {
+    out.points.push_back(w.points[v]);
+    out.pointOrig.push_back(w.pointOrig[v]);
+    out.tear.push_back(w.tear[v]);
+    out.onPlane.push_back(w.onPlane[v]);
+    out.projected.push_back(w.projected[v]);
+    out.mirrorFlags.push_back(w.mirrorFlags[v]);
+  }
+  auto id = [&](int v)
+  { return static_cast<int>(std::lower_bound(points.begin(), points.end(), v) - points.begin()); };
+  for (int f : faces)
+  {
+    const Triangle& t = w.triangles[f];
+    out.triangles.push_back({ id(t[0]), id(t[1]), id(t[2]) });
+    out.faceOrig.push_back(w.faceOrig[f]);
+  }
+  return out;
+}
+
 /**
  * Welds points with identical coordinates (their flags are OR-ed; the lowest point keeps
  * its original id), drops faces with a repeated vertex and unused points. Returns the
- * number of dropped faces.
+ * original ids of the dropped faces.
  */
-int WeldAndDropCollapsed(WorkMesh& w)
+std::vector<int> WeldAndDropCollapsed(WorkMesh& w)
 {
   const int n = w.NumberOfPoints();
   std::vector<int> order(n);
@@ -123,7 +152,7 @@ int WeldAndDropCollapsed(WorkMesh& w)
       into.erase(std::unique(into.begin(), into.end()), into.end());
     }
   std::vector<char> keep(w.triangles.size(), 1);
-  int dropped = 0;
+  std::vector<int> dropped;
   for (size_t f = 0; f < w.triangles.size(); ++f)
   {
     Triangle& t = w.triangles[f];
@@ -132,35 +161,54 @@ int WeldAndDropCollapsed(WorkMesh& w)
     if (t[0] == t[1] || t[1] == t[2] || t[0] == t[2])
     {
       keep[f] = 0;
-      ++dropped;
+      dropped.push_back(w.faceOrig[f]);
     }
   }
   w = Extract(w, keep);
   return dropped;
 }
 
-/// Closest point to x on the intersection of the planes (least squares if inconsistent).
-Vec3 ProjectOntoPlanes(const Vec3& x, const std::vector<Plane>& planes)
+/**
+ * The point of the intersection of the planes closest to x (planes[0] is the new fold plane,
+ * the others ancestors' planes x already lies on). Planes nearly dependent on the others
+ * (e.g. three planes through almost the same line) are treated as redundant (relative
+ * singular-value threshold 1e-3); if the result is inconsistent - it misses a plane by more
+ * than `tolerance`, or moves x much farther than the distances to the planes - x is only
+ * projected onto planes[0] and false is returned (the caller then drops the ancestors'
+ * flags the point no longer satisfies).
+ */
+bool ProjectOntoPlanes(Vec3& x, const std::vector<Plane>& planes, double tolerance)
 {
   if (planes.size() == 1)
-    return planes[0].Project(x);
+  {
+    x = planes[0].Project(x);
+    return true;
+  }
   Eigen::MatrixXd A(planes.size(), 3);
   Eigen::VectorXd r(planes.size());
+  double largest = 0.0;
   for (size_t k = 0; k < planes.size(); ++k)
   {
     A.row(k) = planes[k].normal.transpose();
     r[k] = -planes[k].SignedDistance(x);
+    largest = std::max(largest, std::abs(r[k]));
   }
   Eigen::CompleteOrthogonalDecomposition<Eigen::MatrixXd> cod(A);
-  cod.setThreshold(1e-8);
+  cod.setThreshold(1e-3);
   const Eigen::Vector3d delta = cod.solve(r);
-  return x + delta;
+  const Vec3 y = x + delta;
+  bool consistent = delta.allFinite() && delta.norm() <= 4.0 * largest + tolerance;
+  for (const Plane& p : planes)
+    consistent = consistent && std::abs(p.SignedDistance(y)) <= tolerance;
+  x = consistent ? y : planes[0].Project(x);
+  return consistent;
 }
 
 class Builder
 {
 public:
-  Builder(const FoldingTreeOptions& options, const std::vector<Vec3>& inputNormals,
+  Builder(const FoldingTreeOptions& options,
+    const std::vector<Vec3>& inputNormals,
     FoldingTree& tree)
     : Options(options)
     , InputNormals(inputNormals)
@@ -259,7 +307,9 @@ private:
 
   /// S minus the faces whose mirrored vertices are not within eps of S (see the header).
   /// The faces of S as a prepared mesh (face order kept) with the region's vertex normals.
-  static bool PrepareSubset(const WorkMesh& w, const PreparedMesh& pm, const std::vector<char>& S,
+  static bool PrepareSubset(const WorkMesh& w,
+    const PreparedMesh& pm,
+    const std::vector<char>& S,
     PreparedMesh& spm)
   {
     WorkMesh sub = Extract(w, S);
@@ -291,8 +341,11 @@ private:
    * outliers. The plane with the lowest area-weighted residual is returned (the input plane
    * unless a step improves it).
    */
-  Plane Polish(const WorkMesh& w, const PreparedMesh& pm, const std::vector<char>& S,
-    const Plane& plane, double eps) const
+  Plane Polish(const WorkMesh& w,
+    const PreparedMesh& pm,
+    const std::vector<char>& S,
+    const Plane& plane,
+    double eps) const
   {
     PreparedMesh spm;
     if (!PrepareSubset(w, pm, S, spm))
@@ -331,8 +384,11 @@ private:
     return CanonicalPlane(best, plane.origin);
   }
 
-  std::vector<char> Trim(const WorkMesh& w, const PreparedMesh& pm, std::vector<char> S,
-    const Plane& plane, double eps) const
+  std::vector<char> Trim(const WorkMesh& w,
+    const PreparedMesh& pm,
+    std::vector<char> S,
+    const Plane& plane,
+    double eps) const
   {
     for (int iteration = 0; iteration < 8; ++iteration)
     {
@@ -379,9 +435,19 @@ private:
   /// Builds the subtree of region w; returns its node index.
   int Build(WorkMesh w, int parent, int depth, double eps, int folds, uint64_t pathFolds)
   {
-    const int dropped = WeldAndDropCollapsed(w);
+    const std::vector<int> dropped = WeldAndDropCollapsed(w);
     if (parent < 0)
-      this->Tree.numberOfDroppedFaces = dropped;
+      this->Tree.numberOfDroppedFaces = static_cast<int>(dropped.size());
+    else if (!dropped.empty())
+    {
+      // Only projections onto a fold plane make points coincide below the root: the faces
+      // they collapse count as removed by that fold.
+      FoldingNode& fold = this->Tree.nodes[parent];
+      fold.discardedOriginalFaces.insert(
+        fold.discardedOriginalFaces.end(), dropped.begin(), dropped.end());
+      std::sort(fold.discardedOriginalFaces.begin(), fold.discardedOriginalFaces.end());
+      fold.discardedFaces = static_cast<int>(fold.discardedOriginalFaces.size());
+    }
     const int index = this->NewNode(parent, depth, eps, folds, w);
     const FoldingTreeOptions& O = this->Options;
     const int nf = w.NumberOfFaces();
@@ -508,13 +574,12 @@ private:
     WorkMesh ws = Extract(w, S);
     std::vector<WorkMesh> regions(n);
     {
-      std::vector<char> mask(nf);
+      std::vector<std::vector<int>> facesOf(n);
+      for (int f = 0; f < nf; ++f)
+        if (labels[f] >= 0)
+          facesOf[labels[f]].push_back(f);
       for (int r = 0; r < n; ++r)
-      {
-        for (int f = 0; f < nf; ++f)
-          mask[f] = labels[f] == r;
-        regions[r] = Extract(w, mask);
-      }
+        regions[r] = ExtractFaces(w, facesOf[r]);
     }
     // fold(S): a folding node one level down, then the remaining components.
     {
@@ -573,8 +638,11 @@ private:
    * with approximately symmetric tessellations the two sides of the seam need not have the
    * same number of vertices; the zipper of the unfolder then closes the seam.
    */
-  void TransferDiscardedTears(WorkMesh& w, const std::vector<char>& used, const Plane& plane,
-    int depth, double eps) const
+  void TransferDiscardedTears(WorkMesh& w,
+    const std::vector<char>& used,
+    const Plane& plane,
+    int depth,
+    double eps) const
   {
     const uint64_t bit = uint64_t(1) << depth;
     std::vector<int> lost;
@@ -642,8 +710,11 @@ private:
    * earlier folds. Plane flags of removed vertices are not transferred: this computes the
    * flags from the geometry the unfolder will produce.
    */
-  void FlagMirroredFoldLines(WorkMesh& w, const std::vector<char>& keep, const Plane& plane,
-    int depth, uint64_t pathFolds) const
+  void FlagMirroredFoldLines(WorkMesh& w,
+    const std::vector<char>& keep,
+    const Plane& plane,
+    int depth,
+    uint64_t pathFolds) const
   {
     std::vector<int> ancestors; // increasing depth
     for (int d = 0; d < depth; ++d)
@@ -673,9 +744,8 @@ private:
       {
         const int a = ancestors[i];
         const Plane& pa = this->PlaneAtDepth[a];
-        const double tolerance =
-          std::max(this->Options.planeSnapFraction * this->EpsilonAtDepth[a],
-            1e-12 * this->Tree.diagonal);
+        const double tolerance = std::max(
+          this->Options.planeSnapFraction * this->EpsilonAtDepth[a], 1e-12 * this->Tree.diagonal);
         // Folds between a and this fold, deepest first.
         std::vector<int> between(ancestors.begin() + i + 1, ancestors.end());
         std::reverse(between.begin(), between.end());
@@ -701,8 +771,8 @@ private:
   }
 
   /// Turns node `index` (region w) into a folding node and builds the kept half below it.
-  void Fold(int index, WorkMesh w, Plane plane, int depth, double eps,
-    int folds, uint64_t pathFolds)
+  void
+  Fold(int index, WorkMesh w, Plane plane, int depth, double eps, int folds, uint64_t pathFolds)
   {
     const FoldingTreeOptions& O = this->Options;
     const int nf = w.NumberOfFaces();
@@ -753,7 +823,12 @@ private:
       for (int d = 0; d < depth; ++d)
         if ((w.onPlane[v] & (uint64_t(1) << d)) && (pathFolds & (uint64_t(1) << d)))
           constraints.push_back(this->PlaneAtDepth[d]);
-      w.points[v] = ProjectOntoPlanes(w.points[v], constraints);
+      const double tolerance = 1e-9 * this->Tree.diagonal;
+      if (!ProjectOntoPlanes(w.points[v], constraints, tolerance))
+        for (int d = 0; d < depth; ++d)
+          if ((w.onPlane[v] & (uint64_t(1) << d)) &&
+            std::abs(this->PlaneAtDepth[d].SignedDistance(w.points[v])) > tolerance)
+            w.onPlane[v] &= ~(uint64_t(1) << d);
       w.onPlane[v] |= bit;
       if (side[v] < 0)
       {

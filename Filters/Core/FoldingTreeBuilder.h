@@ -1,4 +1,15 @@
 // Folding tree construction (the paper's section 4.2), in preorder, on plain triangle meshes.
+//
+// Choices beyond the paper (all documented on the options below):
+// - "no meaningful symmetry" is a stop criterion of its own (the paper's three criteria
+//   never stop on an asymmetric region), and re-detecting an ancestor's fold plane is not
+//   meaningful;
+// - S is trimmed to its mirror-consistent part and the plane polished on S before folding,
+//   so that S' U reflect(S') reproduces S (the unfolding error stays within epsilon and the
+//   seam with the remaining faces matches);
+// - vertices within a small snap distance of the plane count as on it (fold lines close);
+// - the tear stack is exact through nested folds (MirroredFlag), not just inherited;
+// - a hard depth bound (64 levels: the per-vertex flags are uint64 bit sets).
 #ifndef foldingmeshes_FoldingTreeBuilder_h
 #define foldingmeshes_FoldingTreeBuilder_h
 
@@ -14,8 +25,8 @@ namespace foldingmeshes
 /// Which half of a symmetric region a fold keeps.
 enum class KeepSide
 {
-  MoreFaces,  ///< the paper's choice: preserves detail
-  FewerFaces  ///< the paper's alternative: minimises storage
+  MoreFaces, ///< the paper's choice: preserves detail
+  FewerFaces ///< the paper's alternative: minimises storage
 };
 
 struct FoldingTreeOptions
@@ -93,9 +104,14 @@ struct FoldingTreeOptions
  *    p (a face lying in the plane; the unfolder does not duplicate it); all other faces are
  *    removed. Vertices of kept faces that are on p or on the discarded side are projected
  *    onto p - and onto every ancestor fold plane they lie on (closest point of the
- *    intersection), so earlier fold lines stay closed - and flagged in planeMask.
- *    Faces collapsed by the projection (two vertices welded) are dropped. The kept half is
- *    built recursively with epsilon / 2 and one more fold; it may fold again.
+ *    intersection, unless that is ill-conditioned: planes through nearly the same line;
+ *    then onto p only, dropping the flags it no longer satisfies) - and flagged in
+ *    planeMask. Faces collapsed by the projection (two vertices welded) count as removed
+ *    (FoldingNode::discardedOriginalFaces). Removed tear vertices are recorded on the kept
+ *    boundary vertices that mirror onto them, and kept boundary vertices whose mirror
+ *    copies (through this fold and any ancestor folds below a given ancestor) land on that
+ *    ancestor's fold plane get the plane flag for that copy (MirroredFlag). The kept half
+ *    is built recursively with epsilon / 2 and one more fold; it may fold again.
  * Original ids: each leaf point knows the input point it comes from (for points welded by
  * PrepareMesh, the first input point of the group), each leaf triangle its input triangle.
  * Input triangles with a repeated vertex index are dropped and counted

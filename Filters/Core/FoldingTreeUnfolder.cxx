@@ -5,8 +5,8 @@
 #include <cmath>
 #include <limits>
 #include <map>
-#include <set>
 #include <numeric>
+#include <set>
 #include <unordered_map>
 
 namespace foldingmeshes
@@ -280,15 +280,15 @@ private:
     this->Result.unmatchedTearVertices += seam.unmatchedTearVertices;
     this->Result.gapEdges += seam.gapEdges;
     this->Result.gapLength += seam.gapLength;
-    this->Result.filledFaces += seam.filledFaces;
   }
 
   /// Drops the entries of a processed level and flag (code = 2 * level + flag).
   static void Consume(Piece& piece, int code)
   {
     for (TearList& t : piece.tear)
-      t.erase(std::remove_if(t.begin(), t.end(), [&](const std::pair<int, uint64_t>& e)
-                { return e.first == code; }),
+      t.erase(
+        std::remove_if(
+          t.begin(), t.end(), [&](const std::pair<int, uint64_t>& e) { return e.first == code; }),
         t.end());
   }
 
@@ -316,8 +316,12 @@ private:
    * points are tear vertices, within `tol` (the vertex moves half way to the edge). Returns
    * the number of vertices inserted.
    */
-  static int Zip(Piece& out, std::vector<int>& faceChild, std::vector<std::vector<int>>& children,
-    std::vector<char>& matched, const std::vector<char>& isTear, double tol,
+  static int Zip(Piece& out,
+    std::vector<int>& faceChild,
+    std::vector<std::vector<int>>& children,
+    std::vector<char>& matched,
+    const std::vector<char>& isTear,
+    double tol,
     std::vector<double>& rough)
   {
     using Edge = std::pair<int, int>;
@@ -420,8 +424,11 @@ private:
    * fold line or the input's own border fail that test and stay open. New triangles take the
    * attributes of the face across their first loop edge.
    */
-  static void FillSeamGaps(Piece& out, std::vector<int>& faceChild,
-    const std::vector<std::vector<int>>& children, const std::vector<char>& isTear, double tol,
+  static void FillSeamGaps(Piece& out,
+    std::vector<int>& faceChild,
+    const std::vector<std::vector<int>>& children,
+    const std::vector<char>& isTear,
+    double tol,
     SeamReport& seam)
   {
     constexpr int maximumGapLoop = 256;
@@ -520,8 +527,8 @@ private:
             continue;
           bool other = false;
           for (int c : children[loop[j]])
-            other = other ||
-              !std::binary_search(children[loop[i]].begin(), children[loop[i]].end(), c);
+            other =
+              other || !std::binary_search(children[loop[i]].begin(), children[loop[i]].end(), c);
           near = other && (out.points[loop[i]] - out.points[loop[j]]).norm() <= reach;
         }
         narrow = near;
@@ -557,8 +564,9 @@ private:
         ++uses[{ std::min(a, c), std::max(a, c) }];
         poly.erase(poly.begin() + (best + 1) % m);
       }
-      std::array<int, 3> last{ poly[0], poly.size() > 1 ? poly[1] : -1,
-        poly.size() > 2 ? poly[2] : -1 };
+      std::array<int, 3> last{
+        poly[0], poly.size() > 1 ? poly[1] : -1, poly.size() > 2 ? poly[2] : -1
+      };
       std::sort(last.begin(), last.end());
       if (poly.size() != 3 || faceSets.count(last))
       {
@@ -589,7 +597,9 @@ private:
     }
   }
 
-  void Stitch(const FoldingNode& node, Piece& piece, const std::vector<int>& childOf,
+  void Stitch(const FoldingNode& node,
+    Piece& piece,
+    const std::vector<int>& childOf,
     SeamReport& seam)
   {
     const int level = node.depth;
@@ -738,7 +748,8 @@ private:
         out.tear.push_back(piece.tear[v]);
         out.onPlane.push_back(piece.onPlane[v]);
         auto it = childrenOfRoot.find(v);
-        outChildren.push_back(it != childrenOfRoot.end() ? it->second : std::vector<int>{ childOf[v] });
+        outChildren.push_back(
+          it != childrenOfRoot.end() ? it->second : std::vector<int>{ childOf[v] });
         outMatched.push_back(count[v] >= 2);
       }
     std::vector<int> faceChild;
@@ -883,7 +894,6 @@ private:
     this->Result.unmatchedTearVertices += seam.unmatchedTearVertices;
     this->Result.gapEdges += seam.gapEdges;
     this->Result.gapLength += seam.gapLength;
-    this->Result.filledFaces += seam.filledFaces;
   }
 
   const FoldingTree& Tree;
@@ -929,6 +939,8 @@ bool UnfoldFoldingTree(const FoldingTree& tree,
       result.nonManifoldEdges += e.second > 2;
     }
   }
+  result.filledFaces =
+    static_cast<int>(std::count(result.faceFilled.begin(), result.faceFilled.end(), char(1)));
   result.faceLeaf.resize(result.triangles.size());
   result.faceMirrored.resize(result.triangles.size());
   for (size_t f = 0; f < result.triangles.size(); ++f)

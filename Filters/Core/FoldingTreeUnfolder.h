@@ -73,16 +73,16 @@ struct SeamReport
 {
   int node = -1;
   int depth = 0;
-  int tearVertices = 0;      ///< vertices carrying this level's tear bit before stitching
-  int stitchedVertices = 0;  ///< of those, merged with a partner of another child or zipped
-  int zippedVertices = 0;    ///< of those, inserted into an open seam edge of another child
+  int tearVertices = 0;     ///< vertices carrying this level's tear bit before stitching
+  int stitchedVertices = 0; ///< of those, merged with a partner of another child or zipped
+  int zippedVertices = 0;   ///< of those, inserted into an open seam edge of another child
   int unmatchedTearVertices = 0;
-  int gapEdges = 0;          ///< boundary edges left between two tear vertices of this level
+  int gapEdges = 0; ///< boundary edges left between two tear vertices of this level
   double gapLength = 0.0;
-  int filledLoops = 0;        ///< seam gaps closed by new triangles
-  int filledFaces = 0;        ///< triangles added for them
+  int filledLoops = 0; ///< seam gaps closed by new triangles
+  int filledFaces = 0; ///< triangles added for them (before copies made above)
   int smoothedVertices = 0;
-  int droppedFaces = 0;      ///< faces collapsed or duplicated by the merge
+  int droppedFaces = 0;               ///< faces collapsed or duplicated by the merge
   double maximumStitchDistance = 0.0; ///< largest distance of a merged vertex to its cluster mean
 };
 
@@ -95,9 +95,11 @@ struct UnfoldedMesh
   std::vector<int> pointCopy;        ///< index into copies (a merged point: the lowest one)
   std::vector<char> pointMirrored;   ///< the copy was reflected an odd number of times
 
-  std::vector<int> faceOriginalIds; ///< input triangle id
-  std::vector<int> faceLeaf;        ///< node index of the leaf the face comes from
-  std::vector<int> faceCopy;        ///< index into copies
+  /// Input triangle id of the stored (leaf) triangle copied: a mirrored copy carries the id
+  /// of the kept face it reflects (the tree does not store which face was discarded).
+  std::vector<int> faceOriginalIds;
+  std::vector<int> faceLeaf; ///< node index of the leaf the face comes from
+  std::vector<int> faceCopy; ///< index into copies
   std::vector<char> faceMirrored;
   /// 1: a triangle added to fill a seam gap (not a copy of a leaf triangle; its ids and copy
   /// are those of a neighbouring face, for attributes).
@@ -106,14 +108,14 @@ struct UnfoldedMesh
   std::vector<UnfoldCopy> copies;
 
   // Report.
-  int planeMergedVertices = 0; ///< vertices shared by a copy and its mirror image (fold lines)
-  int droppedMirrorFaces = 0;  ///< faces lying in a fold plane, not duplicated
+  int planeMergedVertices = 0;   ///< vertices shared by a copy and its mirror image (fold lines)
+  int droppedMirrorFaces = 0;    ///< faces lying in a fold plane, not duplicated
   std::vector<SeamReport> seams; ///< one per segmentation node (postorder)
   int stitchedVertices = 0;      ///< sums over the seams
   int unmatchedTearVertices = 0;
   int gapEdges = 0;
   double gapLength = 0.0;
-  int filledFaces = 0;
+  int filledFaces = 0; ///< faces of the result added by seam gap filling (faceFilled)
   /// The final mesh: edges used by one triangle, and by more than two.
   int openEdges = 0;
   int nonManifoldEdges = 0;
@@ -127,16 +129,20 @@ struct UnfoldedMesh
  * unfold(T) by a postorder traversal (paper §4.3):
  * - leaf: its mesh (one copy);
  * - folding node: unfold(child) U reflect(unfold(child), p). The reflected triangles are
- *   reversed, so the result stays consistently oriented. Vertices flagged on p (planeMask
- *   bit of the node's depth) or within planeTolerance of it are not duplicated: the mirrored
- *   triangles use them, and they are projected exactly onto p, so the fold line is closed.
- *   Triangles whose three vertices are on p are not duplicated.
+ *   reversed, so the result stays consistently oriented. Vertices on p are not duplicated:
+ *   the mirrored triangles use them, and they are projected exactly onto p, so the fold
+ *   line is closed. "On p": flagged (planeMask bit of the node's depth, or a MirroredFlag
+ *   whose reflections have all been applied to this copy), within planeTolerance, or an end
+ *   point of an open edge lying within foldLineToleranceScale * epsilon of p. Triangles
+ *   whose three vertices are on p are not duplicated. Per-vertex flags follow the copies
+ *   exactly (MirroredFlag): a mirrored copy does not inherit its original's flags.
  * - segmentation node: the union of the children; then (stitch on) each vertex carrying the
  *   node's tear bit proposes the nearest tear vertex of another child within the tolerance;
  *   proposals are accepted by increasing distance (union-find) unless they would merge two
  *   vertices of the same child; each cluster becomes one vertex at its mean; collapsed and
  *   duplicate triangles are dropped; tear vertices still alone are zipped into open seam
- *   edges of other children (UnfoldOptions::zipper); the seam is smoothed. Tear vertices
+ *   edges of other children (UnfoldOptions::zipper); small seam loops are filled
+ *   (fillSeamGaps); the seam is smoothed. Tear vertices
  *   left unmatched and the boundary edges between tear vertices are reported per node
  *   (SeamReport) and in total - never hidden.
  * Returns false with `error` set when the tree is invalid (FoldingTree::Validate).

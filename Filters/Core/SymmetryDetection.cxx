@@ -72,6 +72,16 @@ public:
     Iterate(run, DistanceMetric::Fine, false, iterations);
   }
 
+  /// Robust only: fine iterations with sigma = epsilon instead of 3 epsilon, so that the
+  /// vertices that are symmetric within epsilon dominate the plane step rather than the
+  /// near-symmetric surroundings the 3-epsilon support lets in.
+  void Polish(Run& run, int iterations) const
+  {
+    this->SigmaScale = 1.0;
+    Iterate(run, DistanceMetric::Fine, false, iterations);
+    this->SigmaScale = 3.0;
+  }
+
   /// A run starting at `plane` with all faces in the support (or `from`'s state).
   void Seed(Run& run, const Plane& plane, const Run* from) const
   {
@@ -129,7 +139,7 @@ private:
   {
     const double floor = 3.0 * Options.epsilon;
     if (metric == DistanceMetric::Fine)
-      return floor;
+      return SigmaScale * Options.epsilon;
     // Median of the finite distances of the support's vertices (a vertex without a
     // compatible face in the coarse metric has no distance to take a median of).
     std::vector<double> values;
@@ -288,6 +298,7 @@ private:
   const PreparedMesh& Mesh;
   const SymmetryOptions& Options;
   MirrorDistance Distances;
+  mutable double SigmaScale = 3.0; ///< fine sigma in units of epsilon (the paper: 3)
 };
 
 bool SamePlane(const Plane& a, const Plane& b, double epsilon)
@@ -297,17 +308,20 @@ bool SamePlane(const Plane& a, const Plane& b, double epsilon)
 
 /// A region whose distances stay well below epsilon (the "symmetry found" residual rule):
 /// an accidental region spreads its distances over [0, epsilon).
-bool Tight(const Run& r, double epsilon)
+/// Tight = the documented SymmetryFound rule holds for the run's region.
+bool Tight(const Run& r, const SymmetryOptions& options, double totalArea)
 {
-  return r.regionArea > 0.0 && r.rms <= FoundResidualRatio * epsilon;
+  return r.regionArea > 0.0 && r.regionArea >= options.minimumSymmetricAreaFraction * totalArea &&
+    r.rms <= FoundResidualRatio * options.epsilon;
 }
 
 /// Better final result: a tight region beats a loose one; then the larger region; within
 /// 2% of the mesh area, the lower residual.
-bool Better(const Run& a, const Run& b, double totalArea, double epsilon)
+bool Better(const Run& a, const Run& b, double totalArea, const SymmetryOptions& options)
 {
-  if (Tight(a, epsilon) != Tight(b, epsilon))
-    return Tight(a, epsilon);
+  const bool ta = Tight(a, options, totalArea), tb = Tight(b, options, totalArea);
+  if (ta != tb)
+    return ta;
   if (std::abs(a.regionArea - b.regionArea) > 0.02 * totalArea)
     return a.regionArea > b.regionArea;
   return a.rms < b.rms;
@@ -382,7 +396,7 @@ SymmetryResult DetectOnSimplified(const PreparedMesh& mesh, const SymmetryOption
     return DetectSymmetryOnFullMesh(mesh, options);
   int bestRun = 0;
   for (size_t k = 1; k < runs.size(); ++k)
-    if (Better(runs[k], runs[bestRun], mesh.totalArea, options.epsilon))
+    if (Better(runs[k], runs[bestRun], mesh.totalArea, options))
       bestRun = static_cast<int>(k);
   for (size_t k = 0; k < runs.size(); ++k)
     result.finalists.push_back(runs[k].plane);
@@ -496,7 +510,7 @@ SymmetryResult DetectSymmetryOnFullMesh(const PreparedMesh& mesh, const Symmetry
     // Finish the best three distinct probes that could still win.
     std::stable_sort(probes.begin(),
       probes.end(),
-      [&](size_t a, size_t b) { return Better(runs[a], runs[b], mesh.totalArea, options.epsilon); });
+      [&](size_t a, size_t b) { return Better(runs[a], runs[b], mesh.totalArea, options); });
     std::vector<size_t>& chosen = finished;
     for (size_t k : probes)
     {
@@ -511,6 +525,7 @@ SymmetryResult DetectSymmetryOnFullMesh(const PreparedMesh& mesh, const Symmetry
     {
       Run& run = runs[chosen[i]];
       refiner.Fine(run, options.maximumIterations);
+      refiner.Polish(run, options.maximumIterations);
       refiner.Score(run, options.epsilon);
       trace("final", chosen[i], run);
       if (!report(0.7 + 0.3 * static_cast<double>(i + 1) / chosen.size()))
@@ -535,7 +550,7 @@ SymmetryResult DetectSymmetryOnFullMesh(const PreparedMesh& mesh, const Symmetry
     for (size_t k = 0; k < runs.size(); ++k)
       finished.push_back(k);
   std::stable_sort(finished.begin(), finished.end(),
-    [&](size_t a, size_t b) { return Better(runs[a], runs[b], mesh.totalArea, options.epsilon); });
+    [&](size_t a, size_t b) { return Better(runs[a], runs[b], mesh.totalArea, options); });
   for (size_t k : finished)
     result.finalists.push_back(runs[k].plane);
   Finish(mesh, options, refiner, runs[finished[0]], result);

@@ -5,6 +5,8 @@
 #include <vtkIdTypeArray.h>
 #include <vtkPoints.h>
 
+#include <Eigen/Eigenvalues>
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -89,63 +91,186 @@ Vec3 MirrorX(const Vec3& v)
   return { -v.x(), v.y(), v.z() };
 }
 
-// ---- analytic star-shaped surfaces: p(d) = r(d) * semi .* d for unit directions d ----
-struct Bump
+// ---- analytic closed surfaces: unit directions d -> points ----
+double Gaussian(double x)
 {
-  Vec3 c;
-  double a, w2;
+  return std::exp(-x * x);
+}
+double SmoothStep(double x)
+{
+  x = std::clamp(x, 0.0, 1.0);
+  return x * x * (3 - 2 * x);
+}
+
+// Bilateral "creature", mirror plane x = 0: a long body along y with a big head and a narrowing
+// snout towards +y and a thin tail curling up towards -y, a flat belly (-z), a dorsal sail (+z),
+// four stubby legs, ears, eyes and random bumps, all in mirror pairs. A sphere direction d is
+// read as an axial coordinate t = d.y and a unit section direction w = (d.x, d.z) / |(d.x, d.z)|;
+// t maps monotonically to the spine position Y in [y0, y1] (a table that spreads the samples
+// by area^0.7, so the thin tail keeps enough of them) and the point is
+//   ( R(Y) a(w) m(Y, w) w.x,  Y,  zc(Y) + R(Y) (b(w) m(Y, w) w.z + crest(Y, w)) )
+// with the profile R (zero at both tips), the section shape a, b (flat belly, wider below), the
+// bumps m (pairs at (+-sx, sz): they depend on |w.x| only) and the sail. Every factor is even in
+// w.x and the sign of x comes from w.x alone: the map commutes exactly with x -> -x and sends
+// d.x = 0 exactly to x = 0.
+struct Creature
+{
+  struct PairBump
+  {
+    double y, wy, sx, sz, wa, amp; // axial centre and width, section direction, width, amplitude
+  };
+  double y0 = -1.3, y1 = 1.15;
+  // R(Y) = g(Y) sqrt((Y - y0)(y1 - Y)), g = tail + body G((Y - yb) / wb) + head G((Y - yh) / wh)
+  double tail = 0.12, body = 0.30, yb = -0.15, wb = 0.45, head = 0.26, yh = 0.78, wh = 0.22;
+  double tailLift = 0.35, yTail = -0.55, headLift = 0.12;
+  double crestAmp = 0.18, yCrest = -0.2, wCrest = 0.5, crestWidth = 0.25;
+  std::vector<PairBump> bumps;
+  std::vector<double> tableT; // t at the uniform spine samples y0 + (y1 - y0) k / K
+  static constexpr int K = 2048;
+
+  double Profile(double Y) const
+  {
+    const double trunk = Gaussian((Y - yb) / wb) * (1 - 0.3 * std::tanh((Y - yb) / 0.3)); // pear
+    const double g = tail + body * trunk + head * Gaussian((Y - yh) / wh);
+    return g * std::sqrt(std::max(0.0, (Y - y0) * (y1 - Y)));
+  }
+  double SpineZ(double Y) const
+  {
+    const double s = std::max(0.0, (yTail - Y) / (yTail - y0));
+    return tailLift * s * s + headLift * SmoothStep((Y - 0.35) / 0.4);
+  }
+  void BuildTable()
+  {
+    std::vector<double> W(K + 1, 0.0);
+    const double dy = (y1 - y0) / K;
+    double prevR = Profile(y0);
+    for (int k = 0; k < K; ++k)
+    {
+      const double R = Profile(y0 + dy * (k + 1));
+      const double len = std::sqrt(dy * dy + (R - prevR) * (R - prevR));
+      W[k + 1] = W[k] + std::pow(0.5 * (R + prevR) * len / dy, 0.7) * dy;
+      prevR = R;
+    }
+    tableT.resize(K + 1);
+    for (int k = 0; k <= K; ++k)
+    {
+      tableT[k] = k == K ? 1.0 : -1 + 2 * W[k] / W[K];
+    }
+  }
+  double SpineY(double t) const
+  {
+    const auto it = std::upper_bound(tableT.begin(), tableT.end(), t);
+    const int k = std::clamp(int(it - tableT.begin()) - 1, 0, K - 1);
+    const double f = std::clamp((t - tableT[k]) / (tableT[k + 1] - tableT[k]), 0.0, 1.0);
+    return std::min(y1, y0 + (y1 - y0) * (k + f) / K);
+  }
+  double SpineT(double Y) const // inverse of SpineY
+  {
+    const double x = std::clamp((Y - y0) / (y1 - y0), 0.0, 1.0) * K;
+    const int k = std::min(int(x), K - 1);
+    return tableT[k] + (x - k) * (tableT[k + 1] - tableT[k]);
+  }
+  Vec3 operator()(const Vec3& d) const
+  {
+    const double Y = SpineY(std::clamp(d.y(), -1.0, 1.0));
+    const double rho = std::sqrt(d.x() * d.x() + d.z() * d.z());
+    if (rho == 0)
+    {
+      return { 0.0, Y, SpineZ(Y) };
+    }
+    const double wx = d.x() / rho, wz = d.z() / rho, ax = std::abs(wx);
+    double m = 1;
+    for (const PairBump& b : bumps)
+    {
+      const double dz2 = (wz - b.sz) * (wz - b.sz);
+      double s = std::exp(-((ax - b.sx) * (ax - b.sx) + dz2) / (b.wa * b.wa));
+      if (b.sx > 0)
+      {
+        s += std::exp(-((ax + b.sx) * (ax + b.sx) + dz2) / (b.wa * b.wa));
+      }
+      m += b.amp * Gaussian((Y - b.y) / b.wy) * s;
+    }
+    // wide and flat hips, narrower and taller shoulders, wider below, flat belly, domed back
+    const double ta = 0.2 * std::tanh((Y - yb) / 0.35);
+    const double a = 1.25 * (1 - ta) - 0.12 * wz;
+    const double bz = (0.75 + 0.3 * std::tanh(2.5 * wz)) * (1 + ta);
+    const double up = std::max(wz, 0.0);
+    const double crest = crestAmp * Gaussian((Y - yCrest) / wCrest) *
+      (1 + 0.8 * std::tanh((Y - yCrest) / wCrest)) * Gaussian(ax / crestWidth) * up * up;
+    const double R = Profile(Y);
+    return { R * a * m * wx, Y, SpineZ(Y) + R * (bz * m * wz + crest) };
+  }
 };
-struct Shape
+
+Creature CreatureShape(unsigned seed)
 {
+  auto g = Rng(seed, 101);
+  Creature s;
+  s.body = Uniform(g, 0.28, 0.33);
+  s.head = Uniform(g, 0.24, 0.29);
+  s.yh = Uniform(g, 0.74, 0.82);
+  s.tailLift = Uniform(g, 0.25, 0.45);
+  s.headLift = Uniform(g, 0.08, 0.16);
+  s.crestAmp = Uniform(g, 0.15, 0.21);
+  s.yCrest = Uniform(g, -0.35, 0.0);
+  const double leg = Uniform(g, 0.48, 0.62);
+  s.bumps.push_back({ Uniform(g, -0.6, -0.45), 0.2, 0.75, -0.66, 0.5, leg });         // hind legs
+  s.bumps.push_back({ Uniform(g, 0.1, 0.22), 0.17, 0.75, -0.66, 0.45, 0.6 * leg });   // fore legs
+  s.bumps.push_back({ s.yh - 0.08, 0.12, 0.5, 0.85, 0.4, Uniform(g, 0.25, 0.32) });   // ears
+  s.bumps.push_back({ s.yh + 0.06, 0.07, 0.78, 0.5, 0.3, Uniform(g, 0.15, 0.22) });   // eyes
+  for (int k = 0; k < 5; ++k) // irregular flank bumps
+  {
+    const double psi = Uniform(g, 0.35, 2.6);
+    s.bumps.push_back({ Uniform(g, -0.9, 0.6), Uniform(g, 0.08, 0.18), std::sin(psi),
+      std::cos(psi), Uniform(g, 0.3, 0.5), Uniform(g, 0.15, 0.3) });
+  }
+  s.bumps.push_back({ Uniform(g, -0.9, -0.7), 0.1, 0.0, 1.0, 0.4, 0.25 }); // a hump on the tail
+  s.BuildTable();
+  return s;
+}
+
+// Lumpy blob without any symmetry, as a radial function: an ellipsoid with random linear and
+// quadratic terms, 7 big lopsided lobes (25-55% of the radius; anisotropic footprints skewed
+// along an oblique direction, so not even a lobe has a mirror plane of its own) and a rough
+// skin of 20 random waves (wavelength ~0.7 radius, 8% amplitude each): smooth shapes have
+// large near-symmetric patches at a tolerance of 2% of the diagonal, this one has none.
+struct Lumpy
+{
+  struct Lobe
+  {
+    Vec3 c, e1, e2, e3; // centre direction, footprint axes, skew direction (tangent at c)
+    double a, w1, w2, skew;
+  };
   Vec3 semi{ 1, 1, 1 };
   Vec3 lin = Vec3::Zero();
   Eigen::Matrix3d quad = Eigen::Matrix3d::Zero();
-  std::vector<Bump> bumps;
+  std::vector<Lobe> lobes;
+  std::vector<Eigen::Vector4d> waves; // direction * frequency, phase: amplitude waveAmp
+  double waveAmp = 0;
   Vec3 operator()(const Vec3& d) const
   {
     double r = 1 + lin.dot(d) + d.dot(quad * d);
-    for (const Bump& b : bumps)
+    for (const Eigen::Vector4d& w : waves)
     {
-      r += b.a * std::exp(-(d - b.c).squaredNorm() / b.w2);
+      r += waveAmp * std::cos(w.head<3>().dot(d) + w[3]);
     }
+    for (const Lobe& L : lobes)
+    {
+      const Vec3 u = d - L.c;
+      const double x = u.dot(L.e1) / L.w1, y = u.dot(L.e2) / L.w2, z = u.dot(L.c) / L.w1;
+      r += L.a * std::exp(-(x * x + y * y + z * z)) * (1 + L.skew * std::tanh(u.dot(L.e3) / L.w1));
+    }
+    r = 0.25 + 0.25 * std::log1p(std::exp(4 * (r - 0.25))); // smoothly kept above 0.25
     return r * semi.cwiseProduct(d);
   }
 };
 
-// Bilateral creature: bumps in mirror pairs about x = 0, a head and bumps centred on the plane.
-Shape CreatureShape(unsigned seed)
-{
-  auto g = Rng(seed, 101);
-  Shape s;
-  s.semi = { 0.75, 1.2, 0.9 };
-  s.bumps.push_back({ Vec3(0, 0.88, 0.48).normalized(), 0.35, 0.2 }); // head
-  for (int k = 0; k < 5; ++k)
-  {
-    Vec3 c = RandomUnit(g);
-    c.x() = std::copysign(std::max(std::abs(c.x()), 0.25), c.x());
-    c.normalize();
-    const double a = Uniform(g, 0.08, 0.25);
-    const double w = Uniform(g, 0.35, 0.6);
-    s.bumps.push_back({ c, a, w * w });
-    s.bumps.push_back({ MirrorX(c), a, w * w });
-  }
-  for (int k = 0; k < 2; ++k)
-  {
-    const double ang = 2 * kPi * Uniform(g);
-    const double a = Uniform(g, 0.1, 0.2);
-    const double w = Uniform(g, 0.35, 0.55);
-    s.bumps.push_back({ Vec3(0, std::cos(ang), std::sin(ang)), a, w * w });
-  }
-  return s;
-}
-
-// Lumpy blob without any symmetry: random linear + quadratic terms and bumps.
-Shape LumpyShape(unsigned seed)
+Lumpy LumpyShape(unsigned seed)
 {
   auto g = Rng(seed, 202);
-  Shape s;
-  s.semi = { 1.1, 0.9, 0.8 };
-  s.lin = 0.08 * RandomUnit(g);
+  Lumpy s;
+  s.semi = { Uniform(g, 0.95, 1.1), Uniform(g, 0.85, 1.0), Uniform(g, 0.8, 0.95) };
+  s.lin = 0.1 * RandomUnit(g);
   for (int i = 0; i < 3; ++i)
   {
     for (int j = i; j < 3; ++j)
@@ -153,12 +278,25 @@ Shape LumpyShape(unsigned seed)
       s.quad(i, j) = s.quad(j, i) = Uniform(g, -0.1, 0.1);
     }
   }
-  for (int k = 0; k < 8; ++k)
+  s.waveAmp = 0.08;
+  for (int k = 0; k < 20; ++k)
   {
-    const Vec3 c = RandomUnit(g);
-    const double a = Uniform(g, 0.1, 0.3);
-    const double w = Uniform(g, 0.35, 0.6);
-    s.bumps.push_back({ c, a, w * w });
+    const Vec3 v = RandomUnit(g) * Uniform(g, 7.0, 11.0);
+    s.waves.push_back(Eigen::Vector4d(v.x(), v.y(), v.z(), 2 * kPi * Uniform(g)));
+  }
+  for (int k = 0; k < 7; ++k)
+  {
+    Lumpy::Lobe L;
+    L.c = RandomUnit(g);
+    L.e1 = RandomUnit(g).cross(L.c).normalized();
+    L.e2 = L.c.cross(L.e1);
+    const double gamma = Uniform(g, 0.3, 1.2);
+    L.e3 = std::cos(gamma) * L.e1 + std::sin(gamma) * L.e2;
+    L.a = Uniform(g, 0.3, 0.55);
+    L.w1 = Uniform(g, 0.3, 0.45);
+    L.w2 = L.w1 * Uniform(g, 0.5, 1.0);
+    L.skew = (Uniform(g) < 0.5 ? -1 : 1) * Uniform(g, 0.4, 0.8);
+    s.lobes.push_back(L);
   }
   return s;
 }
@@ -393,19 +531,26 @@ std::vector<Vec2> RingTable(int q)
   return r;
 }
 
-// ---- tubes (horns, necks) in a local frame whose plane x = 0 contains a planar centreline ----
+// ---- tubes (horns, necks) in a local frame: centreline from 0, leaving along +z ----
 struct TubeSpec
 {
   std::function<Vec3(double)> center; // local centreline, t in [0, 1], c(0) = 0, c'(0) along +z
-  std::function<Vec2(double)> radii;  // section semi-axes along the section's x and y axes
-  int quarter = 2;                    // 4 * quarter vertices per ring
-  double spacing = 0.1;               // target edge length
-  bool symmetricDiagonals = false;    // triangulate mirror-symmetrically about local x = 0
+  std::function<Vec2(double)> radii;  // section semi-axes along the section's X and Y axes
+  // Optional general section: the offset (along X, Y) of the ring point of unit direction dir
+  // (a RingTable entry) at t; replaces (radii.x dir.x, radii.y dir.y). radii(1) still sets the
+  // length of the end cap.
+  std::function<Vec2(double, const Vec2&)> section;
+  int quarter = 2;                 // 4 * quarter vertices per ring
+  double spacing = 0.1;            // target edge length
+  bool symmetricDiagonals = false; // triangulate mirror-symmetrically about local x = 0
 };
 
 // Builds the tube (open at t = 0, closed by a half-ellipsoid cap and a tip vertex) in world
-// coordinates o + E * local. Returns the mesh; ring0 receives the ids of the first ring, whose
-// edges the tube uses as ring0[k+1] -> ring0[k].
+// coordinates o + E * local. The section frame (X, Y) is parallel-transported along the
+// centreline from X = local x at t = 0 (so a centreline in the plane x = 0 keeps X = (1, 0, 0)
+// exactly, and a section offset odd in x along X and even along Y gives a tube exactly
+// symmetric about local x = 0). Returns the mesh; ring0 receives the ids of the first ring,
+// whose edges the tube uses as ring0[k+1] -> ring0[k].
 TriMesh BuildTube(
   const TubeSpec& s, const Vec3& o, const Eigen::Matrix3d& E, char sym, std::vector<Id>& ring0)
 {
@@ -418,31 +563,29 @@ TriMesh BuildTube(
   struct Section
   {
     Vec3 c, X, Y;
-    Vec2 r;
+    double t, scale;
   };
   std::vector<Section> sec;
-  auto frame = [&](double t)
+  Vec3 X = Vec3::UnitX(), T = Vec3::UnitZ();
+  auto transport = [&](double t)
   {
     const double dt = 1e-5, t0 = std::max(0.0, t - dt), t1 = std::min(1.0, t + dt);
-    const Vec3 T = (s.center(t1) - s.center(t0)).normalized();
-    const Vec3 X = (Vec3::UnitX() - T.x() * T).normalized();
-    return std::array<Vec3, 3>{ T, X, T.cross(X) };
+    T = (s.center(t1) - s.center(t0)).normalized();
+    X = (X - X.dot(T) * T).normalized();
   };
   for (int j = 0; j <= rings; ++j)
   {
     const double t = double(j) / rings;
-    const auto F = frame(t);
-    sec.push_back({ s.center(t), F[1], F[2], s.radii(t) });
+    transport(t);
+    sec.push_back({ s.center(t), X, T.cross(X), t, 1.0 });
   }
-  const auto F1 = frame(1.0);
-  const Vec3 c1 = s.center(1.0);
-  const Vec2 r1 = s.radii(1.0);
-  const double capLen = r1.minCoeff();
+  const Vec3 c1 = s.center(1.0), T1 = T, X1 = X;
+  const double capLen = s.radii(1.0).minCoeff();
   const int capRings = std::max(1, int(std::lround(0.5 * kPi * capLen / s.spacing)) - 1);
   for (int i = 1; i <= capRings; ++i)
   {
     const double th = 0.5 * kPi * i / (capRings + 1);
-    sec.push_back({ c1 + capLen * std::sin(th) * F1[0], F1[1], F1[2], std::cos(th) * r1 });
+    sec.push_back({ c1 + capLen * std::sin(th) * T1, X1, T1.cross(X1), 1.0, std::cos(th) });
   }
   const std::vector<Vec2> table = RingTable(s.quarter);
   const size_t M = table.size();
@@ -450,14 +593,17 @@ TriMesh BuildTube(
   std::vector<std::vector<Id>> ring(sec.size());
   for (size_t j = 0; j < sec.size(); ++j)
   {
+    const Section& S = sec[j];
+    const Vec2 r = s.radii(S.t);
     for (size_t k = 0; k < M; ++k)
     {
-      const Section& S = sec[j];
-      const Vec3 local = S.c + (S.r.x() * table[k].x()) * S.X + (S.r.y() * table[k].y()) * S.Y;
+      const Vec2 off = s.section ? s.section(S.t, table[k])
+                                 : Vec2(r.x() * table[k].x(), r.y() * table[k].y());
+      const Vec3 local = S.c + (S.scale * off.x()) * S.X + (S.scale * off.y()) * S.Y;
       ring[j].push_back(m.Add(o + E * local));
     }
   }
-  const Id tip = m.Add(o + E * (c1 + capLen * F1[0]));
+  const Id tip = m.Add(o + E * (c1 + capLen * T1));
   for (size_t j = 0; j + 1 < sec.size(); ++j)
   {
     const auto& R = ring[j];
@@ -554,18 +700,29 @@ bool CutHole(const TriMesh& m, const Vec3& P, double rho, double h,
       }
     }
   }
-  for (bool changed = true; changed;) // fill notches: kept faces with 2+ edges on the hole
+  // fill notches: kept faces with 2+ edges on the hole, or (smoother loops) with an edge on the
+  // hole and the third vertex on it too
+  for (bool changed = true; changed;)
   {
     changed = false;
+    std::unordered_map<Id, char> onHole;
     for (size_t f : cand)
     {
-      int n = 0;
+      for (int e = 0; rem[f] && e < 3; ++e)
+      {
+        onHole[m.t[f][e]] = 1;
+      }
+    }
+    for (size_t f : cand)
+    {
+      int n = 0, v = 0;
       for (int e = 0; e < 3; ++e)
       {
         const long g = twin(f, e);
         n += g >= 0 && rem[g];
+        v += onHole.count(m.t[f][e]) > 0;
       }
-      if (!rem[f] && allowed[f] && n >= 2)
+      if (!rem[f] && allowed[f] && (n >= 2 || (n == 1 && v == 3)))
       {
         rem[f] = changed = true;
       }
@@ -618,6 +775,18 @@ bool CutHole(const TriMesh& m, const Vec3& P, double rho, double h,
     hole.center += m.p[u];
   }
   hole.center /= double(hole.loop.size());
+  {
+    // the normal of the loop's least-squares plane (oriented as the removed faces): the loop
+    // then winds around it as evenly as it can
+    Eigen::Matrix3d C = Eigen::Matrix3d::Zero();
+    for (Id u : hole.loop)
+    {
+      C += (m.p[u] - hole.center) * (m.p[u] - hole.center).transpose();
+    }
+    const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> es(C);
+    const Vec3 fit = es.eigenvectors().col(0);
+    hole.normal = fit.dot(hole.normal) < 0 ? Vec3(-fit) : fit;
+  }
   return true;
 }
 
@@ -691,8 +860,45 @@ TriMesh Weld(const TriMesh& body, const Hole& hole, TriMesh tube, std::vector<Id
     }
   }
   std::rotate(loop.begin(), loop.begin() + long(start), loop.end());
-  Zip(loop, ArcParams(out, loop), ring0, ArcParams(out, ring0),
-    [&](Id a, Id b, Id d) { out.Face(a, b, d, 0); });
+  // Pair the two loops by the angle around the normal when both wind monotonically around it
+  // (no crossing collar triangles on a wiggly hole), else by arc length.
+  const Vec3 e0 = flat(ring0[0]), e1 = n.cross(e0);
+  auto angles = [&](const std::vector<Id>& l, std::vector<double>& t)
+  {
+    t.assign(l.size(), 0.0);
+    const double sense = LoopSense(out, l, c, n) > 0 ? 1 : -1;
+    double prev = 0;
+    for (size_t k = 0; k < l.size(); ++k)
+    {
+      const Vec3 d = flat(l[k]);
+      double a = sense * std::atan2(d.dot(e1), d.dot(e0));
+      while (a < prev - kPi)
+      {
+        a += 2 * kPi;
+      }
+      while (a > prev + kPi)
+      {
+        a -= 2 * kPi;
+      }
+      prev = a;
+      t[k] = k > 0 ? std::max(t[k - 1], a) : a; // monotone envelope of the winding angle
+    }
+    const double a0 = t[0];
+    for (double& x : t)
+    {
+      x = (x - a0) / (2 * kPi);
+    }
+    const Vec3 d0 = flat(l[0]), dn = flat(l.back()); // the loop winds once around c
+    const double last = sense * std::atan2(d0.cross(dn).dot(n), d0.dot(dn));
+    return t.size() > 2 && t.back() < 1 && std::abs(prev - a0 - (2 * kPi + last)) < 1e-6;
+  };
+  std::vector<double> tl, tr;
+  if (!(angles(loop, tl) && angles(ring0, tr)))
+  {
+    tl = ArcParams(out, loop);
+    tr = ArcParams(out, ring0);
+  }
+  Zip(loop, tl, ring0, tr, [&](Id a, Id b, Id d) { out.Face(a, b, d, 0); });
   std::vector<Id> map(out.p.size(), -1);
   TriMesh packed;
   for (size_t f = 0; f < out.t.size(); ++f)
@@ -729,6 +935,67 @@ double EdgeLength(const TriMesh& m)
 int OctaResolution(double faces)
 {
   return std::max(2, int(std::lround(std::sqrt(faces / 8))));
+}
+
+// Height of the hole loop above its centre along the hole normal: tubes start above it, so the
+// collar does not dip into a bumpy body.
+double LoopLift(const TriMesh& m, const Hole& hole)
+{
+  double lift = 0;
+  for (Id v : hole.loop)
+  {
+    lift = std::max(lift, (m.p[v] - hole.center).dot(hole.normal));
+  }
+  return lift;
+}
+
+// Of 8 turns about the hole normal of the frame E, the one whose tube spec (length L) keeps
+// farthest from the body's vertices beyond arc length `skip` from its start at o; with `cost`,
+// the one of least cost among those keeping at least `minGap` away (if any).
+Eigen::Matrix3d ClearestFrame(const TriMesh& body, const Eigen::Matrix3d& E, const TubeSpec& s,
+  const Vec3& o, double L, double skip,
+  const std::function<double(const Eigen::Matrix3d&)>& cost = {}, double minGap = 0)
+{
+  const size_t stride = std::max<size_t>(1, body.p.size() / 3000);
+  const std::vector<Vec2> dirs = RingTable(4);
+  const double u0 = std::min(0.9, skip / L);
+  Eigen::Matrix3d best = E, cheapest = E;
+  double bestGap = -1e300, bestCost = 1e300;
+  for (int k = 0; k < 8; ++k)
+  {
+    const double b = 2 * kPi * k / 8;
+    Eigen::Matrix3d R = E;
+    R.col(0) = std::cos(b) * E.col(0) + std::sin(b) * E.col(1);
+    R.col(1) = E.col(2).cross(R.col(0));
+    double gap = 1e300;
+    for (int j = 0; j <= 32; ++j)
+    {
+      const double u = u0 + (1 - u0) * j / 32;
+      const Vec3 c = o + R * s.center(u);
+      const Vec2 r = s.radii(u);
+      double rs = r.maxCoeff();
+      for (const Vec2& d : dirs)
+      {
+        rs = std::max(rs, s.section ? s.section(u, d).norm() : 0.0);
+      }
+      for (size_t i = 0; i < body.p.size(); i += stride)
+      {
+        gap = std::min(gap, (body.p[i] - c).norm() - rs);
+      }
+    }
+    if (gap > bestGap)
+    {
+      bestGap = gap;
+      best = R;
+    }
+    const double c = cost && gap >= minGap ? cost(R) : 1e300;
+    if (c < bestCost)
+    {
+      bestCost = c;
+      cheapest = R;
+    }
+  }
+  return bestCost < 1e300 ? cheapest : best;
 }
 
 // Welds tubes of growing length until the area fraction of faces with sym == which reaches target.
@@ -855,13 +1122,13 @@ void ForEachTriangle(vtkPolyData* pd, Fn fn)
 
 ProceduralMesh MakeBilateralBlob(int approxFaces, unsigned seed)
 {
-  const Shape s = CreatureShape(seed);
+  const Creature s = CreatureShape(seed);
   return Finish(OctaSphere(OctaResolution(approxFaces), s, true, 1), { kPlaneX });
 }
 
 ProceduralMesh MakeBilateralBlobDifferentTessellation(int approxFaces, unsigned seed)
 {
-  const Shape s = CreatureShape(seed);
+  const Creature s = CreatureShape(seed);
   // faces ~ 4 n^2 + 4 (1.3 n)^2
   const int n = std::max(2, int(std::lround(std::sqrt(approxFaces / 10.76))));
   const int m = std::max(n + 1, int(std::lround(1.3 * n)));
@@ -940,14 +1207,14 @@ ProceduralMesh MakeBlobWithAsymmetricPart(
   int approxFaces, double attachmentAreaFraction, unsigned seed)
 {
   const double f = std::clamp(attachmentAreaFraction, 0.02, 0.7);
-  const Shape s = CreatureShape(seed);
+  const Creature s = CreatureShape(seed);
   TriMesh body = OctaSphere(OctaResolution(approxFaces * (1 - f)), s, true, 1);
   const size_t half = body.t.size() / 2;
   const double area = MeshArea(body), h = EdgeLength(body);
   const double rb = std::sqrt(area / (4 * kPi));
   auto g = Rng(seed, 303);
-  const double dy = Uniform(g, -0.4, 0.4);
-  const double dz = Uniform(g, -0.2, 0.6);
+  const double dy = Uniform(g, -0.4, 0.1); // not too close to the head
+  const double dz = Uniform(g, 0.3, 0.8); // upper flank: clear of the legs
   const Vec3 P = s(Vec3(0.8, dy, dz).normalized());
   std::vector<char> allowed(body.t.size(), 0);
   for (size_t t = 0; t < half; ++t)
@@ -961,29 +1228,80 @@ ProceduralMesh MakeBlobWithAsymmetricPart(
   {
     body.sym[t + half] = !hole.removed[t];
   }
-  // twisted (non-planar), tapering horn: no symmetry of its own
+  // The horn has no symmetry, not even locally: after a short bend its centreline winds along a
+  // helix (a non-planar corkscrew: a mirror image has the other handedness), its elliptic
+  // sections (axes ratio ~1.9) twist by up to 1.5 pi, it swells, tapers and carries one-sided
+  // bumps. Lengths are absolute where a short horn could otherwise fold: the bend, the twist
+  // rate, the ellipticity ramp and the bump widths scale with the largest section radius rmax.
   const Vec3 N = hole.normal;
   const Vec3 ey = (RandomUnit(g).cross(N)).normalized(), ex = ey.cross(N);
   Eigen::Matrix3d E;
   E << ex, ey, N;
-  const double beta = Uniform(g) < 0.5 ? -0.3 : 0.3;
   const double r0 = std::max(0.6 * rho, rho - h);
   const int q = std::max(2, int(std::lround(2 * kPi * r0 / (4 * h))));
+  // helix of radius a and pitch p (per turn) around N: radius of curvature
+  // (a^2 + (p / 2 pi)^2) / a ~ 1.1 rmax, coils 3.2 rmax apart
+  const double rmax = 2 * r0; // with the ellipse and the bumps
+  const double a = 0.7 * rmax * Uniform(g, 0.9, 1.1), pitch = 3.2 * rmax;
+  const double tilt = std::atan(2 * kPi * a / pitch), azimuth = 2 * kPi * Uniform(g);
+  const double hand = Uniform(g) < 0.5 ? -1 : 1;
+  const double twistMax = (Uniform(g) < 0.5 ? -1 : 1) * Uniform(g, 1.1, 1.5) * kPi;
+  std::array<Vec3, 4> bumps; // (position along the horn, section angle, amplitude)
+  for (Vec3& b : bumps)
+  {
+    b = Vec3(Uniform(g, 0.2, 0.9), 2 * kPi * Uniform(g), Uniform(g, 0.2, 0.35));
+  }
+  auto radius = [=](double u)
+  { return r0 * (1 - 0.45 * u) * (1 + 0.07 * std::sin(7 * u)) * (1 + 0.4 * std::sin(kPi * u)); };
   auto spec = [=](double L)
   {
+    const double bend = std::min(1.0, std::max(0.15, 2.5 * rmax * tilt / L)); // in u
+    const double turns = hand * 2 * kPi * L * std::cos(tilt) / pitch;         // radians
+    const double twist = std::copysign(std::min(std::abs(twistMax), L / rmax), twistMax);
+    const double oval = std::min(1.0, std::max(0.12, rmax / L)); // ellipticity ramp, in u
+    const double bw = std::max(0.07, 0.6 * rmax / L);            // bump width, in u
+    const double tiltL = std::min(tilt, bend * L / (2.25 * rmax)); // bend radius >= 1.5 rmax
+    auto tangent = [=](double v)
+    {
+      const double th = tiltL * SmoothStep(v / bend), ph = azimuth + turns * v;
+      return Vec3(std::sin(th) * std::cos(ph), std::sin(th) * std::sin(ph), std::cos(th));
+    };
     TubeSpec t;
-    t.center = [=](double u) { return Vec3(beta * L * u * u * u, 0.5 * L * u * u, L * u); };
+    t.center = [=](double u) // L * integral of the unit tangent from 0 to u (Simpson)
+    {
+      const int n = 16;
+      Vec3 c = tangent(0) + tangent(u);
+      for (int k = 1; k < n; ++k)
+      {
+        c += (k % 2 ? 4.0 : 2.0) * tangent(u * k / n);
+      }
+      return Vec3(c * (L * u / (3 * n)));
+    };
     t.radii = [=](double u)
     {
-      const double a = r0 * (1 - 0.45 * u) * (1 + 0.07 * std::sin(7 * u));
-      return Vec2(a, a * (1 + 0.15 * u));
+      const double e = SmoothStep(u / oval);
+      return Vec2(radius(u) * (1 + 0.35 * e), radius(u) * (1 - 0.3 * e));
+    };
+    t.section = [=](double u, const Vec2& dir)
+    {
+      double m = 1;
+      for (const Vec3& b : bumps)
+      {
+        const Vec2 c(std::cos(b.y()), std::sin(b.y()));
+        m += b.z() * Gaussian((u - b.x()) / bw) * std::exp(-(dir - c).squaredNorm() / 0.16);
+      }
+      const double e = SmoothStep(u / oval), al = twist * u;
+      const Vec2 p = radius(u) * m * Vec2((1 + 0.35 * e) * dir.x(), (1 - 0.3 * e) * dir.y());
+      return Vec2(std::cos(al) * p.x() - std::sin(al) * p.y(), std::sin(al) * p.x() + std::cos(al) * p.y());
     };
     t.quarter = q;
     t.spacing = h;
     return t;
   };
   const double L0 = (f * area / (1 - f)) / (2 * kPi * 0.7 * r0);
-  const TriMesh m = WeldToFraction(body, hole, spec, hole.center + h * N, E, 0, 0, f, L0);
+  const Vec3 origin = hole.center + (h + LoopLift(body, hole) + 0.3 * rho) * N;
+  E = ClearestFrame(body, E, spec(L0), origin, L0, 2 * rmax);
+  const TriMesh m = WeldToFraction(body, hole, spec, origin, E, 0, 0, f, L0);
   return Finish(m, { kPlaneX });
 }
 
@@ -991,44 +1309,144 @@ ProceduralMesh MakeAsymmetricBodyWithSymmetricPart(
   int approxFaces, double symmetricAreaFraction, unsigned seed)
 {
   const double f = std::clamp(symmetricAreaFraction, 0.02, 0.6);
-  const Shape s = LumpyShape(seed);
+  const Lumpy s = LumpyShape(seed);
   const TriMesh body = OctaSphere(OctaResolution(approxFaces * (1 - f)), s, false, 0);
   const double area = MeshArea(body), h = EdgeLength(body);
   const double rb = std::sqrt(area / (4 * kPi));
   auto g = Rng(seed, 404);
-  const Vec3 P = s(RandomUnit(g));
-  const double rho = std::max(1.5 * h, rb * std::clamp(0.18 + 0.4 * f, 0.18, 0.4));
+  const double rho = std::max(1.5 * h, rb * std::clamp(0.22 + 0.5 * f, 0.22, 0.45));
+  // The attachment point and the part's plane. The body near the part must not look symmetric
+  // about that plane (else the part's symmetric region runs on into the body and planes a few
+  // degrees off gain more of it than they lose): of 12 random surface points with an open view
+  // along their normal (no crevice between lumps), the one whose surroundings (within 3 hole
+  // radii) have the fewest points mirroring radially within 2% of the body's size onto the
+  // surface, for the best of 8 planes containing the normal.
+  std::vector<Vec3> sample(1500);
+  double lo = 1e300, hi = -1e300;
+  for (Vec3& x : sample)
+  {
+    x = s(RandomUnit(g));
+    lo = std::min(lo, x.minCoeff());
+    hi = std::max(hi, x.maxCoeff());
+  }
+  const double tol = 0.02 * std::sqrt(3.0) * (hi - lo);
+  auto normalAt = [&](const Vec3& d)
+  {
+    const Vec3 t1 = d.unitOrthogonal(), t2 = d.cross(t1);
+    const Vec3 n = (s((d + 1e-4 * t1).normalized()) - s((d - 1e-4 * t1).normalized()))
+                     .cross(s((d + 1e-4 * t2).normalized()) - s((d - 1e-4 * t2).normalized()))
+                     .normalized();
+    return n.dot(d) > 0 ? n : Vec3(-n);
+  };
+  // local samples around the direction d, and how many mirror onto the surface about the plane
+  // through Q with normal m
+  auto localSamples = [&](const Vec3& d, double radius)
+  {
+    const Vec3 t1 = d.unitOrthogonal(), t2 = d.cross(t1);
+    std::vector<Vec3> out;
+    for (int i = -10; i <= 10; ++i)
+    {
+      for (int j = -10; j <= 10; ++j)
+      {
+        if (i * i + j * j <= 100)
+        {
+          out.push_back(s((d + radius * (i * t1 + j * t2) / 10).normalized()));
+        }
+      }
+    }
+    return out;
+  };
+  auto mirrored = [&](const std::vector<Vec3>& pts, const Vec3& Q, const Vec3& m)
+  {
+    int n = 0;
+    for (const Vec3& x : pts)
+    {
+      const Vec3 y = x - 2 * m.dot(x - Q) * m;
+      n += std::abs(y.norm() - s(y.normalized()).norm()) < tol;
+    }
+    return double(n) / double(pts.size());
+  };
+  Vec3 P = Vec3::Zero(), Pdir = Vec3::UnitX();
+  double bestScore = 1e300;
+  for (int k = 0; k < 12; ++k)
+  {
+    const Vec3 d = RandomUnit(g), Q = s(d), out = normalAt(d);
+    double elevation = -1;
+    for (const Vec3& x : sample)
+    {
+      const double r = (x - Q).norm();
+      elevation = r > 1.5 * rho ? std::max(elevation, (x - Q).dot(out) / r) : elevation;
+    }
+    const std::vector<Vec3> near = localSamples(d, 3 * rho / Q.norm());
+    const Vec3 e1 = out.unitOrthogonal(), e2 = out.cross(e1);
+    double sym = 1;
+    for (int j = 0; j < 8; ++j)
+    {
+      const double b = kPi * j / 8;
+      sym = std::min(sym, mirrored(near, Q, std::cos(b) * e1 + std::sin(b) * e2));
+    }
+    const double score = sym + (elevation > 0.0 ? 10 + elevation : 0.0);
+    if (score < bestScore)
+    {
+      bestScore = score;
+      P = Q;
+      Pdir = d;
+    }
+  }
   const Hole hole = CutHoleRobust(body, P, rho, h, std::vector<char>(body.t.size(), 1));
-  // neck bent in its local plane x = 0, elliptic swelling sections, half-ellipsoid cap
+  // A "head on a short neck" with one mirror plane, local x = 0: a short neck flaring into a
+  // head three times as wide, closed by a half-ellipsoid dome, bent towards local +y. Its
+  // sections are flattened and egg-shaped (fuller towards -y) with a high crest on the -y side
+  // and a pair of eyes. Fat, so a plane through its axis other than x = 0 misses the crest,
+  // and flaring, so no plane across it maps it onto itself (a tube of constant width would
+  // look symmetric about both at a tolerance of 2% of the diagonal).
   const Vec3 N = hole.normal;
   const Vec3 ey = (RandomUnit(g).cross(N)).normalized(), ex = ey.cross(N);
   Eigen::Matrix3d E;
   E << ex, ey, N;
   const double r0 = std::max(0.6 * rho, rho - h);
   const int q = std::max(2, int(std::lround(2 * kPi * r0 / (4 * h))));
+  // the head's radius: at most that of a half-sphere of the part's whole area (small parts)
+  const double head = std::min(2.85 * r0, std::sqrt(f * area / (1 - f) / (2 * kPi)));
+  auto radius = [=](double u) { return 0.85 * r0 + (head - 0.85 * r0) * std::pow(u, 1.3); };
+  // sections: odd in dir.x along X and even along Y, so exactly symmetric about local x = 0
+  auto symmetric = [=](double u, const Vec2& dir)
+  {
+    const double ax = std::abs(dir.x()), down = std::max(-dir.y(), 0.0);
+    const double e2 = (dir.y() - 0.6) * (dir.y() - 0.6);
+    const double eyes = 0.25 * Gaussian((u - 0.8) / 0.07) *
+      (std::exp(-((ax - 0.8) * (ax - 0.8) + e2) / 0.12) +
+        std::exp(-((ax + 0.8) * (ax + 0.8) + e2) / 0.12));
+    const double crest = 0.8 * Gaussian((u - 0.6) / 0.3) * Gaussian(ax / 0.35) * down * down;
+    const double R = radius(u), m = 1 + eyes;
+    return Vec2(R * m * dir.x(), R * (0.6 * m * dir.y() * (1 - 0.4 * dir.y()) - crest));
+  };
   auto spec = [=](double L)
   {
+    const double bend = std::min(0.6, L / (9.5 * r0)); // radius of curvature >= 1.5 head radii
     TubeSpec t;
-    t.center = [=](double u) { return Vec3(0, 0.35 * L * u * u, L * u); };
-    t.radii = [=](double u)
-    {
-      const double a = r0 * (1 + 0.5 * std::sin(0.8 * kPi * u));
-      return Vec2(a, 0.75 * a);
-    };
+    t.center = [=](double u) { return Vec3(0, bend * L * u * u, L * u); };
+    t.radii = [=](double u) { return Vec2(radius(u), 0.6 * radius(u)); };
+    t.section = symmetric;
     t.quarter = q;
     t.spacing = h;
     t.symmetricDiagonals = true;
     return t;
   };
-  const Vec3 origin = hole.center + h * N;
-  const double L0 = (f * area / (1 - f)) / (2 * kPi * 1.1 * r0);
+  const Vec3 origin = hole.center + (h + LoopLift(body, hole) + 0.3 * rho) * N;
+  const double L0 = (f * area / (1 - f)) / (2 * kPi * 2 * r0);
+  // of the orientations that clear the body, the one about whose plane the body around the
+  // part looks least symmetric
+  const std::vector<Vec3> near = localSamples(Pdir, 3 * rho / P.norm());
+  auto bodySymmetry = [&](const Eigen::Matrix3d& R) { return mirrored(near, origin, R.col(0)); };
+  E = ClearestFrame(body, E, spec(L0), origin, L0, 2 * r0, bodySymmetry, h);
   const TriMesh m = WeldToFraction(body, hole, spec, origin, E, 1, 1, f, L0);
-  return Finish(m, { KnownPlane{ origin, ex } });
+  return Finish(m, { KnownPlane{ origin, E.col(0) } });
 }
 
 ProceduralMesh MakeAsymmetricBlob(int approxFaces, unsigned seed)
 {
-  const Shape s = LumpyShape(seed);
+  const Lumpy s = LumpyShape(seed);
   return Finish(OctaSphere(OctaResolution(approxFaces), s, false, 0), {});
 }
 
@@ -1107,13 +1525,25 @@ ProceduralMesh MakeCylinder(int approxFaces)
 
 ProceduralMesh MakeMultiPartSymmetric(int approxFaces)
 {
-  const Shape body = CreatureShape(7), ear = LumpyShape(11);
+  const Creature body = CreatureShape(7);
+  const Lumpy ear = LumpyShape(11);
   TriMesh m = OctaSphere(OctaResolution(0.6 * approxFaces), body, true, 1);
-  const Vec3 d = Vec3(1, 0.35, 0.3).normalized();
-  const Vec3 c = body(d) + 0.1 * d;
+  // on the upper side of the head, pushed outwards by 0.1 along the section direction
+  const double ty = body.SpineT(body.yh - 0.05), psi = 0.9, st = std::sqrt(1 - ty * ty);
+  const Vec3 c = body(Vec3(st * std::sin(psi), ty, st * std::cos(psi))) +
+    0.1 * Vec3(std::sin(psi), 0, std::cos(psi));
   TriMesh right = OctaSphere(
-    OctaResolution(0.2 * approxFaces), [&](const Vec3& u) { return Vec3(c + 0.4 * ear(u)); }, false,
-    1);
+    OctaResolution(0.2 * approxFaces), [&](const Vec3& u) { return Vec3(c + 0.25 * ear(u)); },
+    false, 1);
+  double minX = 1e300; // the ears stay clear of each other (and of the plane x = 0)
+  for (const Vec3& p : right.p)
+  {
+    minX = std::min(minX, p.x());
+  }
+  for (Vec3& p : right.p)
+  {
+    p.x() += std::max(0.0, 0.08 - minX);
+  }
   TriMesh left = right;
   for (Vec3& p : left.p)
   {

@@ -56,10 +56,13 @@ struct ProceduralMesh
 
 // ---- generators (approxFaces: target number of triangles, 500 .. 1,000,000) ----
 
-// Closed "creature": a deformed sphere r(dir) * diag(0.75, 1.2, 0.9) dir whose bumps come in
-// mirror pairs about x = 0 (plus a head and bumps centred on the plane); no other plane, no
-// rotation. The half x >= 0 is tessellated (equal-area octahedral grid, seam on x = 0) and
-// mirrored, seam vertices shared: exactly symmetric as a vertex set and as a triangle set.
+// Closed "creature", about 2.5 long along y, exactly symmetric about x = 0 and far from
+// symmetric about any other plane (also at a tolerance of 2% of the bounding-box diagonal): a
+// big head with ears, eyes and a narrowing snout towards +y, a thin tail curling up towards -y,
+// a pear-shaped trunk with wide flat hips, a flat belly (-z) and a domed back with a dorsal
+// sail (+z), four stubby legs and random bumps (10-30% of the local radius) in mirror pairs.
+// The half x >= 0 is tessellated (equal-area octahedral grid, seam on x = 0) and mirrored,
+// seam vertices shared: exactly symmetric as a vertex set and as a triangle set.
 // Faces 0..F/2-1 are the half x >= 0, face i + F/2 is the mirror of face i.
 ProceduralMesh MakeBilateralBlob(int approxFaces, unsigned seed = 1);
 // The same analytic surface, the half x < 0 sampled on a finer grid (about 1.3x the resolution)
@@ -67,20 +70,25 @@ ProceduralMesh MakeBilateralBlob(int approxFaces, unsigned seed = 1);
 ProceduralMesh MakeBilateralBlobDifferentTessellation(int approxFaces, unsigned seed = 1);
 // Rounded box, extents 2 x 1.4 x 0.8, edge radius 0.2, centred at 0: planes x=0, y=0, z=0.
 ProceduralMesh MakeThreePlaneShape(int approxFaces);
-// MakeBilateralBlob(seed) with a twisted, tapering horn (no symmetry of its own) welded by a collar
-// into a hole cut on the x > 0 side: one connected manifold component. symmetricFace is 0 on the
-// horn and collar and on the body faces mirroring the removed hole; the area of the 0 faces is
-// about attachmentAreaFraction (0.02 .. 0.7) of the total (within 0.01 from 2k faces up; on
-// coarser meshes the smallest weld, a hole of 1.5 edge lengths, may exceed a tiny request).
+// MakeBilateralBlob(seed) with a horn welded by a collar into a hole cut in the upper x > 0 flank:
+// one connected manifold component. The horn has no symmetry, not even in parts: it winds
+// along a helix (a corkscrew, non-planar), its elliptic sections twist, it swells and tapers and
+// carries one-sided bumps. symmetricFace is 0 on the horn and collar and on the body faces
+// mirroring the removed hole; the area of the 0 faces is about attachmentAreaFraction
+// (0.02 .. 0.7) of the total (within 0.01 from 2k faces up; on coarser meshes the smallest weld,
+// a hole of 1.5 edge lengths, may exceed a tiny request).
 ProceduralMesh MakeBlobWithAsymmetricPart(
   int approxFaces, double attachmentAreaFraction, unsigned seed = 1);
-// A random lumpy asymmetric body with an exactly symmetric sub-part welded into a hole: a bent
-// neck with elliptic sections that swells and is closed by a half-ellipsoid cap; its plane is
-// `planes[0]`, symmetricFace marks its faces (about symmetricAreaFraction, 0.02 .. 0.6, of the
-// area). The collar joining it to the body is marked 0.
+// The lumpy asymmetric body of MakeAsymmetricBlob with an exactly symmetric sub-part welded into
+// a hole: a "head" with ONE mirror plane, a short neck flaring into a wide, bent, crested head
+// with eyes, closed by a dome; its plane is `planes[0]`, symmetricFace marks its faces (about
+// symmetricAreaFraction, 0.02 .. 0.6, of the area). The collar joining it to the body is
+// marked 0. The part sits where the body looks least symmetric about the part's plane.
 ProceduralMesh MakeAsymmetricBodyWithSymmetricPart(
   int approxFaces, double symmetricAreaFraction, unsigned seed = 1);
-// A random lumpy blob with no mirror symmetry (planes empty, symmetricFace all 0).
+// A random lumpy blob with no mirror symmetry, not even approximately (planes empty,
+// symmetricFace all 0): big lopsided lobes at random directions and a rough skin of random
+// waves, so that no plane maps much of it onto itself within 2% of the diagonal.
 ProceduralMesh MakeAsymmetricBlob(int approxFaces, unsigned seed = 1);
 // Unit sphere at 0 (equal-area octahedral grid). Any plane through 0 is a symmetry plane;
 // `planes` lists x=0, y=0, z=0, which are also exact for the vertex set.
@@ -88,8 +96,9 @@ ProceduralMesh MakeSphere(int approxFaces);
 // Capped cylinder along z, radius 0.6, z in [-1, 1]. Any plane containing the z axis and z = 0
 // are symmetry planes; `planes` lists x=0, y=0, x=y, x=-y and z=0, exact for the vertex set.
 ProceduralMesh MakeCylinder(int approxFaces);
-// Three closed components: a bilateral central body and two lumpy "ears" (each asymmetric, one
-// the mirror image of the other) that interpenetrate it. Plane x = 0; symmetricFace all 1.
+// Three closed components: the bilateral creature (seed 7) and two lumpy "ears" (each
+// asymmetric, one the mirror image of the other) that interpenetrate its head. Plane x = 0;
+// symmetricFace all 1.
 ProceduralMesh MakeMultiPartSymmetric(int approxFaces);
 
 // ---- transformations (mesh, planes and family consistently) ----

@@ -1,8 +1,14 @@
 // Checks that the procedural test meshes are what ProceduralMeshes.h promises: triangles only, no
 // duplicate points, closed, edge- and vertex-manifold, consistently and outwardly oriented, face
 // counts near the request, exact mirror planes (also after a rigid motion and a scaling), the
-// surface-only symmetry of the differently tessellated blob, area fractions, components and
-// determinism. Prints one line per mesh; returns nonzero with a message per failed check.
+// surface-only symmetry of the differently tessellated blob, area fractions, components,
+// determinism, and that the ground truth is unambiguous for the detector at its default
+// tolerance (2% of the diagonal): no other plane gives a comparable symmetric region.
+// Prints one line per mesh; returns nonzero with a message per failed check.
+//
+// The symmetric regions are measured with FoldingMeshesCore (PrepareMesh, MirrorDistance,
+// LargestConnectedRegion) when that library is linked to this test, else with an equivalent
+// implementation of the same rule in this file.
 #include "ProceduralMeshes.h"
 
 #include <vtkCellArray.h>
@@ -13,6 +19,20 @@
 
 #include <Eigen/Eigenvalues>
 
+// The core's headers are visible only when FoldingMeshesCore is linked to this test.
+#if defined(__has_include)
+#if __has_include("MeshPreparation.h") && __has_include("MirrorDistance.h") &&                    \
+  __has_include("RegionGrowing.h")
+#include "MeshPreparation.h"
+#include "MirrorDistance.h"
+#include "RegionGrowing.h"
+#define FOLDINGMESHES_TEST_HAS_CORE 1
+#endif
+#endif
+#ifndef FOLDINGMESHES_TEST_HAS_CORE
+#define FOLDINGMESHES_TEST_HAS_CORE 0
+#endif
+
 #include <algorithm>
 #include <array>
 #include <chrono>
@@ -20,7 +40,9 @@
 #include <cstdint>
 #include <cstdio>
 #include <functional>
+#include <memory>
 #include <numeric>
+#include <random>
 #include <set>
 #include <sstream>
 #include <string>
@@ -380,6 +402,361 @@ std::array<std::pair<Vec3, double>, 3> PrincipalPlaneResiduals(vtkPolyData* pd, 
   return out;
 }
 
+// ---- what the detector sees: the region of a plane at epsilon = 2% of the diagonal ----
+// RegionFraction(plane) = area fraction of the largest edge-connected set of faces whose three
+// vertices, reflected through the plane together with their normals, lie closer than epsilon to
+// a face whose normal (interpolated from the vertex normals at the closest point) is within 45
+// degrees of the reflected normal: the detector's fine metric and region rule. With
+// FoldingMeshesCore linked (its headers visible) the core computes it; otherwise an equivalent
+// implementation here does (same rule; a uniform grid replaces the core's face tree).
+class RegionMeasure
+{
+public:
+  explicit RegionMeasure(vtkPolyData* pd)
+  {
+#if FOLDINGMESHES_TEST_HAS_CORE
+    foldingmeshes::TriangleMesh soup;
+    for (vtkIdType i = 0; i < pd->GetNumberOfPoints(); ++i)
+    {
+      Vec3 p;
+      pd->GetPoint(i, p.data());
+      soup.points.push_back(p);
+    }
+    for (vtkIdType c = 0; c < pd->GetNumberOfCells(); ++c)
+    {
+      vtkIdType n = 0;
+      const vtkIdType* ids = nullptr;
+      pd->GetCellPoints(c, n, ids);
+      soup.triangles.push_back({ int(ids[0]), int(ids[1]), int(ids[2]) });
+    }
+    std::string error;
+    foldingmeshes::PrepareMesh(soup, {}, this->Mesh, error);
+    this->Distance.reset(new foldingmeshes::MirrorDistance(this->Mesh, 45.0));
+    this->P = this->Mesh.points;
+    for (const auto& t : this->Mesh.triangles)
+    {
+      this->T.push_back({ t[0], t[1], t[2] });
+    }
+#else
+    Soup s;
+    Extract("RegionMeasure", pd, s);
+    this->P = s.p;
+    this->T = s.t;
+#endif
+    const size_t nf = this->T.size();
+    this->Area.resize(nf);
+    this->FaceN.resize(nf);
+    this->VertexN.assign(this->P.size(), Vec3::Zero());
+    for (size_t f = 0; f < nf; ++f)
+    {
+      const Tri& t = this->T[f];
+      const Vec3 w = (this->P[t[1]] - this->P[t[0]]).cross(this->P[t[2]] - this->P[t[0]]);
+      this->Area[f] = 0.5 * w.norm();
+      this->FaceN[f] = w.normalized();
+      for (vtkIdType v : t)
+      {
+        this->VertexN[size_t(v)] += w;
+      }
+    }
+    for (Vec3& n : this->VertexN)
+    {
+      n.normalize();
+    }
+    this->TotalArea = std::accumulate(this->Area.begin(), this->Area.end(), 0.0);
+    this->Epsilon = 0.02 * BoundsDiagonal(pd);
+#if !FOLDINGMESHES_TEST_HAS_CORE
+    std::unordered_map<uint64_t, size_t> half; // directed edge -> face
+    for (size_t f = 0; f < nf; ++f)
+    {
+      for (int e = 0; e < 3; ++e)
+      {
+        half[(uint64_t(this->T[f][e]) << 32) | uint64_t(this->T[f][(e + 1) % 3])] = f;
+      }
+    }
+    this->Neighbors.resize(nf);
+    for (size_t f = 0; f < nf; ++f)
+    {
+      for (int e = 0; e < 3; ++e)
+      {
+        auto it = half.find((uint64_t(this->T[f][(e + 1) % 3]) << 32) | uint64_t(this->T[f][e]));
+        if (it != half.end())
+        {
+          this->Neighbors[f].push_back(it->second);
+        }
+      }
+    }
+    Vec3 lo = this->P[0], hi = this->P[0];
+    for (const Vec3& p : this->P)
+    {
+      lo = lo.cwiseMin(p);
+      hi = hi.cwiseMax(p);
+    }
+    this->Lo = lo;
+    for (int k = 0; k < 3; ++k)
+    {
+      this->Dims[k] = std::max(1, int(std::ceil((hi[k] - lo[k]) / this->Epsilon)));
+    }
+    this->Cells.resize(size_t(this->Dims[0]) * this->Dims[1] * this->Dims[2]);
+    for (size_t f = 0; f < nf; ++f)
+    {
+      const Tri& t = this->T[f];
+      const Vec3 a = this->P[t[0]].cwiseMin(this->P[t[1]]).cwiseMin(this->P[t[2]]);
+      const Vec3 b = this->P[t[0]].cwiseMax(this->P[t[1]]).cwiseMax(this->P[t[2]]);
+      const std::array<int, 3> i0 = this->Cell(a), i1 = this->Cell(b);
+      for (int i = i0[0]; i <= i1[0]; ++i)
+        for (int j = i0[1]; j <= i1[1]; ++j)
+          for (int k = i0[2]; k <= i1[2]; ++k)
+            this->Cells[this->Index(i, j, k)].push_back(f);
+    }
+#endif
+  }
+
+  double Eps() const { return this->Epsilon; }
+
+  double Fraction(const KnownPlane& plane) const
+  {
+    const Vec3 n = plane.normal.normalized();
+#if FOLDINGMESHES_TEST_HAS_CORE
+    std::vector<double> d;
+    this->Distance->Compute(foldingmeshes::Plane{ plane.origin, n },
+      foldingmeshes::DistanceMetric::Fine, 3 * this->Epsilon, d);
+    const std::vector<char> region = foldingmeshes::LargestConnectedRegion(
+      this->Mesh, foldingmeshes::FacesWithVerticesWithin(this->Mesh, d, this->Epsilon, true));
+    return foldingmeshes::RegionArea(this->Mesh, region) / this->Mesh.totalArea;
+#else
+    std::vector<char> near(this->P.size(), 0);
+    const double cosLimit = std::cos(45.0 * 3.14159265358979323846 / 180);
+    std::vector<int> stamp(this->T.size(), -1);
+    for (size_t v = 0; v < this->P.size(); ++v)
+    {
+      const Vec3 r = this->P[v] - 2 * n.dot(this->P[v] - plane.origin) * n;
+      const Vec3 rn = this->VertexN[v] - 2 * n.dot(this->VertexN[v]) * n;
+      const std::array<int, 3> i0 = this->Cell(r - Vec3::Constant(this->Epsilon));
+      const std::array<int, 3> i1 = this->Cell(r + Vec3::Constant(this->Epsilon));
+      for (int i = i0[0]; i <= i1[0] && !near[v]; ++i)
+        for (int j = i0[1]; j <= i1[1] && !near[v]; ++j)
+          for (int k = i0[2]; k <= i1[2] && !near[v]; ++k)
+            for (size_t f : this->Cells[this->Index(i, j, k)])
+            {
+              if (stamp[f] == int(v))
+              {
+                continue;
+              }
+              stamp[f] = int(v);
+              const Tri& t = this->T[f];
+              const Vec3 q = ClosestOnTriangle(r, this->P[t[0]], this->P[t[1]], this->P[t[2]]);
+              if ((q - r).norm() < this->Epsilon &&
+                this->InterpolatedNormal(f, q).dot(rn) >= cosLimit)
+              {
+                near[v] = 1;
+                break;
+              }
+            }
+    }
+    // largest edge-connected region of the faces with three near vertices
+    std::vector<int> label(this->T.size(), -1);
+    double best = 0;
+    for (size_t f0 = 0; f0 < this->T.size(); ++f0)
+    {
+      if (label[f0] >= 0 || !this->AllNear(f0, near))
+      {
+        continue;
+      }
+      double area = 0;
+      std::vector<size_t> stack{ f0 };
+      label[f0] = int(f0);
+      while (!stack.empty())
+      {
+        const size_t f = stack.back();
+        stack.pop_back();
+        area += this->Area[f];
+        for (size_t g : this->Neighbors[f])
+        {
+          if (label[g] < 0 && this->AllNear(g, near))
+          {
+            label[g] = int(f0);
+            stack.push_back(g);
+          }
+        }
+      }
+      best = std::max(best, area);
+    }
+    return best / this->TotalArea;
+#endif
+  }
+
+  // area-weighted centroid of the faces with mask[f] (all faces if mask is empty)
+  Vec3 Centroid(const std::vector<char>& mask = {}) const
+  {
+    Vec3 c = Vec3::Zero();
+    double w = 0;
+    for (size_t f = 0; f < this->T.size(); ++f)
+    {
+      if (mask.empty() || mask[f])
+      {
+        c += this->Area[f] * (this->P[this->T[f][0]] + this->P[this->T[f][1]] + this->P[this->T[f][2]]) / 3;
+        w += this->Area[f];
+      }
+    }
+    return c / w;
+  }
+
+  // normals of the principal planes of the area-weighted covariance of the surface
+  std::array<Vec3, 3> PrincipalNormals() const
+  {
+    const Vec3 mu = this->Centroid();
+    Eigen::Matrix3d C = Eigen::Matrix3d::Zero();
+    for (size_t f = 0; f < this->T.size(); ++f)
+    {
+      const Vec3 a = this->P[this->T[f][0]] - mu, b = this->P[this->T[f][1]] - mu,
+                 c = this->P[this->T[f][2]] - mu, m = (a + b + c) / 3;
+      // exact second moment of the triangle: A / 12 (9 m m^T + a a^T + b b^T + c c^T)
+      C += this->Area[f] / 12 *
+        (9 * m * m.transpose() + a * a.transpose() + b * b.transpose() + c * c.transpose());
+    }
+    Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> es(C);
+    return { es.eigenvectors().col(0), es.eigenvectors().col(1), es.eigenvectors().col(2) };
+  }
+
+private:
+#if !FOLDINGMESHES_TEST_HAS_CORE
+  std::array<int, 3> Cell(const Vec3& x) const
+  {
+    std::array<int, 3> c;
+    for (int k = 0; k < 3; ++k)
+    {
+      c[size_t(k)] = std::clamp(int(std::floor((x[k] - this->Lo[k]) / this->Epsilon)), 0, this->Dims[k] - 1);
+    }
+    return c;
+  }
+  size_t Index(int i, int j, int k) const
+  {
+    return (size_t(i) * this->Dims[1] + j) * this->Dims[2] + k;
+  }
+  bool AllNear(size_t f, const std::vector<char>& near) const
+  {
+    return near[this->T[f][0]] && near[this->T[f][1]] && near[this->T[f][2]];
+  }
+  // barycentric interpolation of the vertex normals at the point q of face f (unit)
+  Vec3 InterpolatedNormal(size_t f, const Vec3& q) const
+  {
+    const Vec3 &a = this->P[this->T[f][0]], &b = this->P[this->T[f][1]], &c = this->P[this->T[f][2]];
+    const Vec3 w = (b - a).cross(c - a);
+    const double ww = w.squaredNorm();
+    const double la = (c - b).cross(q - b).dot(w) / ww, lb = (a - c).cross(q - c).dot(w) / ww;
+    const Vec3 n = la * this->VertexN[this->T[f][0]] + lb * this->VertexN[this->T[f][1]] +
+      (1 - la - lb) * this->VertexN[this->T[f][2]];
+    return n.norm() > 0 ? Vec3(n.normalized()) : Vec3::Zero();
+  }
+  std::vector<std::vector<size_t>> Neighbors;
+  std::vector<std::vector<size_t>> Cells;
+  Vec3 Lo = Vec3::Zero();
+  int Dims[3] = { 1, 1, 1 };
+#else
+  foldingmeshes::PreparedMesh Mesh;
+  std::unique_ptr<foldingmeshes::MirrorDistance> Distance;
+#endif
+  std::vector<Vec3> P, FaceN, VertexN;
+  std::vector<Tri> T;
+  std::vector<double> Area;
+  double TotalArea = 0, Epsilon = 0;
+};
+
+// Deterministic random unit vectors (own Box-Muller: std distributions are implementation-defined).
+Vec3 RandomNormal(std::mt19937& g)
+{
+  auto u = [&] { return (double(g()) + 0.5) / 4294967296.0; };
+  Vec3 n;
+  for (int k = 0; k < 3; ++k)
+  {
+    n[k] = std::sqrt(-2 * std::log(u())) * std::cos(2 * 3.14159265358979323846 * u());
+  }
+  return n.normalized();
+}
+
+struct Competition
+{
+  double truth = -1;        // RegionFraction of the true plane (-1: none)
+  double principal = 0;     // best principal plane other than the true one
+  double random = 0;        // best random plane (through the centroids given)
+  double refined = 0;       // best after refining the best random planes (if asked)
+  int skipped = 0;          // random planes within `exclude` degrees of the true plane
+  double Best() const { return std::max({ principal, random, refined }); }
+};
+
+// RegionFraction of the true plane (if any), of the principal planes through the area centroid
+// and of `count` random planes through each of `centers`, skipping planes within `exclude`
+// degrees of the true plane (they are the true plane's own basin: the region shrinks
+// continuously as the plane turns away from it); with `refine`, the 5 best random planes are
+// improved by a random local search (tilts and shifts, halved when stuck), never entering the
+// excluded cone either.
+Competition Compete(const ProceduralMesh& m, const RegionMeasure& rm,
+  const std::vector<Vec3>& centers, int count, double exclude, unsigned seed, bool refine)
+{
+  Competition c;
+  const bool hasTruth = !m.planes.empty();
+  if (hasTruth)
+  {
+    c.truth = rm.Fraction(m.planes[0]);
+  }
+  auto isOther = [&](const Vec3& n)
+  { return !hasTruth || PlaneAngleDegrees(n, m.planes[0].normal) > exclude; };
+  const Vec3 centroid = rm.Centroid();
+  for (const Vec3& n : rm.PrincipalNormals())
+  {
+    if (isOther(n))
+    {
+      c.principal = std::max(c.principal, rm.Fraction({ centroid, n }));
+    }
+  }
+  std::mt19937 g(seed);
+  std::vector<std::pair<double, KnownPlane>> tried;
+  for (const Vec3& o : centers)
+  {
+    for (int k = 0; k < count; ++k)
+    {
+      const Vec3 n = RandomNormal(g);
+      if (!isOther(n))
+      {
+        ++c.skipped;
+        continue;
+      }
+      const KnownPlane p{ o, n };
+      tried.push_back({ rm.Fraction(p), p });
+      c.random = std::max(c.random, tried.back().first);
+    }
+  }
+  if (refine)
+  {
+    std::sort(tried.begin(), tried.end(),
+      [](const auto& a, const auto& b) { return a.first > b.first; });
+    for (size_t k = 0; k < std::min<size_t>(5, tried.size()); ++k)
+    {
+      KnownPlane p = tried[k].second;
+      double r = tried[k].first, tilt = 0.08, shift = rm.Eps();
+      for (int it = 0; it < 48; ++it)
+      {
+        KnownPlane q = p;
+        q.normal = (p.normal + tilt * RandomNormal(g)).normalized();
+        q.origin = p.origin + shift * (2 * (double(g()) / 4294967296.0) - 1) * q.normal;
+        const double rq = isOther(q.normal) ? rm.Fraction(q) : 0.0;
+        if (rq > r)
+        {
+          r = rq;
+          p = q;
+        }
+        else if (it % 12 == 11)
+        {
+          tilt *= 0.5;
+          shift *= 0.5;
+        }
+      }
+      c.refined = std::max(c.refined, r);
+    }
+  }
+  return c;
+}
+
 struct Gen
 {
   std::string name;
@@ -640,6 +1017,86 @@ int main()
         res.first.x(), res.first.y(), res.first.z(), res.second, isTrue ? " (true plane)" : "");
       EXPECT(isTrue ? res.second < 2e-3 : res.second > 1e-2,
         named.first << ": principal plane residual " << res.second);
+    }
+  }
+
+  section("unambiguous ground truth at epsilon = 2% of the diagonal (RegionFraction)");
+  std::printf("  measured with %s\n",
+    FOLDINGMESHES_TEST_HAS_CORE
+      ? "FoldingMeshesCore (PrepareMesh, MirrorDistance fine, LargestConnectedRegion)"
+      : "this test's implementation of the detector's fine metric (FoldingMeshesCore not linked)");
+  {
+    auto report = [](const std::string& name, const Competition& c)
+    {
+      char truth[16] = "    -";
+      if (c.truth >= 0)
+      {
+        std::snprintf(truth, sizeof(truth), "%6.3f", c.truth);
+      }
+      std::printf("  %-36s true %s  other principal %.3f  random %.3f", name.c_str(), truth,
+        c.principal, c.random);
+      if (c.refined > 0)
+      {
+        std::printf("  refined %.3f", c.refined);
+      }
+      std::printf("  (%d near the true plane skipped)\n", c.skipped);
+    };
+    // Bilateral creatures: the true plane keeps everything, the two other principal planes and
+    // 200 random planes through the centroid at least 20 degrees away keep less than half.
+    const std::vector<std::pair<std::string, ProceduralMesh>> bilateral = {
+      { "BilateralBlob", MakeBilateralBlob(4000) },
+      { "BilateralBlob seed 3", MakeBilateralBlob(4000, 3) },
+      { "DifferentTessellation", MakeBilateralBlobDifferentTessellation(4000) },
+      { "DifferentTessellation seed 7", MakeBilateralBlobDifferentTessellation(4000, 7) },
+    };
+    for (const auto& named : bilateral)
+    {
+      const RegionMeasure rm(named.second.mesh);
+      const Competition c = Compete(named.second, rm, { rm.Centroid() }, 200, 20, 11, false);
+      report(named.first, c);
+      EXPECT(c.truth > 0.97, named.first << ": true plane keeps only " << c.truth);
+      EXPECT(c.principal < 0.5, named.first << ": another principal plane keeps " << c.principal);
+      EXPECT(c.random < 0.5, named.first << ": a random plane keeps " << c.random);
+    }
+    // Asymmetric blobs: no plane keeps 40% (principal planes, 500 random planes through the
+    // centroid and a local refinement of the 5 best).
+    for (unsigned seed : { 1u, 13u })
+    {
+      const ProceduralMesh m = MakeAsymmetricBlob(4000, seed);
+      const RegionMeasure rm(m.mesh);
+      const Competition c = Compete(m, rm, { rm.Centroid() }, 500, 0, seed, true);
+      const std::string name = "AsymmetricBlob seed " + std::to_string(seed);
+      report(name, c);
+      EXPECT(c.Best() < 0.4, name << ": a plane keeps " << c.Best());
+    }
+    // Creature with a horn: the true plane keeps the body (all but the attachment, give or take
+    // 5%), and every other plane keeps less: principal planes, 200 random planes through the
+    // centroid and 200 through the body's centroid, at least 10 degrees from the true plane.
+    for (double a : { 0.3, 0.5 })
+    {
+      const ProceduralMesh m = MakeBlobWithAsymmetricPart(4000, a);
+      const RegionMeasure rm(m.mesh);
+      const Competition c =
+        Compete(m, rm, { rm.Centroid(), rm.Centroid(m.symmetricFace) }, 200, 10, 12, false);
+      const std::string name = "BlobWithAsymmetricPart(" + std::to_string(a).substr(0, 3) + ")";
+      report(name, c);
+      EXPECT(c.truth > 1 - a - 0.05, name << ": true plane keeps only " << c.truth);
+      EXPECT(c.Best() < c.truth, name << ": another plane keeps " << c.Best() << " >= " << c.truth);
+    }
+    // Lumpy body with a symmetric head: the true plane keeps most of the head, every other plane
+    // (principal, 200 random through the centroid, 200 through the head's centroid, at least 10
+    // degrees away) keeps less.
+    for (double f : { 0.2, 0.3 })
+    {
+      const ProceduralMesh m = MakeAsymmetricBodyWithSymmetricPart(4000, f);
+      const RegionMeasure rm(m.mesh);
+      const Competition c =
+        Compete(m, rm, { rm.Centroid(), rm.Centroid(m.symmetricFace) }, 200, 10, 13, false);
+      const std::string name =
+        "AsymmetricBodyWithSymmetricPart(" + std::to_string(f).substr(0, 3) + ")";
+      report(name, c);
+      EXPECT(c.truth > 0.8 * f, name << ": true plane keeps only " << c.truth);
+      EXPECT(c.Best() < c.truth, name << ": another plane keeps " << c.Best() << " >= " << c.truth);
     }
   }
 

@@ -141,26 +141,36 @@ int main()
     Check(r.inAsymmetric < 0.1, "region excludes the attachment");
   }
   {
-    std::printf("asymmetric body with a symmetric sub-part (30%%)\n");
+    // At the default 2% the lumpy body next to the part is itself symmetric within epsilon
+    // in places and joins the region (the plane stays within a few degrees); at 1% the
+    // sub-part alone is found, and exactly.
+    std::printf("asymmetric body with a symmetric sub-part (30%%), tolerance 2%%\n");
     ProceduralMesh m = MakeAsymmetricBodyWithSymmetricPart(8000, 0.3, 9);
     Moved(m, 9);
     Outcome r = Detect(m);
-    Check(r.match.angleDegrees < 1.0 && r.match.offsetError < 5e-3, "plane of the sub-part");
-    Check(r.iou > 0.7, "region = the sub-part");
+    Check(r.match.angleDegrees < 5.0, "near the plane of the sub-part");
+    std::vector<char> covered(r.region.size());
+    for (size_t f = 0; f < covered.size(); ++f)
+      covered[f] = r.region[f] && m.symmetricFace[f];
+    Check(MaskAreaFraction(m.mesh, covered) > 0.8 * MaskAreaFraction(m.mesh, m.symmetricFace),
+      "region covers the sub-part");
+    std::printf("same, tolerance 1%%\n");
+    Outcome fine = Detect(m, [](vtkSymmetryPlaneDetector* d) { d->SetTolerance(0.01); });
+    Check(fine.match.angleDegrees < 1.0 && fine.match.offsetError < 3e-3, "plane of the sub-part");
+    Check(fine.iou > 0.7, "region = the sub-part");
   }
   {
     std::printf("same, robust method without voted starts, from the initial plane of the sub-part\n");
     ProceduralMesh m = MakeAsymmetricBodyWithSymmetricPart(8000, 0.3, 9);
     Moved(m, 9);
     const KnownPlane truth = m.planes[0];
-    Outcome r = Detect(m,
-      [&](vtkSymmetryPlaneDetector* d)
-      {
-        d->SetMethod(vtkSymmetryPlaneDetector::PAPER);
-        d->UseInitialPlaneOn();
-        d->SetInitialPlaneOrigin(truth.origin.data());
-        d->SetInitialPlaneNormal(truth.normal.data());
-      });
+    Outcome r = Detect(m, [&](vtkSymmetryPlaneDetector* d) {
+      d->SetNumberOfCandidates(0); // no voted starts: the initial plane must do it
+      d->SetTolerance(0.01);
+      d->UseInitialPlaneOn();
+      d->SetInitialPlaneOrigin(truth.origin.data());
+      d->SetInitialPlaneNormal(truth.normal.data());
+    });
     Check(r.match.angleDegrees < 1.0, "initial plane keeps the sub-part's plane");
   }
   {

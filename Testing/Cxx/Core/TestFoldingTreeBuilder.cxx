@@ -74,16 +74,32 @@ void Print(const char* name, const FoldingTree& t)
 {
   std::printf("%s: faces %d stored %d compression %.4f height %d folds %d (max %d on a path) "
               "leaves %d time %.2fs\n",
-    name, t.numberOfOriginalFaces, t.StoredFaces(), t.Compression(), t.Height(),
-    t.NumberOfFolds(), t.MaximumFoldsOnPath(), t.NumberOfLeaves(), t.buildSeconds);
+    name,
+    t.numberOfOriginalFaces,
+    t.StoredFaces(),
+    t.Compression(),
+    t.Height(),
+    t.NumberOfFolds(),
+    t.MaximumFoldsOnPath(),
+    t.NumberOfLeaves(),
+    t.buildSeconds);
   for (int i = 0; i < t.NumberOfNodes(); ++i)
   {
     const FoldingNode& n = t.nodes[i];
-    std::printf("  %*s#%d %s eps/diag %.5f faces %d", 2 * n.depth, "", i, ToString(n.kind),
-      n.epsilon / t.diagonal, n.numberOfFaces);
+    std::printf("  %*s#%d %s eps/diag %.5f faces %d",
+      2 * n.depth,
+      "",
+      i,
+      ToString(n.kind),
+      n.epsilon / t.diagonal,
+      n.numberOfFaces);
     if (n.kind == FoldingNodeKind::Folding)
-      std::printf(" n=(%.3f %.3f %.3f) discarded %d projected %d", n.plane.normal.x(),
-        n.plane.normal.y(), n.plane.normal.z(), n.discardedFaces, n.projectedPoints);
+      std::printf(" n=(%.3f %.3f %.3f) discarded %d projected %d",
+        n.plane.normal.x(),
+        n.plane.normal.y(),
+        n.plane.normal.z(),
+        n.discardedFaces,
+        n.projectedPoints);
     if (n.kind == FoldingNodeKind::Leaf)
       std::printf(" %s", ToString(n.leafReason));
     std::printf("\n");
@@ -131,8 +147,8 @@ void CheckInvariants(const char* name, const Case& c, const FoldingTree& t, doub
     return;
   EXPECT(t.numberOfOriginalFaces == static_cast<int>(c.mesh.triangles.size()),
     name << ": original faces");
-  EXPECT(t.rootEpsilon == rootEpsilon && t.nodes[0].epsilon == rootEpsilon,
-    name << ": root epsilon");
+  EXPECT(
+    t.rootEpsilon == rootEpsilon && t.nodes[0].epsilon == rootEpsilon, name << ": root epsilon");
   int stored = 0;
   for (int i = 0; i < t.NumberOfNodes(); ++i)
   {
@@ -143,16 +159,17 @@ void CheckInvariants(const char* name, const Case& c, const FoldingTree& t, doub
     {
       const FoldingNode& p = t.nodes[n.parent];
       const double expected = p.kind == FoldingNodeKind::Folding ? 0.5 * p.epsilon : p.epsilon;
-      EXPECT(n.epsilon == expected, name << ": node " << i << " epsilon " << n.epsilon
-                                         << " parent (" << ToString(p.kind) << ") " << p.epsilon);
+      EXPECT(n.epsilon == expected,
+        name << ": node " << i << " epsilon " << n.epsilon << " parent (" << ToString(p.kind)
+             << ") " << p.epsilon);
     }
     // Partition of the region among the children (plus the discarded faces of a fold).
     if (n.kind != FoldingNodeKind::Leaf)
     {
       std::vector<int> all = n.discardedOriginalFaces;
       for (int child : n.children)
-        all.insert(all.end(), t.nodes[child].originalFaces.begin(),
-          t.nodes[child].originalFaces.end());
+        all.insert(
+          all.end(), t.nodes[child].originalFaces.begin(), t.nodes[child].originalFaces.end());
       std::sort(all.begin(), all.end());
       EXPECT(all == n.originalFaces,
         name << ": node " << i << " children (and discarded faces) do not partition its region");
@@ -196,12 +213,13 @@ void CheckInvariants(const char* name, const Case& c, const FoldingTree& t, doub
       movedPoints +=
         (m.points[v] - ProjectOntoIntersection(input, planes)).norm() > 1e-9 * c.diagonal;
     }
-    EXPECT(badTriangles == 0, name << ": leaf " << i << ": " << badTriangles
-                                   << " triangles differ from their input triangle");
-    EXPECT(movedPoints == 0, name << ": leaf " << i << ": " << movedPoints
-                                  << " points moved without reason");
-    EXPECT(offPlane == 0, name << ": leaf " << i << ": " << offPlane
-                               << " points flagged on a fold plane lie off it");
+    EXPECT(badTriangles == 0,
+      name << ": leaf " << i << ": " << badTriangles
+           << " triangles differ from their input triangle");
+    EXPECT(movedPoints == 0,
+      name << ": leaf " << i << ": " << movedPoints << " points moved without reason");
+    EXPECT(offPlane == 0,
+      name << ": leaf " << i << ": " << offPlane << " points flagged on a fold plane lie off it");
   }
   EXPECT(stored == t.StoredFaces(), name << ": StoredFaces");
   EXPECT(std::abs(t.Compression() - (1.0 - static_cast<double>(stored) / t.numberOfOriginalFaces)) <
@@ -259,15 +277,15 @@ void TestThreePlaneShape()
     for (int k = 0; k < 3 && k < static_cast<int>(path.size()); ++k)
     {
       const FoldingNode& n = t.nodes[path[k]];
-      EXPECT(n.kind == FoldingNodeKind::Folding, "three-plane: node at depth " << k << " is "
-                                                                               << ToString(n.kind));
+      EXPECT(n.kind == FoldingNodeKind::Folding,
+        "three-plane: node at depth " << k << " is " << ToString(n.kind));
       EXPECT(n.epsilon == o.epsilon / (1 << k), "three-plane: epsilon at depth " << k);
       for (size_t j = 0; j < c.shape.planes.size(); ++j)
         if (Matches(c.shape.planes[j], n.plane, c.diagonal, 0.5))
           matched.insert(static_cast<int>(j));
     }
-    EXPECT(matched.size() == 3, "three-plane: the first three folds use " << matched.size()
-                                                                          << " of the 3 planes");
+    EXPECT(matched.size() == 3,
+      "three-plane: the first three folds use " << matched.size() << " of the 3 planes");
     EXPECT(t.StoredFaces() <= F / 8 + 0.02 * F && t.StoredFaces() >= 0.05 * F,
       "three-plane defaults: stored " << t.StoredFaces() << " of " << F << " (about 1/8 expected)");
   }
@@ -280,11 +298,12 @@ void TestThreePlaneShape()
     CheckInvariants("three-plane area 0.13", c, t, o.epsilon);
     EXPECT(t.NumberOfFolds() == 3 && t.NumberOfNodes() == 4 && t.Height() == 4,
       "three-plane area 0.13: " << t.NumberOfFolds() << " folds, " << t.NumberOfNodes()
-                               << " nodes, height " << t.Height());
+                                << " nodes, height " << t.Height());
     EXPECT(std::abs(t.StoredFaces() - F / 8.0) <= 0.01 * F,
       "three-plane area 0.13: stored " << t.StoredFaces() << ", 1/8 is " << F / 8.0);
-    EXPECT(LeafAt(t, 3, LeafReason::MinimumArea) >= 0, "three-plane area 0.13: no MinimumArea leaf "
-                                                        "at depth 3");
+    EXPECT(LeafAt(t, 3, LeafReason::MinimumArea) >= 0,
+      "three-plane area 0.13: no MinimumArea leaf "
+      "at depth 3");
     const int leaf = LeafAt(t, 3, LeafReason::MinimumArea);
     if (leaf >= 0)
       EXPECT(t.nodes[leaf].epsilon == o.epsilon / 8, "three-plane: leaf epsilon not eps/8");
@@ -305,14 +324,14 @@ void TestBilateralBlob()
     "bilateral blob: root is not a fold on x = 0");
   // The half has F/2 faces; it may fold further on approximate local symmetries.
   EXPECT(t.nodes[1].numberOfFaces == F / 2 && t.StoredFaces() <= F / 2,
-    "bilateral blob: half " << t.nodes[1].numberOfFaces << ", stored " << t.StoredFaces()
-                            << " of " << F);
+    "bilateral blob: half " << t.nodes[1].numberOfFaces << ", stored " << t.StoredFaces() << " of "
+                            << F);
   o.maximumFolds = 1;
   const FoldingTree once = Build(c, o);
   CheckInvariants("bilateral blob, one fold", c, once, o.epsilon);
   EXPECT(once.NumberOfFolds() == 1 && once.StoredFaces() == F / 2,
-    "bilateral blob, one fold: " << once.NumberOfFolds() << " folds, stored "
-                                 << once.StoredFaces() << " of " << F);
+    "bilateral blob, one fold: " << once.NumberOfFolds() << " folds, stored " << once.StoredFaces()
+                                 << " of " << F);
 }
 
 void TestAsymmetricAttachment()
@@ -371,7 +390,9 @@ void TestAsymmetricAttachment()
     }
   }
   std::printf("attachment: %d tear vertices at level 0, %d flagged leaf points, %d wrong\n",
-    expectedCount, flagged, wrong);
+    expectedCount,
+    flagged,
+    wrong);
   EXPECT(expectedCount > 10, "attachment: only " << expectedCount << " boundary vertices");
   EXPECT(wrong == 0, "attachment: " << wrong << " leaf points with a wrong level-0 tear bit");
   // Tear vertices removed by a fold (of S or of an attachment region): recorded on a kept
@@ -402,7 +423,8 @@ void TestAsymmetricAttachment()
     recorded += found;
   }
   std::printf("attachment: %d tear vertices removed by folds, %d recorded on mirror points\n",
-    removed, recorded);
+    removed,
+    recorded);
   EXPECT(removed > 0 && recorded == removed,
     "attachment: " << recorded << " of " << removed << " removed tear vertices recorded");
 }
@@ -485,7 +507,9 @@ void TestKeepSide()
   CheckInvariants("keep more", c, more, o.epsilon);
   CheckInvariants("keep fewer", c, fewer, o.epsilon);
   std::printf("keep side: more faces -> stored %d, fewer faces -> stored %d (of %d)\n",
-    more.StoredFaces(), fewer.StoredFaces(), more.numberOfOriginalFaces);
+    more.StoredFaces(),
+    fewer.StoredFaces(),
+    more.numberOfOriginalFaces);
   EXPECT(more.nodes[0].kind == FoldingNodeKind::Folding &&
       fewer.nodes[0].kind == FoldingNodeKind::Folding,
     "keep side: the root is not a fold");
@@ -512,8 +536,8 @@ void TestDeterminismProgressAbort()
   EXPECT(SameTree(a, b), "determinism: two builds differ");
   bool monotonic = !values.empty();
   for (size_t k = 0; k < values.size(); ++k)
-    monotonic = monotonic && values[k] >= 0.0 && values[k] <= 1.0 &&
-      (k == 0 || values[k] >= values[k - 1]);
+    monotonic =
+      monotonic && values[k] >= 0.0 && values[k] <= 1.0 && (k == 0 || values[k] >= values[k - 1]);
   EXPECT(monotonic && values.back() == 1.0,
     "progress: " << values.size() << " calls, not monotonic in [0,1] ending at 1");
 
@@ -555,8 +579,8 @@ void TestBadInput()
   // Degenerate input triangles (repeated index) are dropped and counted.
   bad = tri;
   bad.triangles.push_back({ 0, 0, 1 });
-  EXPECT(BuildFoldingTree(bad, {}, o, t, error) && t.numberOfDroppedFaces == 1 &&
-      t.StoredFaces() == 1,
+  EXPECT(
+    BuildFoldingTree(bad, {}, o, t, error) && t.numberOfDroppedFaces == 1 && t.StoredFaces() == 1,
     "repeated-index triangle not dropped");
 }
 }

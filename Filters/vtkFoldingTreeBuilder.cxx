@@ -1,0 +1,235 @@
+#include "vtkFoldingTreeBuilder.h"
+
+#include "Core/FoldingTreeBuilder.h"
+#include "vtkFoldingTreeIO.h"
+#include "vtkTriangleMeshAdapter.h"
+
+#include <vtkCellData.h>
+#include <vtkInformation.h>
+#include <vtkInformationVector.h>
+#include <vtkIntArray.h>
+#include <vtkMultiBlockDataSet.h>
+#include <vtkNew.h>
+#include <vtkObjectFactory.h>
+#include <vtkPolyData.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+vtkStandardNewMacro(vtkFoldingTreeBuilder);
+
+//------------------------------------------------------------------------------
+vtkFoldingTreeBuilder::vtkFoldingTreeBuilder()
+{
+  this->SetNumberOfInputPorts(1);
+  this->SetNumberOfOutputPorts(2);
+}
+
+vtkFoldingTreeBuilder::~vtkFoldingTreeBuilder() = default;
+
+//------------------------------------------------------------------------------
+int vtkFoldingTreeBuilder::FillInputPortInformation(int, vtkInformation* info)
+{
+  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkPolyData");
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+int vtkFoldingTreeBuilder::FillOutputPortInformation(int port, vtkInformation* info)
+{
+  if (port == 0)
+  {
+    info->Set(vtkDataObject::DATA_TYPE_NAME(), "vtkMultiBlockDataSet");
+    return 1;
+  }
+  return this->Superclass::FillOutputPortInformation(port, info);
+}
+
+//------------------------------------------------------------------------------
+int vtkFoldingTreeBuilder::RequestData(vtkInformation*,
+  vtkInformationVector** inputVector,
+  vtkInformationVector* outputVector)
+{
+  vtkPolyData* input = vtkPolyData::GetData(inputVector[0], 0);
+  vtkMultiBlockDataSet* tree = vtkMultiBlockDataSet::GetData(outputVector, 0);
+  vtkPolyData* segmentation = vtkPolyData::GetData(outputVector, 1);
+  this->ToleranceLength = 0.0;
+  this->OriginalFaces = this->StoredFaces = this->TreeHeight = 0;
+  this->Compression = 0.0;
+  if (!input || !tree || !segmentation)
+  {
+    vtkErrorMacro("Missing input poly data or outputs.");
+    return 0;
+  }
+  if (input->GetNumberOfPoints() == 0)
+  {
+    vtkErrorMacro("The input mesh is empty (no points).");
+    return 0;
+  }
+  if (input->GetNumberOfPolys() + input->GetNumberOfStrips() == 0)
+  {
+    vtkErrorMacro("The input has no polygons: a folding tree needs a surface mesh.");
+    return 0;
+  }
+
+  vtkIdType droppedVerts = 0, droppedLines = 0;
+  vtkSmartPointer<vtkPolyData> surface =
+    foldingmeshes::TriangulateSurface(input, droppedVerts, droppedLines);
+  if (droppedVerts + droppedLines > 0)
+  {
+    vtkWarningMacro("Ignoring " << droppedVerts << " vertex and " << droppedLines
+                                << " line cells: only polygons are folded.");
+  }
+  foldingmeshes::TriangleMesh soup;
+  std::vector<foldingmeshes::Vec3> normals;
+  std::string error;
+  if (!foldingmeshes::ToTriangleMesh(surface, soup, normals, error))
+  {
+    vtkErrorMacro("Invalid input mesh: " << error << ".");
+    return 0;
+  }
+  if (soup.triangles.empty())
+  {
+    vtkErrorMacro("The input has no triangles after triangulation.");
+    return 0;
+  }
+
+  // Bounding-box diagonal of the points used by triangles.
+  foldingmeshes::Vec3 lo = foldingmeshes::Vec3::Constant(std::numeric_limits<double>::max());
+  foldingmeshes::Vec3 hi = -lo;
+  for (const auto& t : soup.triangles)
+    for (int v : t)
+    {
+      lo = lo.cwiseMin(soup.points[v]);
+      hi = hi.cwiseMax(soup.points[v]);
+    }
+  const double diagonal = (hi - lo).norm();
+  if (!std::isfinite(diagonal))
+  {
+    vtkErrorMacro("Invalid input mesh: non-finite point coordinates.");
+    return 0;
+  }
+  const double epsilon =
+    this->ToleranceMode == ABSOLUTE ? this->Tolerance : this->Tolerance * diagonal;
+  if (!(epsilon > 0.0))
+  {
+    vtkErrorMacro("Invalid input mesh: zero extent, so the relative tolerance is zero.");
+    return 0;
+  }
+  this->ToleranceLength = epsilon;
+
+  foldingmeshes::FoldingTreeOptions options;
+  options.epsilon = epsilon;
+  options.symmetry.robust = this->Method == ROBUST;
+  options.symmetry.seed = static_cast<unsigned>(this->RandomSeed);
+  options.useMinimumFaces = this->UseMinimumFaces;
+  options.minimumFaces = this->MinimumFaces;
+  options.useMinimumAreaFraction = this->UseMinimumAreaFraction;
+  options.minimumAreaFraction = this->MinimumAreaFraction;
+  options.useMaximumFolds = this->UseMaximumFolds;
+  options.maximumFolds = this->MaximumFolds;
+  options.requireMeaningfulSymmetry = this->RequireMeaningfulSymmetry;
+  options.keepSide = this->KeepSide == FEWER_FACES ? foldingmeshes::KeepSide::FewerFaces
+                                                   : foldingmeshes::KeepSide::MoreFaces;
+  options.connectNearbyParts = this->ConnectNearbyParts;
+  options.progress = [this](double p)
+  {
+    this->UpdateProgress(0.95 * p);
+    return !this->GetAbortExecute();
+  };
+
+  foldingmeshes::FoldingTree folding;
+  if (!foldingmeshes::BuildFoldingTree(soup, normals, options, folding, error))
+  {
+    vtkErrorMacro("Could not build the folding tree: " << error << ".");
+    return 0;
+  }
+  if (folding.aborted)
+  {
+    vtkWarningMacro("Folding aborted: the tree is incomplete (unfinished regions are leaves).");
+  }
+  if (!foldingmeshes::FoldingTreeToMultiBlock(folding, surface, tree, error))
+  {
+    vtkErrorMacro("The builder produced an invalid folding tree: " << error << ".");
+    return 0;
+  }
+  this->OriginalFaces = folding.numberOfOriginalFaces;
+  this->StoredFaces = folding.StoredFaces();
+  this->Compression = folding.Compression();
+  this->TreeHeight = folding.Height();
+
+  // Output 1: the segmentation view.
+  segmentation->ShallowCopy(surface);
+  const vtkIdType nf = segmentation->GetNumberOfCells();
+  vtkNew<vtkIntArray> leafId, depth, role;
+  leafId->SetName("FoldingLeafId");
+  depth->SetName("FoldingDepth");
+  role->SetName("FoldingRole");
+  for (vtkIntArray* a : { leafId.GetPointer(), depth.GetPointer(), role.GetPointer() })
+  {
+    a->SetNumberOfTuples(nf);
+    a->FillValue(-1);
+  }
+  for (int i = 0; i < folding.NumberOfNodes(); ++i)
+  {
+    const foldingmeshes::FoldingNode& node = folding.nodes[i];
+    if (node.kind == foldingmeshes::FoldingNodeKind::Folding)
+    {
+      for (int f : node.discardedOriginalFaces)
+        if (f >= 0 && f < nf && role->GetValue(f) == -1)
+        {
+          role->SetValue(f, 1);
+          depth->SetValue(f, node.depth);
+        }
+    }
+    else if (node.kind == foldingmeshes::FoldingNodeKind::Leaf)
+    {
+      const foldingmeshes::FoldingLeafMesh& m = node.mesh;
+      for (int t = 0; t < m.NumberOfFaces(); ++t)
+      {
+        const int f = m.originalFaceIds[t];
+        if (f < 0 || f >= nf)
+          continue;
+        const auto& tri = m.triangles[t];
+        const bool tear = m.tearMask[tri[0]] || m.tearMask[tri[1]] || m.tearMask[tri[2]];
+        leafId->SetValue(f, i);
+        depth->SetValue(f, node.depth);
+        role->SetValue(f, tear ? 2 : 0);
+      }
+    }
+  }
+  segmentation->GetCellData()->AddArray(leafId);
+  segmentation->GetCellData()->AddArray(depth);
+  segmentation->GetCellData()->AddArray(role);
+  segmentation->GetCellData()->SetActiveScalars("FoldingLeafId");
+  this->UpdateProgress(1.0);
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+void vtkFoldingTreeBuilder::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "Tolerance: " << this->Tolerance << "\n";
+  os << indent
+     << "ToleranceMode: " << (this->ToleranceMode == ABSOLUTE ? "Absolute" : "RelativeToDiagonal")
+     << "\n";
+  os << indent << "KeepSide: " << (this->KeepSide == FEWER_FACES ? "FewerFaces" : "MoreFaces")
+     << "\n";
+  os << indent << "UseMinimumFaces: " << this->UseMinimumFaces << "\n";
+  os << indent << "MinimumFaces: " << this->MinimumFaces << "\n";
+  os << indent << "UseMinimumAreaFraction: " << this->UseMinimumAreaFraction << "\n";
+  os << indent << "MinimumAreaFraction: " << this->MinimumAreaFraction << "\n";
+  os << indent << "UseMaximumFolds: " << this->UseMaximumFolds << "\n";
+  os << indent << "MaximumFolds: " << this->MaximumFolds << "\n";
+  os << indent << "RequireMeaningfulSymmetry: " << this->RequireMeaningfulSymmetry << "\n";
+  os << indent << "ConnectNearbyParts: " << this->ConnectNearbyParts << "\n";
+  os << indent << "Method: " << (this->Method == PAPER ? "Paper" : "Robust") << "\n";
+  os << indent << "RandomSeed: " << this->RandomSeed << "\n";
+  os << indent << "ToleranceLength: " << this->ToleranceLength << "\n";
+  os << indent << "OriginalFaces: " << this->OriginalFaces << "\n";
+  os << indent << "StoredFaces: " << this->StoredFaces << "\n";
+  os << indent << "Compression: " << this->Compression << "\n";
+  os << indent << "TreeHeight: " << this->TreeHeight << "\n";
+}

@@ -1,0 +1,209 @@
+/**
+ * @class   vtkFoldingTreeBuilder
+ * @brief   folds a triangle mesh into a folding tree of non-redundant leaves and mirror
+ *          planes (Folding meshes, SGP 2006, sections 4.1-4.2)
+ *
+ * The filter triangulates its vtkPolyData input and runs the core builder
+ * (Filters/Core/FoldingTreeBuilder.h): in preorder, a region that meets a stop criterion
+ * becomes a leaf; otherwise the largest connected symmetric region S and its plane p are
+ * detected (vtkSymmetryPlaneDetector's algorithm) with the node's tolerance epsilon; when S
+ * is the whole region the node is a folding node (the kept half is built recursively with
+ * epsilon / 2), else a segmentation node with children fold(S) and one subtree per connected
+ * component of the remaining faces. See the core header for the exact rules (trimming,
+ * plane snapping, the "no meaningful symmetry" rule).
+ *
+ * Output 0 (vtkMultiBlockDataSet), the folding tree. Names and arrays below are API
+ * (vtkFoldingTreeUnfolder reads them; a tree read back from a .vtm file is the same):
+ * - top level: block 0 = the root node, block 1 = "Tree", a vtkPolyData holding one marker
+ *   point (the centroid of the stored points, no cell) whose field data holds OriginalFaces,
+ * OriginalPoints, DroppedFaces, StoredFaces, StoredPoints, Compression (1 - stored/original),
+ * TreeHeight, NumberOfNodes, NumberOfLeaves, NumberOfFolds, MaximumFoldsOnPath, OriginalArea,
+ * BuildSeconds, RootEpsilon, Diagonal, Aborted.
+ * - every node block is named after its node index i (preorder, as in the core tree):
+ *   "Leaf i", "Fold i (depth d)", "Segmentation i (depth d)".
+ * - a leaf is a vtkPolyData (the leaf mesh: double points, triangles) carrying every point
+ *   and cell array of the triangulated input (values copied by original id, active
+ *   attributes kept), point arrays "OriginalPointId" (vtkIdType), "TearMask" and
+ *   "PlaneMask" (vtkTypeUInt64Array, bit d = tree level d, see Core/FoldingTree.h),
+ *   "Projected" (unsigned char 0/1), cell array "OriginalCellId" (vtkIdType), and field data
+ *   FoldingNodeKind = 0, FoldingNodeIndex, FoldingNodeDepth, FoldingEpsilon,
+ *   FoldingFoldsAbove, FoldingRegionFaces, FoldingRegionArea, FoldingRegionOriginalFaces,
+ *   SymmetricAreaFraction, DetectionRun, LeafReason (int, Core's LeafReason enum),
+ *   LeafReasonName (string) and the mirrored-flag records MirroredFlagPoint,
+ *   MirroredFlagLevel, MirroredFlagKind (0 tear, 1 plane), MirroredFlagMask (uint64).
+ * - a folding node is a vtkMultiBlockDataSet of two blocks: 0 = the child subtree, 1 =
+ *   "Plane", a vtkPolyData quad on the plane covering the child's projection (10% margin;
+ *   the unfolder ignores its geometry) whose field data holds the node's metadata:
+ *   FoldingNodeKind = 1, the common node arrays above, FoldingPlaneOrigin,
+ *   FoldingPlaneNormal (3 components, the normal points into the kept half),
+ *   FoldingDiscardedFaces, FoldingProjectedPoints, FoldingDiscardedOriginalFaces.
+ * - a segmentation node is a vtkMultiBlockDataSet of its children (fold(S) first) followed by
+ *   "Node", a vtkPolyData with one marker point (the centroid of the node's stored points, no
+ *   cell) carrying the node's metadata (FoldingNodeKind = 2 and the common node arrays).
+ *   Metadata lives on polydata blocks because XML multiblock writers drop the field data of
+ *   composite nodes, and those blocks are not empty because vtkXMLMultiBlockDataWriter skips
+ *   data sets without points.
+ * - readers identify nodes by structure and FoldingNodeKind, not by block names; node indices
+ *   come from FoldingNodeIndex (see vtkFoldingTreeIO.h).
+ *
+ * Output 1 (vtkPolyData): the triangulated input with cell arrays "FoldingLeafId" (node index
+ * of the leaf storing the face; -1 for faces removed by a fold or not stored: the tree does
+ * not record which leaf face mirrors onto a removed face), "FoldingDepth" (depth of that
+ * leaf, or of the folding node that removed the face), "FoldingRole" (0 kept in a leaf,
+ * 1 removed by a fold - mirrored away, or collapsed by the projection onto the plane -,
+ * 2 kept and touching a segmentation boundary (a vertex with a tear bit), -1 not stored:
+ * an input triangle with a repeated vertex). Active scalars: FoldingLeafId.
+ *
+ * Bad input (no points, no polygons, invalid mesh) is reported with vtkErrorMacro and the
+ * request fails. An abort (AbortExecute) keeps the tree built so far (Aborted = 1).
+ */
+#ifndef vtkFoldingTreeBuilder_h
+#define vtkFoldingTreeBuilder_h
+
+#include "FoldingMeshesFiltersModule.h" // for export macro
+#include "vtkPolyDataAlgorithm.h"
+
+class FOLDINGMESHESFILTERS_EXPORT vtkFoldingTreeBuilder : public vtkPolyDataAlgorithm
+{
+public:
+  static vtkFoldingTreeBuilder* New();
+  vtkTypeMacro(vtkFoldingTreeBuilder, vtkPolyDataAlgorithm);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  enum ToleranceModes
+  {
+    RELATIVE_TO_DIAGONAL = 0,
+    ABSOLUTE = 1
+  };
+  enum KeepSides
+  {
+    MORE_FACES = 0,
+    FEWER_FACES = 1
+  };
+  enum Methods
+  {
+    ROBUST = 0,
+    PAPER = 1
+  };
+
+  ///@{
+  /**
+   * The root tolerance epsilon (halved below every folding node). With ToleranceMode
+   * RELATIVE_TO_DIAGONAL (default) a fraction of the bounding-box diagonal (default 0.02,
+   * the paper's 2%); with ABSOLUTE a length. Clamped to [1e-12, 1e30].
+   */
+  vtkSetClampMacro(Tolerance, double, 1e-12, 1e30);
+  vtkGetMacro(Tolerance, double);
+  vtkSetClampMacro(ToleranceMode, int, RELATIVE_TO_DIAGONAL, ABSOLUTE);
+  vtkGetMacro(ToleranceMode, int);
+  ///@}
+
+  ///@{
+  /** Which half a fold keeps: MORE_FACES (default, the paper's) or FEWER_FACES (storage). */
+  vtkSetClampMacro(KeepSide, int, MORE_FACES, FEWER_FACES);
+  vtkGetMacro(KeepSide, int);
+  ///@}
+
+  ///@{
+  /** Leaf when a region has fewer than MinimumFaces faces (default on, 50; range 1..1e9). */
+  vtkSetMacro(UseMinimumFaces, bool);
+  vtkGetMacro(UseMinimumFaces, bool);
+  vtkBooleanMacro(UseMinimumFaces, bool);
+  vtkSetClampMacro(MinimumFaces, int, 1, 1000000000);
+  vtkGetMacro(MinimumFaces, int);
+  ///@}
+
+  ///@{
+  /**
+   * Leaf when a region's area is below MinimumAreaFraction of the input's area (default on,
+   * 0.05, the paper's 5%; range 0..1).
+   */
+  vtkSetMacro(UseMinimumAreaFraction, bool);
+  vtkGetMacro(UseMinimumAreaFraction, bool);
+  vtkBooleanMacro(UseMinimumAreaFraction, bool);
+  vtkSetClampMacro(MinimumAreaFraction, double, 0.0, 1.0);
+  vtkGetMacro(MinimumAreaFraction, double);
+  ///@}
+
+  ///@{
+  /** Leaf when MaximumFolds folds lie above a region (default on, 8; range 0..63). */
+  vtkSetMacro(UseMaximumFolds, bool);
+  vtkGetMacro(UseMaximumFolds, bool);
+  vtkBooleanMacro(UseMaximumFolds, bool);
+  vtkSetClampMacro(MaximumFolds, int, 0, 63);
+  vtkGetMacro(MaximumFolds, int);
+  ///@}
+
+  ///@{
+  /**
+   * Leaf when no meaningful symmetric region is found (default on; the rule is documented in
+   * Core/FoldingTreeBuilder.h: detection's SymmetryFound, S of at least MinimumFaces faces,
+   * a plane not already used on the path). Off: any non-empty S is folded.
+   */
+  vtkSetMacro(RequireMeaningfulSymmetry, bool);
+  vtkGetMacro(RequireMeaningfulSymmetry, bool);
+  vtkBooleanMacro(RequireMeaningfulSymmetry, bool);
+  ///@}
+
+  ///@{
+  /** Let regions and components span parts that touch within epsilon (default on). */
+  vtkSetMacro(ConnectNearbyParts, bool);
+  vtkGetMacro(ConnectNearbyParts, bool);
+  vtkBooleanMacro(ConnectNearbyParts, bool);
+  ///@}
+
+  ///@{
+  /** Symmetry detection: ROBUST (default, several starts) or PAPER (one start). */
+  vtkSetClampMacro(Method, int, ROBUST, PAPER);
+  vtkGetMacro(Method, int);
+  ///@}
+
+  ///@{
+  /** Seed of the detection's candidate sampling (default 1); deterministic for a seed. */
+  vtkSetMacro(RandomSeed, int);
+  vtkGetMacro(RandomSeed, int);
+  ///@}
+
+  ///@{
+  /** Results of the last run: root epsilon as a length, faces, stored faces, compression. */
+  vtkGetMacro(ToleranceLength, double);
+  vtkGetMacro(OriginalFaces, int);
+  vtkGetMacro(StoredFaces, int);
+  vtkGetMacro(Compression, double);
+  vtkGetMacro(TreeHeight, int);
+  ///@}
+
+protected:
+  vtkFoldingTreeBuilder();
+  ~vtkFoldingTreeBuilder() override;
+
+  int FillInputPortInformation(int port, vtkInformation* info) override;
+  int FillOutputPortInformation(int port, vtkInformation* info) override;
+  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+
+  double Tolerance = 0.02;
+  int ToleranceMode = RELATIVE_TO_DIAGONAL;
+  int KeepSide = MORE_FACES;
+  bool UseMinimumFaces = true;
+  int MinimumFaces = 50;
+  bool UseMinimumAreaFraction = true;
+  double MinimumAreaFraction = 0.05;
+  bool UseMaximumFolds = true;
+  int MaximumFolds = 8;
+  bool RequireMeaningfulSymmetry = true;
+  bool ConnectNearbyParts = true;
+  int Method = ROBUST;
+  int RandomSeed = 1;
+
+  double ToleranceLength = 0.0;
+  int OriginalFaces = 0;
+  int StoredFaces = 0;
+  double Compression = 0.0;
+  int TreeHeight = 0;
+
+private:
+  vtkFoldingTreeBuilder(const vtkFoldingTreeBuilder&) = delete;
+  void operator=(const vtkFoldingTreeBuilder&) = delete;
+};
+
+#endif

@@ -1,0 +1,401 @@
+#include "vtkFoldingTreeUnfolder.h"
+
+#include "Core/FoldingTreeUnfolder.h"
+#include "vtkFoldingTreeIO.h"
+
+#include <vtkCellArray.h>
+#include <vtkCellData.h>
+#include <vtkDataArray.h>
+#include <vtkDoubleArray.h>
+#include <vtkFieldData.h>
+#include <vtkIdTypeArray.h>
+#include <vtkInformation.h>
+#include <vtkInformationVector.h>
+#include <vtkIntArray.h>
+#include <vtkMultiBlockDataSet.h>
+#include <vtkNew.h>
+#include <vtkObjectFactory.h>
+#include <vtkPointData.h>
+#include <vtkPoints.h>
+#include <vtkPolyData.h>
+#include <vtkSmartPointer.h>
+#include <vtkTypeUInt64Array.h>
+#include <vtkUnsignedCharArray.h>
+
+#include <cstring>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+vtkStandardNewMacro(vtkFoldingTreeUnfolder);
+
+namespace
+{
+using foldingmeshes::Vec3;
+
+void AddValue(vtkFieldData* fd, const char* name, double value)
+{
+  vtkNew<vtkDoubleArray> a;
+  a->SetName(name);
+  a->SetNumberOfTuples(1);
+  a->SetValue(0, value);
+  fd->AddArray(a);
+}
+
+bool IsTreeArray(const char* name, bool points)
+{
+  static const char* const pointNames[] = {
+    "OriginalPointId", "TearMask", "PlaneMask", "Projected"
+  };
+  if (points)
+  {
+    for (const char* n : pointNames)
+      if (std::strcmp(name, n) == 0)
+        return true;
+    return false;
+  }
+  return std::strcmp(name, "OriginalCellId") == 0 || std::strcmp(name, "FoldingLeafId") == 0 ||
+    std::strcmp(name, "FoldingCopy") == 0 || std::strcmp(name, "FoldingMirrored") == 0 ||
+    std::strcmp(name, "FoldingMirrorMask") == 0 || std::strcmp(name, "FoldingFilled") == 0;
+}
+
+/// Names of the arrays present in every leaf with the same type, components and size.
+std::vector<std::string> CommonArrays(const std::vector<vtkPolyData*>& leaves, bool points)
+{
+  std::vector<std::string> names;
+  vtkPolyData* first = nullptr;
+  for (vtkPolyData* leaf : leaves)
+    if (leaf && !first)
+      first = leaf;
+  if (!first)
+    return names;
+  auto attributes = [points](vtkPolyData* pd) -> vtkDataSetAttributes*
+  {
+    return points ? static_cast<vtkDataSetAttributes*>(pd->GetPointData())
+                  : static_cast<vtkDataSetAttributes*>(pd->GetCellData());
+  };
+  vtkDataSetAttributes* reference = attributes(first);
+  for (int a = 0; a < reference->GetNumberOfArrays(); ++a)
+  {
+    vtkAbstractArray* ref = reference->GetAbstractArray(a);
+    if (!ref || !ref->GetName() || IsTreeArray(ref->GetName(), points))
+      continue;
+    bool everywhere = true;
+    for (vtkPolyData* leaf : leaves)
+    {
+      if (!leaf)
+        continue;
+      vtkAbstractArray* other = attributes(leaf)->GetAbstractArray(ref->GetName());
+      const vtkIdType n = points ? leaf->GetNumberOfPoints() : leaf->GetNumberOfCells();
+      if (!other || other->GetDataType() != ref->GetDataType() ||
+        other->GetNumberOfComponents() != ref->GetNumberOfComponents() ||
+        other->GetNumberOfTuples() != n)
+      {
+        everywhere = false;
+        break;
+      }
+    }
+    if (everywhere)
+      names.emplace_back(ref->GetName());
+  }
+  return names;
+}
+
+/// Fills `out` (a vtkDataSetAttributes of n tuples) with the arrays `names` of the leaves:
+/// tuple i comes from leaf leafOf[i], local tuple localOf[i]; vectors are mapped by the
+/// linear map of copy copyOf[i].
+void CarryArrays(const std::vector<std::string>& names,
+  const std::vector<vtkPolyData*>& leaves,
+  bool points,
+  const std::vector<int>& leafOf,
+  const std::vector<vtkIdType>& localOf,
+  const std::vector<int>& copyOf,
+  const std::vector<foldingmeshes::UnfoldCopy>& copies,
+  vtkDataSetAttributes* out)
+{
+  const vtkIdType n = static_cast<vtkIdType>(leafOf.size());
+  auto attributes = [points](vtkPolyData* pd) -> vtkDataSetAttributes*
+  {
+    return points ? static_cast<vtkDataSetAttributes*>(pd->GetPointData())
+                  : static_cast<vtkDataSetAttributes*>(pd->GetCellData());
+  };
+  vtkPolyData* first = nullptr;
+  for (vtkPolyData* leaf : leaves)
+    if (leaf && !first)
+      first = leaf;
+  if (!first)
+    return;
+  for (const std::string& name : names)
+  {
+    vtkAbstractArray* ref = attributes(first)->GetAbstractArray(name.c_str());
+    vtkSmartPointer<vtkAbstractArray> array = vtk::TakeSmartPointer(ref->NewInstance());
+    array->SetName(name.c_str());
+    array->SetNumberOfComponents(ref->GetNumberOfComponents());
+    for (int c = 0; c < ref->GetNumberOfComponents(); ++c)
+      if (ref->GetComponentName(c))
+        array->SetComponentName(c, ref->GetComponentName(c));
+    array->SetNumberOfTuples(n);
+    vtkDataArray* data = vtkDataArray::SafeDownCast(array);
+    const bool vector = data && data->GetNumberOfComponents() == 3 &&
+      (data->GetDataType() == VTK_FLOAT || data->GetDataType() == VTK_DOUBLE) &&
+      !foldingmeshes::IsIdOrMaskArrayName(name.c_str());
+    std::vector<vtkAbstractArray*> sources(leaves.size(), nullptr);
+    for (size_t l = 0; l < leaves.size(); ++l)
+      if (leaves[l])
+        sources[l] = attributes(leaves[l])->GetAbstractArray(name.c_str());
+    for (vtkIdType i = 0; i < n; ++i)
+    {
+      vtkAbstractArray* source = sources[leafOf[i]];
+      array->SetTuple(i, localOf[i], source);
+      if (vector)
+      {
+        const foldingmeshes::UnfoldCopy& copy = copies[copyOf[i]];
+        double v[3];
+        data->GetTuple(i, v);
+        const Vec3 w = copy.linear * Vec3(v[0], v[1], v[2]);
+        data->SetTuple3(i, w.x(), w.y(), w.z());
+      }
+    }
+    out->AddArray(array);
+  }
+  for (int attribute = 0; attribute < vtkDataSetAttributes::NUM_ATTRIBUTES; ++attribute)
+    if (vtkAbstractArray* active = attributes(first)->GetAbstractAttribute(attribute))
+      if (active->GetName() && out->GetAbstractArray(active->GetName()))
+        out->SetActiveAttribute(active->GetName(), attribute);
+}
+}
+
+//------------------------------------------------------------------------------
+vtkFoldingTreeUnfolder::vtkFoldingTreeUnfolder()
+{
+  this->SetNumberOfInputPorts(1);
+  this->SetNumberOfOutputPorts(1);
+}
+
+vtkFoldingTreeUnfolder::~vtkFoldingTreeUnfolder() = default;
+
+//------------------------------------------------------------------------------
+int vtkFoldingTreeUnfolder::FillInputPortInformation(int, vtkInformation* info)
+{
+  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkMultiBlockDataSet");
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+int vtkFoldingTreeUnfolder::RequestData(vtkInformation*,
+  vtkInformationVector** inputVector,
+  vtkInformationVector* outputVector)
+{
+  vtkMultiBlockDataSet* input = vtkMultiBlockDataSet::GetData(inputVector[0], 0);
+  vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
+  this->OpenGapCount = this->StitchedVertices = this->OpenEdges = 0;
+  this->OpenGapLength = 0.0;
+  if (!input || !output)
+  {
+    vtkErrorMacro("Missing input multiblock or output poly data.");
+    return 0;
+  }
+  foldingmeshes::FoldingTree tree;
+  std::vector<vtkPolyData*> leaves;
+  std::string error;
+  if (!foldingmeshes::MultiBlockToFoldingTree(input, tree, &leaves, error))
+  {
+    vtkErrorMacro("Malformed folding tree: " << error << ".");
+    return 0;
+  }
+
+  foldingmeshes::UnfoldOptions options;
+  options.stitch = this->Stitch;
+  options.stitchToleranceScale = this->StitchToleranceScale;
+  options.zipper = this->Zipper;
+  options.fillSeamGaps = this->FillSeamGaps;
+  options.smoothingIterations = this->SmoothingIterations;
+  options.smoothingWeight = this->SmoothingWeight;
+  options.progress = [this](double p)
+  {
+    this->UpdateProgress(0.9 * p);
+    return !this->GetAbortExecute();
+  };
+  foldingmeshes::UnfoldedMesh mesh;
+  if (!foldingmeshes::UnfoldFoldingTree(tree, options, mesh, error))
+  {
+    vtkErrorMacro("Could not unfold the folding tree: " << error << ".");
+    return 0;
+  }
+  if (mesh.aborted)
+  {
+    vtkWarningMacro("Unfolding aborted.");
+    return 1;
+  }
+
+  const vtkIdType np = mesh.NumberOfPoints();
+  const vtkIdType nf = mesh.NumberOfFaces();
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  points->SetNumberOfPoints(np);
+  for (vtkIdType i = 0; i < np; ++i)
+    points->SetPoint(i, mesh.points[i].data());
+  output->SetPoints(points);
+  vtkNew<vtkCellArray> polys;
+  polys->AllocateExact(nf, 3 * nf);
+  for (const auto& t : mesh.triangles)
+  {
+    const vtkIdType ids[3] = { t[0], t[1], t[2] };
+    polys->InsertNextCell(3, ids);
+  }
+  output->SetPolys(polys);
+
+  // Where every output point / face takes its leaf attributes from.
+  const int nn = tree.NumberOfNodes();
+  std::vector<std::unordered_map<int, vtkIdType>> pointOf(nn), faceOf(nn);
+  std::unordered_map<int, std::pair<int, vtkIdType>> anyPoint;
+  for (int l = 0; l < nn; ++l)
+  {
+    const foldingmeshes::FoldingLeafMesh& m = tree.nodes[l].mesh;
+    for (int i = m.NumberOfPoints() - 1; i >= 0; --i) // the first one wins
+    {
+      pointOf[l][m.originalPointIds[i]] = i;
+      anyPoint[m.originalPointIds[i]] = { l, i };
+    }
+    for (int f = m.NumberOfFaces() - 1; f >= 0; --f)
+      faceOf[l][m.originalFaceIds[f]] = f;
+  }
+  std::vector<int> pointLeaf(np), pointCopy(np), faceLeaf(nf), faceCopy(nf);
+  std::vector<vtkIdType> pointLocal(np), faceLocal(nf);
+  for (vtkIdType i = 0; i < np; ++i)
+  {
+    const int copy = mesh.pointCopy[i];
+    int leaf = mesh.copies[copy].leaf;
+    auto it = pointOf[leaf].find(mesh.pointOriginalIds[i]);
+    vtkIdType local = 0;
+    if (it != pointOf[leaf].end())
+      local = it->second;
+    else
+    {
+      auto any = anyPoint.find(mesh.pointOriginalIds[i]);
+      if (any == anyPoint.end())
+      {
+        vtkErrorMacro("Unfolded point " << i << " has an original id found in no leaf.");
+        return 0;
+      }
+      leaf = any->second.first;
+      local = any->second.second;
+    }
+    pointLeaf[i] = leaf;
+    pointLocal[i] = local;
+    pointCopy[i] = copy;
+  }
+  for (vtkIdType f = 0; f < nf; ++f)
+  {
+    const int leaf = mesh.faceLeaf[f];
+    auto it = faceOf[leaf].find(mesh.faceOriginalIds[f]);
+    if (it == faceOf[leaf].end())
+    {
+      vtkErrorMacro("Unfolded face " << f << " has an original id not found in its leaf.");
+      return 0;
+    }
+    faceLeaf[f] = leaf;
+    faceLocal[f] = it->second;
+    faceCopy[f] = mesh.faceCopy[f];
+  }
+  CarryArrays(CommonArrays(leaves, true),
+    leaves,
+    true,
+    pointLeaf,
+    pointLocal,
+    pointCopy,
+    mesh.copies,
+    output->GetPointData());
+  CarryArrays(CommonArrays(leaves, false),
+    leaves,
+    false,
+    faceLeaf,
+    faceLocal,
+    faceCopy,
+    mesh.copies,
+    output->GetCellData());
+
+  vtkNew<vtkIdTypeArray> pointIds, cellIds;
+  pointIds->SetName("OriginalPointId");
+  pointIds->SetNumberOfTuples(np);
+  for (vtkIdType i = 0; i < np; ++i)
+    pointIds->SetValue(i, mesh.pointOriginalIds[i]);
+  output->GetPointData()->AddArray(pointIds);
+  cellIds->SetName("OriginalCellId");
+  cellIds->SetNumberOfTuples(nf);
+  vtkNew<vtkIntArray> leafId, copyId;
+  vtkNew<vtkUnsignedCharArray> mirrored, filled;
+  leafId->SetName("FoldingLeafId");
+  copyId->SetName("FoldingCopy");
+  mirrored->SetName("FoldingMirrored");
+  filled->SetName("FoldingFilled");
+  leafId->SetNumberOfTuples(nf);
+  copyId->SetNumberOfTuples(nf);
+  mirrored->SetNumberOfTuples(nf);
+  filled->SetNumberOfTuples(nf);
+  // FoldingCopy numbers the copies of each leaf by increasing mirror mask (0 = the stored
+  // leaf itself, mask 0).
+  std::vector<int> copyRank(mesh.copies.size(), 0);
+  for (size_t c = 0; c < mesh.copies.size(); ++c)
+    for (size_t d = 0; d < mesh.copies.size(); ++d)
+      if (mesh.copies[d].leaf == mesh.copies[c].leaf &&
+        (mesh.copies[d].mirrorMask < mesh.copies[c].mirrorMask ||
+          (mesh.copies[d].mirrorMask == mesh.copies[c].mirrorMask && d < c)))
+        ++copyRank[c];
+  vtkNew<vtkTypeUInt64Array> mirrorMask;
+  mirrorMask->SetName("FoldingMirrorMask");
+  mirrorMask->SetNumberOfTuples(nf);
+  for (vtkIdType f = 0; f < nf; ++f)
+  {
+    cellIds->SetValue(f, mesh.faceOriginalIds[f]);
+    leafId->SetValue(f, mesh.faceLeaf[f]);
+    copyId->SetValue(f, copyRank[mesh.faceCopy[f]]);
+    mirrorMask->SetValue(f, mesh.copies[mesh.faceCopy[f]].mirrorMask);
+    mirrored->SetValue(f, mesh.faceMirrored[f] ? 1 : 0);
+    filled->SetValue(f, f < static_cast<vtkIdType>(mesh.faceFilled.size()) && mesh.faceFilled[f]);
+  }
+  output->GetCellData()->AddArray(cellIds);
+  output->GetCellData()->AddArray(leafId);
+  output->GetCellData()->AddArray(copyId);
+  output->GetCellData()->AddArray(mirrored);
+  output->GetCellData()->AddArray(mirrorMask);
+  output->GetCellData()->AddArray(filled);
+
+  vtkFieldData* fd = output->GetFieldData();
+  AddValue(fd, "UnfoldedFaces", static_cast<double>(nf));
+  AddValue(fd, "UnfoldedPoints", static_cast<double>(np));
+  AddValue(fd, "NumberOfCopies", static_cast<double>(mesh.copies.size()));
+  AddValue(fd, "PlaneMergedVertices", mesh.planeMergedVertices);
+  AddValue(fd, "StitchedVertices", mesh.stitchedVertices);
+  AddValue(fd, "UnmatchedTearVertices", mesh.unmatchedTearVertices);
+  AddValue(fd, "OpenGapCount", mesh.gapEdges);
+  AddValue(fd, "OpenGapLength", mesh.gapLength);
+  AddValue(fd, "FilledFaces", mesh.filledFaces);
+  AddValue(fd, "OpenEdges", mesh.openEdges);
+  AddValue(fd, "NonManifoldEdges", mesh.nonManifoldEdges);
+  AddValue(fd, "RootEpsilon", tree.rootEpsilon);
+  AddValue(fd, "Diagonal", tree.diagonal);
+
+  this->OpenGapCount = mesh.gapEdges;
+  this->OpenGapLength = mesh.gapLength;
+  this->StitchedVertices = mesh.stitchedVertices;
+  this->OpenEdges = mesh.openEdges;
+  this->UpdateProgress(1.0);
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+void vtkFoldingTreeUnfolder::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "Stitch: " << this->Stitch << "\n";
+  os << indent << "StitchToleranceScale: " << this->StitchToleranceScale << "\n";
+  os << indent << "Zipper: " << this->Zipper << "\n";
+  os << indent << "FillSeamGaps: " << this->FillSeamGaps << "\n";
+  os << indent << "SmoothingIterations: " << this->SmoothingIterations << "\n";
+  os << indent << "SmoothingWeight: " << this->SmoothingWeight << "\n";
+  os << indent << "OpenGapCount: " << this->OpenGapCount << "\n";
+  os << indent << "OpenGapLength: " << this->OpenGapLength << "\n";
+  os << indent << "StitchedVertices: " << this->StitchedVertices << "\n";
+  os << indent << "OpenEdges: " << this->OpenEdges << "\n";
+}

@@ -1,0 +1,118 @@
+/**
+ * @class   vtkFoldingTreeUnfolder
+ * @brief   reconstructs the mesh from a folding tree: postorder unfolding, closed fold
+ *          lines, stitched and smoothed tears (Folding meshes, SGP 2006, section 4.3)
+ *
+ * Input: a folding tree as vtkFoldingTreeBuilder writes it (output 0), directly or read back
+ * from a .vtm file (the encoding is documented in vtkFoldingTreeBuilder.h). The core unfolder
+ * (Filters/Core/FoldingTreeUnfolder.h) mirrors every folding node's child through its plane
+ * (reversing the mirrored triangles and merging the fold-line vertices), unites the children
+ * of segmentation nodes and, with Stitch on, stitches and smooths their tears.
+ *
+ * Output (vtkPolyData):
+ * - every point and cell array the leaves carry (those present in all leaves with the same
+ *   type and number of components) on every copy. Floating-point 3-component arrays are
+ *   vectors: they are multiplied by the copy's linear map (reflected on mirrored copies),
+ *   except arrays named like ids or masks (names ending in Id/Ids/ID/IDs or containing
+ *   Mask). The builder's own TearMask, PlaneMask and Projected point arrays are not carried.
+ *   A point merged by stitching takes the values of its lowest copy.
+ * - point array "OriginalPointId" (input point id), cell arrays "OriginalCellId",
+ *   "FoldingLeafId" (node index of the leaf), "FoldingCopy" (rank of the copy among the
+ *   copies of that leaf ordered by mirror mask: 0 = the stored leaf itself),
+ *   "FoldingMirrorMask" (vtkTypeUInt64Array, bit d set when the copy was reflected by the
+ *   folding node at depth d), "FoldingMirrored" (1 for an odd number of reflections),
+ *   "FoldingFilled" (1: a triangle added to fill a seam gap; its ids and copy are those of a
+ *   neighbouring face).
+ * - field data: "UnfoldedFaces", "UnfoldedPoints", "NumberOfCopies", "PlaneMergedVertices",
+ *   "StitchedVertices", "UnmatchedTearVertices", "OpenGapCount" (boundary edges left between
+ *   tear vertices), "OpenGapLength", "FilledFaces", "OpenEdges", "NonManifoldEdges" and the
+ *   tree's "RootEpsilon" and "Diagonal".
+ *
+ * A malformed tree (missing plane metadata, wrong node kinds, a block that is not polydata,
+ * wrong array sizes) is reported with vtkErrorMacro and the request fails.
+ */
+#ifndef vtkFoldingTreeUnfolder_h
+#define vtkFoldingTreeUnfolder_h
+
+#include "FoldingMeshesFiltersModule.h" // for export macro
+#include "vtkPolyDataAlgorithm.h"
+
+class FOLDINGMESHESFILTERS_EXPORT vtkFoldingTreeUnfolder : public vtkPolyDataAlgorithm
+{
+public:
+  static vtkFoldingTreeUnfolder* New();
+  vtkTypeMacro(vtkFoldingTreeUnfolder, vtkPolyDataAlgorithm);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  ///@{
+  /** Stitch and smooth the tears at segmentation nodes (default on); off: the raw union. */
+  vtkSetMacro(Stitch, bool);
+  vtkGetMacro(Stitch, bool);
+  vtkBooleanMacro(Stitch, bool);
+  ///@}
+
+  ///@{
+  /**
+   * Tear vertices of different children closer than StitchToleranceScale times the
+   * segmentation node's epsilon may be merged (default 1, range 0..100).
+   */
+  vtkSetClampMacro(StitchToleranceScale, double, 0.0, 100.0);
+  vtkGetMacro(StitchToleranceScale, double);
+  ///@}
+
+  ///@{
+  /** Insert unpaired tear vertices into open seam edges (default on). */
+  vtkSetMacro(Zipper, bool);
+  vtkGetMacro(Zipper, bool);
+  vtkBooleanMacro(Zipper, bool);
+  ///@}
+
+  ///@{
+  /** Fill the small boundary loops left along seams (default on). */
+  vtkSetMacro(FillSeamGaps, bool);
+  vtkGetMacro(FillSeamGaps, bool);
+  vtkBooleanMacro(FillSeamGaps, bool);
+  ///@}
+
+  ///@{
+  /** Constrained Laplacian smoothing of the seams: iterations (default 3, range 0..1000). */
+  vtkSetClampMacro(SmoothingIterations, int, 0, 1000);
+  vtkGetMacro(SmoothingIterations, int);
+  /** ... and the step weight per iteration (default 0.5, range 0..1). */
+  vtkSetClampMacro(SmoothingWeight, double, 0.0, 1.0);
+  vtkGetMacro(SmoothingWeight, double);
+  ///@}
+
+  ///@{
+  /** Results of the last run. */
+  vtkGetMacro(OpenGapCount, int);
+  vtkGetMacro(OpenGapLength, double);
+  vtkGetMacro(StitchedVertices, int);
+  vtkGetMacro(OpenEdges, int);
+  ///@}
+
+protected:
+  vtkFoldingTreeUnfolder();
+  ~vtkFoldingTreeUnfolder() override;
+
+  int FillInputPortInformation(int port, vtkInformation* info) override;
+  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+
+  bool Stitch = true;
+  double StitchToleranceScale = 1.0;
+  bool Zipper = true;
+  bool FillSeamGaps = true;
+  int SmoothingIterations = 3;
+  double SmoothingWeight = 0.5;
+
+  int OpenGapCount = 0;
+  double OpenGapLength = 0.0;
+  int StitchedVertices = 0;
+  int OpenEdges = 0;
+
+private:
+  vtkFoldingTreeUnfolder(const vtkFoldingTreeUnfolder&) = delete;
+  void operator=(const vtkFoldingTreeUnfolder&) = delete;
+};
+
+#endif

@@ -1,0 +1,243 @@
+// The paper's Table 1, side by side: per mesh, original faces, non-redundant (stored) faces,
+// compression, tree height, build time, unfold time, symmetric Hausdorff distance between
+// the input and unfold(fold(input)) as a fraction of the bounding-box diagonal (max, and the
+// mean over the vertices of both meshes), open edges before/after, and - for the Table 1
+// models, matched by file name - the paper's row. Default builder and unfolder options (root
+// epsilon 2% of the diagonal, keep the half with more faces, 5% area stop). Not a test:
+// numbers for humans and closing notes.
+//
+//   BenchmarkFoldingTable1 [--threads N] MESH_OR_FOLDER...
+#include "MeshIO.h"
+#include "vtkFoldingTreeBuilder.h"
+#include "vtkFoldingTreeUnfolder.h"
+
+#include <vtkCellArray.h>
+#include <vtkDataArray.h>
+#include <vtkFieldData.h>
+#include <vtkGenericCell.h>
+#include <vtkMultiBlockDataSet.h>
+#include <vtkNew.h>
+#include <vtkPolyData.h>
+#include <vtkSMPThreadLocalObject.h>
+#include <vtkSMPTools.h>
+#include <vtkStaticCellLocator.h>
+
+#include <algorithm>
+#include <array>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace
+{
+using Clock = std::chrono::steady_clock;
+
+struct PaperRow
+{
+  const char* file; // file stem in ../shared/data/meshes
+  const char* model;
+  int faces, stored;
+  double compression; // percent
+  int height;
+  double seconds;
+};
+
+// Table 1 of Folding meshes (SGP 2006).
+const PaperRow PaperTable[] = {
+  { "dino_cgal", "Dino", 6638, 3142, 52.7, 3, 152 },
+  { "horse_psb397", "Horse", 3306, 2672, 19.2, 3, 24 },
+  { "chair_psb108", "Chair", 5736, 2460, 57.1, 4, 58 },
+  { "table_psb152", "Table", 5056, 1332, 73.7, 2, 160 },
+  { "hammer_oded_dec4360", "Hammer", 4360, 677, 84.5, 7, 174 },
+  { "triceratops_cgal", "Triceratops", 5660, 2447, 56.8, 7, 202 },
+  { "eagle_psb258", "Eagle", 33072, 15808, 52.2, 6, 936 },
+  { "queen_chess_quaddamage", "Queen", 3360, 600, 82.1, 4, 120 },
+};
+
+const PaperRow* FindPaperRow(const std::string& stem)
+{
+  for (const PaperRow& row : PaperTable)
+    if (stem == row.file)
+      return &row;
+  return nullptr;
+}
+
+double TreeValue(vtkMultiBlockDataSet* tree, const char* name)
+{
+  auto* info = vtkPolyData::SafeDownCast(tree->GetBlock(1));
+  vtkDataArray* a = info ? info->GetFieldData()->GetArray(name) : nullptr;
+  return a && a->GetNumberOfTuples() > 0 ? a->GetTuple1(0) : 0.0;
+}
+
+/// Edges used by exactly one polygon, vertices at identical positions counted as one.
+long long CountOpenEdges(vtkPolyData* mesh)
+{
+  std::map<std::array<double, 3>, vtkIdType> unique;
+  std::vector<vtkIdType> id(mesh->GetNumberOfPoints());
+  for (vtkIdType p = 0; p < mesh->GetNumberOfPoints(); ++p)
+  {
+    std::array<double, 3> x;
+    mesh->GetPoint(p, x.data());
+    id[p] = unique.emplace(x, static_cast<vtkIdType>(unique.size())).first->second;
+  }
+  std::map<std::pair<vtkIdType, vtkIdType>, int> edges;
+  vtkIdType n = 0;
+  const vtkIdType* pts = nullptr;
+  vtkCellArray* polys = mesh->GetPolys();
+  for (polys->InitTraversal(); polys->GetNextCell(n, pts);)
+    for (vtkIdType k = 0; k < n; ++k)
+    {
+      const vtkIdType a = id[pts[k]], b = id[pts[(k + 1) % n]];
+      if (a != b)
+        ++edges[{ std::min(a, b), std::max(a, b) }];
+    }
+  long long open = 0;
+  for (const auto& e : edges)
+    open += e.second == 1;
+  return open;
+}
+
+/// Max and sum of the distances from the points of `from` to the surface `to`.
+void PointsToSurface(vtkPolyData* from, vtkPolyData* to, double& max, double& sum)
+{
+  max = sum = 0.0;
+  if (from->GetNumberOfPoints() == 0 || to->GetNumberOfCells() == 0)
+    return;
+  vtkNew<vtkStaticCellLocator> locator;
+  locator->SetDataSet(to);
+  locator->BuildLocator();
+  std::vector<double> d(from->GetNumberOfPoints(), 0.0);
+  vtkSMPThreadLocalObject<vtkGenericCell> cells;
+  vtkSMPTools::For(0, from->GetNumberOfPoints(),
+    [&](vtkIdType begin, vtkIdType end)
+    {
+      vtkGenericCell* cell = cells.Local();
+      double x[3], closest[3], dist2 = 0.0;
+      vtkIdType cellId = -1;
+      int subId = 0;
+      for (vtkIdType p = begin; p < end; ++p)
+      {
+        from->GetPoint(p, x);
+        locator->FindClosestPoint(x, closest, cell, cellId, subId, dist2);
+        d[p] = std::sqrt(dist2);
+      }
+    });
+  for (double v : d)
+  {
+    max = std::max(max, v);
+    sum += v;
+  }
+}
+
+void Run(const std::string& path, vtkPolyData* mesh)
+{
+  const std::string stem = std::filesystem::path(path).stem().string();
+  vtkNew<vtkFoldingTreeBuilder> builder;
+  builder->SetInputData(mesh);
+  const auto t0 = Clock::now();
+  builder->Update();
+  const double build = std::chrono::duration<double>(Clock::now() - t0).count();
+  auto* tree = vtkMultiBlockDataSet::SafeDownCast(builder->GetOutputDataObject(0));
+  vtkPolyData* input = builder->GetOutput(1);
+  if (!tree || tree->GetNumberOfBlocks() < 2 || input->GetNumberOfCells() == 0)
+  {
+    std::printf("%-26s error: folding failed\n", stem.c_str());
+    return;
+  }
+  vtkNew<vtkFoldingTreeUnfolder> unfolder;
+  unfolder->SetInputData(tree);
+  const auto t1 = Clock::now();
+  unfolder->Update();
+  const double unfold = std::chrono::duration<double>(Clock::now() - t1).count();
+  vtkPolyData* unfolded = unfolder->GetOutput();
+  if (unfolded->GetNumberOfCells() == 0)
+  {
+    std::printf("%-26s error: unfolding failed\n", stem.c_str());
+    return;
+  }
+
+  double bounds[6];
+  input->GetBounds(bounds);
+  const double diagonal = std::sqrt((bounds[1] - bounds[0]) * (bounds[1] - bounds[0]) +
+    (bounds[3] - bounds[2]) * (bounds[3] - bounds[2]) +
+    (bounds[5] - bounds[4]) * (bounds[5] - bounds[4]));
+  double maxAB, sumAB, maxBA, sumBA;
+  PointsToSurface(input, unfolded, maxAB, sumAB);
+  PointsToSurface(unfolded, input, maxBA, sumBA);
+  const double hausdorff = std::max(maxAB, maxBA) / diagonal;
+  const double mean = (sumAB + sumBA) /
+    static_cast<double>(input->GetNumberOfPoints() + unfolded->GetNumberOfPoints()) / diagonal;
+  const double epsilon = TreeValue(tree, "RootEpsilon") / diagonal;
+
+  std::printf("%-26s %7d %7d %6.1f%% %3d %7.3f %7.3f %7.4f%s %8.5f %6lld %6lld",
+    stem.c_str(),
+    static_cast<int>(TreeValue(tree, "OriginalFaces")),
+    static_cast<int>(TreeValue(tree, "StoredFaces")),
+    100.0 * TreeValue(tree, "Compression"),
+    static_cast<int>(TreeValue(tree, "TreeHeight")),
+    build,
+    unfold,
+    hausdorff,
+    hausdorff <= epsilon ? " " : "!",
+    mean,
+    CountOpenEdges(input),
+    CountOpenEdges(unfolded));
+  if (const PaperRow* row = FindPaperRow(stem))
+    std::printf("  | %-11s %6d %6d %5.1f%% %3d %5.0f", row->model, row->faces, row->stored,
+      row->compression, row->height, row->seconds);
+  std::printf("\n");
+  std::fflush(stdout);
+}
+}
+
+int main(int argc, char* argv[])
+{
+  std::vector<std::string> meshes;
+  for (int i = 1; i < argc; ++i)
+  {
+    const std::string arg = argv[i];
+    if (arg == "--threads" && i + 1 < argc)
+    {
+      vtkSMPTools::SetBackend("STDThread");
+      vtkSMPTools::Initialize(std::atoi(argv[++i]));
+    }
+    else if (std::filesystem::is_directory(arg))
+    {
+      std::vector<std::string> found;
+      for (const auto& entry : std::filesystem::directory_iterator(arg))
+      {
+        const std::string ext = entry.path().extension().string();
+        if (ext == ".off" || ext == ".obj" || ext == ".ply" || ext == ".vtp" || ext == ".stl")
+          found.push_back(entry.path().string());
+      }
+      std::sort(found.begin(), found.end());
+      meshes.insert(meshes.end(), found.begin(), found.end());
+    }
+    else
+      meshes.push_back(arg);
+  }
+  std::printf("SMP backend %s, %d threads; root epsilon 2%% of the diagonal ('!' after the "
+              "Hausdorff distance: above it)\n",
+    vtkSMPTools::GetBackend(),
+    vtkSMPTools::GetEstimatedNumberOfThreads());
+  std::printf("%-26s %7s %7s %7s %3s %7s %7s %8s %8s %6s %6s  | %-11s %6s %6s %6s %3s %5s\n",
+    "mesh", "faces", "stored", "compr", "h", "build s", "unfld s", "H/diag", "mean/dg", "open<",
+    "open>", "paper", "faces", "stored", "compr", "h", "s");
+  for (const std::string& path : meshes)
+  {
+    std::string error;
+    auto mesh = foldingmeshes::ReadMesh(path, error);
+    if (!mesh)
+    {
+      std::printf("%-26s error: %s\n", path.c_str(), error.c_str());
+      continue;
+    }
+    Run(path, mesh);
+  }
+  return 0;
+}

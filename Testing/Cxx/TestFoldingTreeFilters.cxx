@@ -1,0 +1,1013 @@
+// vtkFoldingTreeBuilder and vtkFoldingTreeUnfolder (the VTK layer over the core folding tree)
+// on procedural meshes carrying a point scalar, a cell scalar and a 3-component point vector
+// (the position, which every mirror plane through the origin maps like the geometry):
+// - output 0 is a vtkMultiBlockDataSet laid out as documented in vtkFoldingTreeBuilder.h:
+//   top level (root node, "Tree"), block names "Leaf i" / "Fold i (depth d)" /
+//   "Segmentation i (depth d)" / "Plane" / "Node", node kinds, depths, epsilon halved below
+//   every fold and kept below segmentation nodes, root epsilon = 2% of the diagonal, Tree
+//   statistics; expected shapes: the three-plane shape (MinimumAreaFraction 0.13) folds three
+//   times into one leaf storing about 1/8, the bilateral blob (MaximumFolds 1) once, the blob
+//   with an asymmetric attachment becomes a segmentation node whose first child is a fold;
+// - leaves carry the input arrays with the values of their original ids, the tree arrays
+//   (OriginalPointId, TearMask/PlaneMask as vtkTypeUInt64Array, Projected, OriginalCellId);
+// - output 1: FoldingLeafId / FoldingDepth / FoldingRole consistent with the leaves;
+// - .vtm round trip: the tree written with vtkXMLMultiBlockDataWriter and read back unfolds to
+//   exactly the same mesh (points, cells, every array) as the tree in memory;
+// - unfold(fold(M)) is within the root epsilon of M (vertex-to-surface distances both ways
+//   with vtkStaticCellLocator), closed where stitched for the exactly symmetric shapes, with
+//   the carried scalars equal to the input's at the original ids and the vector reflected on
+//   mirrored copies (|v - position| small, while an unreflected copy would be far off);
+// - malformed trees (a fold's plane metadata removed, a leaf replaced by vtkImageData, a node
+//   kind changed) and bad builder input (empty mesh) fail with an ErrorEvent.
+#include "ProceduralMeshes.h"
+#include "vtkFoldingTreeBuilder.h"
+#include "vtkFoldingTreeUnfolder.h"
+
+#include <vtkCallbackCommand.h>
+#include <vtkCellArray.h>
+#include <vtkCellData.h>
+#include <vtkCommand.h>
+#include <vtkCompositeDataSet.h>
+#include <vtkDataArray.h>
+#include <vtkDoubleArray.h>
+#include <vtkExecutive.h>
+#include <vtkFieldData.h>
+#include <vtkGenericCell.h>
+#include <vtkIdList.h>
+#include <vtkImageData.h>
+#include <vtkInformation.h>
+#include <vtkIntArray.h>
+#include <vtkMultiBlockDataSet.h>
+#include <vtkNew.h>
+#include <vtkPointData.h>
+#include <vtkPoints.h>
+#include <vtkPolyData.h>
+#include <vtkStaticCellLocator.h>
+#include <vtkTypeUInt64Array.h>
+#include <vtkXMLMultiBlockDataReader.h>
+#include <vtkXMLMultiBlockDataWriter.h>
+
+#include <bitset>
+#include <cmath>
+#include <cstdio>
+#include <functional>
+#include <map>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace
+{
+namespace pm = foldingmeshes::testing;
+using Vec3 = Eigen::Vector3d;
+int failures = 0;
+
+#define EXPECT(cond, msg)                                                                          \
+  do                                                                                               \
+  {                                                                                                \
+    if (!(cond))                                                                                   \
+    {                                                                                              \
+      std::ostringstream os_;                                                                      \
+      os_ << msg;                                                                                  \
+      std::printf("FAIL (line %d): %s\n", __LINE__, os_.str().c_str());                            \
+      ++failures;                                                                                  \
+    }                                                                                              \
+  } while (0)
+
+struct EventLog
+{
+  std::vector<std::string> errors;
+  static void Callback(vtkObject*, unsigned long, void* clientData, void* callData)
+  {
+    static_cast<EventLog*>(clientData)
+      ->errors.push_back(callData ? static_cast<const char*>(callData) : "");
+  }
+};
+
+/// Updates `alg`, capturing (and silencing) its error events; returns the executive's status.
+int UpdateCapturing(vtkAlgorithm* alg, EventLog& log)
+{
+  vtkNew<vtkCallbackCommand> callback;
+  callback->SetCallback(EventLog::Callback);
+  callback->SetClientData(&log);
+  const unsigned long a = alg->AddObserver(vtkCommand::ErrorEvent, callback);
+  const unsigned long b = alg->GetExecutive()->AddObserver(vtkCommand::ErrorEvent, callback);
+  const int status = alg->GetExecutive()->Update();
+  alg->RemoveObserver(a);
+  alg->GetExecutive()->RemoveObserver(b);
+  return status;
+}
+
+double FieldValue(vtkFieldData* fd, const char* name, int component = 0)
+{
+  vtkDataArray* a = fd ? vtkDataArray::SafeDownCast(fd->GetAbstractArray(name)) : nullptr;
+  if (!a || a->GetNumberOfTuples() < 1 || component >= a->GetNumberOfComponents())
+    return std::nan("");
+  return a->GetComponent(0, component);
+}
+
+const char* BlockName(vtkMultiBlockDataSet* mb, unsigned int b)
+{
+  return mb->HasMetaData(b) ? mb->GetMetaData(b)->Get(vtkCompositeDataSet::NAME()) : nullptr;
+}
+
+/// Unit normal of triangle c (zero when degenerate).
+Vec3 FaceNormal(vtkPolyData* pd, vtkIdType c)
+{
+  vtkNew<vtkIdList> ids;
+  pd->GetCellPoints(c, ids);
+  if (ids->GetNumberOfIds() != 3)
+    return Vec3::Zero();
+  const Vec3 a(pd->GetPoint(ids->GetId(0)));
+  const Vec3 b(pd->GetPoint(ids->GetId(1)));
+  const Vec3 d(pd->GetPoint(ids->GetId(2)));
+  const Vec3 n = (b - a).cross(d - a);
+  return n.norm() > 0.0 ? Vec3(n.normalized()) : Vec3::Zero();
+}
+
+/// Input with the test arrays: "Temperature" (point, double), "Label" (cell, int) and
+/// "Position" (point vector, double = the point itself).
+vtkSmartPointer<vtkPolyData> WithArrays(vtkPolyData* mesh)
+{
+  auto pd = vtkSmartPointer<vtkPolyData>::New();
+  pd->DeepCopy(mesh);
+  const vtkIdType np = pd->GetNumberOfPoints(), nc = pd->GetNumberOfCells();
+  vtkNew<vtkDoubleArray> temperature, position;
+  temperature->SetName("Temperature");
+  temperature->SetNumberOfTuples(np);
+  position->SetName("Position");
+  position->SetNumberOfComponents(3);
+  position->SetNumberOfTuples(np);
+  for (vtkIdType i = 0; i < np; ++i)
+  {
+    double p[3];
+    pd->GetPoint(i, p);
+    temperature->SetValue(i, 1000.0 + i + 0.25 * p[0]);
+    position->SetTuple(i, p);
+  }
+  vtkNew<vtkIntArray> label;
+  label->SetName("Label");
+  label->SetNumberOfTuples(nc);
+  vtkNew<vtkDoubleArray> normal, tripleId;
+  normal->SetName("FaceNormal");
+  normal->SetNumberOfComponents(3);
+  normal->SetNumberOfTuples(nc);
+  tripleId->SetName("TripleId"); // named like ids: never reflected
+  tripleId->SetNumberOfComponents(3);
+  tripleId->SetNumberOfTuples(nc);
+  for (vtkIdType c = 0; c < nc; ++c)
+  {
+    label->SetValue(c, static_cast<int>(7 * c + 3));
+    const Vec3 n = FaceNormal(pd, c);
+    normal->SetTuple3(c, n.x(), n.y(), n.z());
+    tripleId->SetTuple3(c, static_cast<double>(c), 1.0, 2.0);
+  }
+  pd->GetCellData()->AddArray(normal);
+  pd->GetCellData()->AddArray(tripleId);
+  pd->GetPointData()->AddArray(temperature);
+  pd->GetPointData()->AddArray(position);
+  pd->GetPointData()->SetActiveVectors("Position");
+  pd->GetCellData()->AddArray(label);
+  return pd;
+}
+
+struct NodeInfo
+{
+  std::string name;
+  int kind = -1;
+  int index = -1;
+  int depth = -1;
+  double epsilon = 0.0;
+  vtkPolyData* leaf = nullptr;
+  std::vector<int> children; // positions in the list
+};
+
+/// Walks a tree node block, checking names, kinds, depths and epsilons; appends to `nodes`.
+int Walk(vtkDataObject* object,
+  const std::string& name,
+  int depth,
+  double parentEpsilon,
+  int parentKind,
+  std::vector<NodeInfo>& nodes,
+  const std::string& label)
+{
+  const int self = static_cast<int>(nodes.size());
+  nodes.emplace_back();
+  nodes[self].name = name;
+  vtkFieldData* fd = nullptr;
+  vtkMultiBlockDataSet* mb = vtkMultiBlockDataSet::SafeDownCast(object);
+  if (vtkPolyData* leaf = vtkPolyData::SafeDownCast(object))
+  {
+    nodes[self].leaf = leaf;
+    fd = leaf->GetFieldData();
+  }
+  else if (mb && mb->GetNumberOfBlocks() > 0)
+  {
+    vtkPolyData* meta = vtkPolyData::SafeDownCast(mb->GetBlock(mb->GetNumberOfBlocks() - 1));
+    EXPECT(meta, label << ": " << name << ": last block is not polydata");
+    if (!meta)
+      return self;
+    fd = meta->GetFieldData();
+    const char* metaName = BlockName(mb, mb->GetNumberOfBlocks() - 1);
+    const int kind = static_cast<int>(FieldValue(fd, "FoldingNodeKind"));
+    EXPECT(metaName && std::string(metaName) == (kind == 1 ? "Plane" : "Node"),
+      label << ": " << name << ": metadata block named " << (metaName ? metaName : "(none)"));
+    if (kind == 1)
+    {
+      EXPECT(mb->GetNumberOfBlocks() == 2,
+        label << ": " << name << ": fold with " << mb->GetNumberOfBlocks() << " blocks");
+      EXPECT(meta->GetNumberOfCells() == 1 && meta->GetNumberOfPoints() == 4,
+        label << ": " << name << ": plane glyph is not a quad");
+      Vec3 n(FieldValue(fd, "FoldingPlaneNormal", 0),
+        FieldValue(fd, "FoldingPlaneNormal", 1),
+        FieldValue(fd, "FoldingPlaneNormal", 2));
+      EXPECT(std::abs(n.norm() - 1.0) < 1e-9, label << ": " << name << ": normal not unit");
+      EXPECT(std::isfinite(FieldValue(fd, "FoldingPlaneOrigin", 2)),
+        label << ": " << name << ": no plane origin");
+    }
+    else
+    {
+      EXPECT(kind == 2 && mb->GetNumberOfBlocks() >= 3,
+        label << ": " << name << ": kind " << kind << " with " << mb->GetNumberOfBlocks()
+              << " blocks");
+    }
+  }
+  else
+  {
+    EXPECT(false, label << ": " << name << ": unexpected block type");
+    return self;
+  }
+  NodeInfo& info = nodes[self];
+  info.kind = static_cast<int>(FieldValue(fd, "FoldingNodeKind"));
+  info.index = static_cast<int>(FieldValue(fd, "FoldingNodeIndex"));
+  info.depth = static_cast<int>(FieldValue(fd, "FoldingNodeDepth"));
+  info.epsilon = FieldValue(fd, "FoldingEpsilon");
+  EXPECT(info.depth == depth, label << ": " << name << ": depth " << info.depth << " != " << depth);
+  if (parentKind >= 0)
+  {
+    const double expected = parentKind == 1 ? 0.5 * parentEpsilon : parentEpsilon;
+    EXPECT(std::abs(info.epsilon - expected) <= 1e-12 * expected,
+      label << ": " << name << ": epsilon " << info.epsilon << ", expected " << expected);
+  }
+  std::ostringstream expectedName;
+  if (info.kind == 0)
+    expectedName << "Leaf " << info.index;
+  else if (info.kind == 1)
+    expectedName << "Fold " << info.index << " (depth " << depth << ")";
+  else
+    expectedName << "Segmentation " << info.index << " (depth " << depth << ")";
+  EXPECT(name == expectedName.str(),
+    label << ": block named \"" << name << "\", expected \"" << expectedName.str() << "\"");
+  if (info.kind == 0)
+  {
+    EXPECT(std::isfinite(FieldValue(fd, "LeafReason")), label << ": " << name << ": no LeafReason");
+    EXPECT(fd->GetAbstractArray("MirroredFlagPoint") && fd->GetAbstractArray("MirroredFlagMask"),
+      label << ": " << name << ": no mirrored-flag records");
+  }
+  if (mb)
+  {
+    const double epsilon = info.epsilon;
+    const int kind = info.kind;
+    for (unsigned int b = 0; b + 1 < mb->GetNumberOfBlocks(); ++b)
+    {
+      const char* childName = BlockName(mb, b);
+      const int child =
+        Walk(mb->GetBlock(b), childName ? childName : "", depth + 1, epsilon, kind, nodes, label);
+      nodes[self].children.push_back(child);
+    }
+  }
+  return self;
+}
+
+/// Leaves carry the input arrays with the values of their original ids.
+void CheckLeafArrays(const std::vector<NodeInfo>& nodes,
+  vtkPolyData* input,
+  const std::string& label)
+{
+  vtkDataArray* temperature = input->GetPointData()->GetArray("Temperature");
+  vtkDataArray* position = input->GetPointData()->GetArray("Position");
+  vtkDataArray* cellLabel = input->GetCellData()->GetArray("Label");
+  for (const NodeInfo& n : nodes)
+  {
+    if (!n.leaf)
+      continue;
+    vtkPointData* pd = n.leaf->GetPointData();
+    vtkDataArray* ids = pd->GetArray("OriginalPointId");
+    vtkDataArray* t = pd->GetArray("Temperature");
+    vtkDataArray* p = pd->GetArray("Position");
+    vtkDataArray* cids = n.leaf->GetCellData()->GetArray("OriginalCellId");
+    vtkDataArray* l = n.leaf->GetCellData()->GetArray("Label");
+    EXPECT(ids && t && p && cids && l, label << ": " << n.name << ": arrays missing");
+    EXPECT(vtkTypeUInt64Array::SafeDownCast(pd->GetAbstractArray("TearMask")) &&
+        vtkTypeUInt64Array::SafeDownCast(pd->GetAbstractArray("PlaneMask")) &&
+        pd->GetAbstractArray("Projected"),
+      label << ": " << n.name << ": TearMask/PlaneMask/Projected missing or not uint64");
+    EXPECT(pd->GetVectors() && std::string(pd->GetVectors()->GetName()) == "Position",
+      label << ": " << n.name << ": active vectors not kept");
+    if (!(ids && t && p && cids && l))
+      continue;
+    int bad = 0;
+    for (vtkIdType i = 0; i < n.leaf->GetNumberOfPoints(); ++i)
+    {
+      const vtkIdType o = static_cast<vtkIdType>(ids->GetTuple1(i));
+      double a[3], b[3];
+      p->GetTuple(i, a);
+      position->GetTuple(o, b);
+      bad += t->GetTuple1(i) != temperature->GetTuple1(o) || a[0] != b[0] || a[1] != b[1] ||
+        a[2] != b[2];
+    }
+    for (vtkIdType c = 0; c < n.leaf->GetNumberOfCells(); ++c)
+      bad += l->GetTuple1(c) != cellLabel->GetTuple1(static_cast<vtkIdType>(cids->GetTuple1(c)));
+    EXPECT(bad == 0, label << ": " << n.name << ": " << bad << " values differ from the input");
+  }
+}
+
+/// Every polydata block of `b` equals the one of `a` at the same place (points, cells,
+/// point, cell and field arrays, names).
+void CompareTrees(vtkMultiBlockDataSet* a, vtkMultiBlockDataSet* b, const std::string& label);
+
+/// Largest distance of the vertices of `from` to the surface `to`.
+double MaximumVertexDistance(vtkPolyData* from, vtkPolyData* to)
+{
+  vtkNew<vtkStaticCellLocator> locator;
+  locator->SetDataSet(to);
+  locator->BuildLocator();
+  vtkNew<vtkGenericCell> cell;
+  double worst = 0.0;
+  for (vtkIdType i = 0; i < from->GetNumberOfPoints(); ++i)
+  {
+    double p[3], closest[3], d2 = 0.0;
+    vtkIdType cellId;
+    int subId;
+    from->GetPoint(i, p);
+    locator->FindClosestPoint(p, closest, cell, cellId, subId, d2);
+    worst = std::max(worst, std::sqrt(d2));
+  }
+  return worst;
+}
+
+/// Boundary and non-manifold edges.
+void CountEdges(vtkPolyData* mesh, int& open, int& nonManifold)
+{
+  std::map<std::pair<vtkIdType, vtkIdType>, int> uses;
+  vtkNew<vtkIdList> ids;
+  for (vtkIdType c = 0; c < mesh->GetNumberOfCells(); ++c)
+  {
+    mesh->GetCellPoints(c, ids);
+    for (vtkIdType k = 0; k < ids->GetNumberOfIds(); ++k)
+    {
+      vtkIdType a = ids->GetId(k), b = ids->GetId((k + 1) % ids->GetNumberOfIds());
+      if (a > b)
+        std::swap(a, b);
+      ++uses[{ a, b }];
+    }
+  }
+  open = nonManifold = 0;
+  for (const auto& e : uses)
+  {
+    open += e.second == 1;
+    nonManifold += e.second > 2;
+  }
+}
+
+bool SameArrays(vtkFieldData* a, vtkFieldData* b, const std::string& what, const std::string& label)
+{
+  bool same = a->GetNumberOfArrays() == b->GetNumberOfArrays();
+  EXPECT(same,
+    label << ": " << what << ": " << a->GetNumberOfArrays() << " vs " << b->GetNumberOfArrays()
+          << " arrays");
+  for (int k = 0; k < a->GetNumberOfArrays() && same; ++k)
+  {
+    vtkDataArray* x = a->GetArray(k);
+    vtkDataArray* y = x ? b->GetArray(x->GetName()) : nullptr;
+    if (!x)
+      continue;
+    if (!y || x->GetNumberOfTuples() != y->GetNumberOfTuples() ||
+      x->GetNumberOfComponents() != y->GetNumberOfComponents())
+    {
+      EXPECT(false, label << ": " << what << " array " << x->GetName() << " differs in shape");
+      return false;
+    }
+    for (vtkIdType i = 0; i < x->GetNumberOfTuples(); ++i)
+      for (int c = 0; c < x->GetNumberOfComponents(); ++c)
+        if (x->GetComponent(i, c) != y->GetComponent(i, c))
+        {
+          EXPECT(false, label << ": " << what << " array " << x->GetName() << " differs at " << i);
+          return false;
+        }
+  }
+  return same;
+}
+
+void ExpectIdentical(vtkPolyData* a, vtkPolyData* b, const std::string& label)
+{
+  EXPECT(a->GetNumberOfPoints() == b->GetNumberOfPoints() &&
+      a->GetNumberOfCells() == b->GetNumberOfCells(),
+    label << ": read-back unfolds to " << b->GetNumberOfPoints() << " points / "
+          << b->GetNumberOfCells() << " cells, in memory " << a->GetNumberOfPoints() << " / "
+          << a->GetNumberOfCells());
+  if (a->GetNumberOfPoints() != b->GetNumberOfPoints() ||
+    a->GetNumberOfCells() != b->GetNumberOfCells())
+    return;
+  int differ = 0;
+  for (vtkIdType i = 0; i < a->GetNumberOfPoints(); ++i)
+  {
+    double p[3], q[3];
+    a->GetPoint(i, p);
+    b->GetPoint(i, q);
+    differ += p[0] != q[0] || p[1] != q[1] || p[2] != q[2];
+  }
+  vtkNew<vtkIdList> x, y;
+  for (vtkIdType c = 0; c < a->GetNumberOfCells(); ++c)
+  {
+    a->GetCellPoints(c, x);
+    b->GetCellPoints(c, y);
+    bool same = x->GetNumberOfIds() == y->GetNumberOfIds();
+    for (vtkIdType k = 0; same && k < x->GetNumberOfIds(); ++k)
+      same = x->GetId(k) == y->GetId(k);
+    differ += !same;
+  }
+  EXPECT(differ == 0, label << ": " << differ << " points/cells differ after the .vtm round trip");
+  SameArrays(a->GetPointData(), b->GetPointData(), "point", label);
+  SameArrays(a->GetCellData(), b->GetCellData(), "cell", label);
+  SameArrays(a->GetFieldData(), b->GetFieldData(), "field", label);
+}
+
+void CompareTrees(vtkMultiBlockDataSet* a, vtkMultiBlockDataSet* b, const std::string& label)
+{
+  EXPECT(a->GetNumberOfBlocks() == b->GetNumberOfBlocks(),
+    label << ": " << a->GetNumberOfBlocks() << " vs " << b->GetNumberOfBlocks() << " blocks");
+  for (unsigned int k = 0; k < a->GetNumberOfBlocks() && k < b->GetNumberOfBlocks(); ++k)
+  {
+    const char* na = BlockName(a, k);
+    const char* nb = BlockName(b, k);
+    const std::string where = label + " / " + (na ? na : "?");
+    EXPECT(na && nb && std::string(na) == nb, where << ": block names differ");
+    auto* ma = vtkMultiBlockDataSet::SafeDownCast(a->GetBlock(k));
+    auto* mb = vtkMultiBlockDataSet::SafeDownCast(b->GetBlock(k));
+    auto* pa = vtkPolyData::SafeDownCast(a->GetBlock(k));
+    auto* pb = vtkPolyData::SafeDownCast(b->GetBlock(k));
+    if (ma && mb)
+      CompareTrees(ma, mb, where);
+    else if (pa && pb)
+      ExpectIdentical(pa, pb, where);
+    else
+      EXPECT(false, where << ": block types differ");
+  }
+}
+
+struct Case
+{
+  std::string label;
+  pm::ProceduralMesh shape;
+  std::function<void(vtkFoldingTreeBuilder*)> configure;
+  std::function<void(const std::vector<NodeInfo>&)> structure;
+  bool exactlySymmetric = true;    // closed after stitching is required
+  bool planesThroughOrigin = true; // the "Position" point vector must follow the geometry
+  int maximumCopies = 0;           // most copies of one leaf (0: not checked)
+};
+
+vtkSmartPointer<vtkMultiBlockDataSet> RunCase(const Case& c, const std::string& tempDir)
+{
+  vtkSmartPointer<vtkPolyData> input = WithArrays(c.shape.mesh);
+  vtkNew<vtkFoldingTreeBuilder> builder;
+  builder->SetInputData(input);
+  if (c.configure)
+    c.configure(builder);
+  EventLog log;
+  const int status = UpdateCapturing(builder, log);
+  EXPECT(status == 1 && log.errors.empty(),
+    c.label << ": build failed: " << (log.errors.empty() ? "" : log.errors[0]));
+  auto tree = vtkSmartPointer<vtkMultiBlockDataSet>::New();
+  tree->ShallowCopy(vtkMultiBlockDataSet::SafeDownCast(builder->GetOutputDataObject(0)));
+  vtkPolyData* segmentation = vtkPolyData::SafeDownCast(builder->GetOutputDataObject(1));
+  if (status != 1 || tree->GetNumberOfBlocks() != 2 || !segmentation)
+  {
+    EXPECT(false, c.label << ": no tree");
+    return tree;
+  }
+
+  // Top level and Tree statistics.
+  EXPECT(BlockName(tree, 1) && std::string(BlockName(tree, 1)) == "Tree",
+    c.label << ": block 1 not named Tree");
+  vtkPolyData* info = vtkPolyData::SafeDownCast(tree->GetBlock(1));
+  EXPECT(info, c.label << ": Tree block is not polydata");
+  if (!info)
+    return tree;
+  vtkFieldData* fd = info->GetFieldData();
+  const double diagonal = FieldValue(fd, "Diagonal");
+  const double rootEpsilon = FieldValue(fd, "RootEpsilon");
+  const double originalFaces = FieldValue(fd, "OriginalFaces");
+  const double storedFaces = FieldValue(fd, "StoredFaces");
+  const double compression = FieldValue(fd, "Compression");
+  EXPECT(std::abs(diagonal - pm::BoundsDiagonal(input)) <= 1e-9 * diagonal,
+    c.label << ": Diagonal " << diagonal);
+  EXPECT(std::abs(rootEpsilon - 0.02 * diagonal) <= 1e-9 * diagonal,
+    c.label << ": RootEpsilon " << rootEpsilon);
+  EXPECT(
+    originalFaces == input->GetNumberOfCells(), c.label << ": OriginalFaces " << originalFaces);
+  EXPECT(std::abs(compression - (1.0 - storedFaces / originalFaces)) < 1e-12,
+    c.label << ": Compression " << compression);
+  for (const char* name : { "TreeHeight", "BuildSeconds", "StoredPoints", "NumberOfLeaves" })
+    EXPECT(std::isfinite(FieldValue(fd, name)), c.label << ": Tree has no " << name);
+  std::printf("%s: %g faces -> %g stored (compression %.3f), height %g, %g leaves, %.3f s\n",
+    c.label.c_str(),
+    originalFaces,
+    storedFaces,
+    compression,
+    FieldValue(fd, "TreeHeight"),
+    FieldValue(fd, "NumberOfLeaves"),
+    FieldValue(fd, "BuildSeconds"));
+
+  // Node blocks.
+  std::vector<NodeInfo> nodes;
+  const char* rootName = BlockName(tree, 0);
+  Walk(tree->GetBlock(0), rootName ? rootName : "", 0, 0.0, -1, nodes, c.label);
+  EXPECT(!nodes.empty() && std::abs(nodes[0].epsilon - rootEpsilon) <= 1e-12 * rootEpsilon,
+    c.label << ": root epsilon");
+  int leaves = 0;
+  long long leafFaces = 0;
+  for (const NodeInfo& n : nodes)
+    if (n.leaf)
+    {
+      ++leaves;
+      leafFaces += n.leaf->GetNumberOfCells();
+    }
+  EXPECT(leaves == FieldValue(fd, "NumberOfLeaves") && leafFaces == storedFaces,
+    c.label << ": " << leaves << " leaves with " << leafFaces << " faces");
+  if (c.structure)
+    c.structure(nodes);
+  CheckLeafArrays(nodes, input, c.label);
+
+  // Output 1.
+  vtkDataArray* leafId = segmentation->GetCellData()->GetArray("FoldingLeafId");
+  vtkDataArray* depth = segmentation->GetCellData()->GetArray("FoldingDepth");
+  vtkDataArray* role = segmentation->GetCellData()->GetArray("FoldingRole");
+  EXPECT(leafId && depth && role && segmentation->GetCellData()->GetArray("Label"),
+    c.label << ": output 1 arrays missing");
+  if (leafId && depth && role)
+  {
+    std::map<int, int> leafDepth;
+    for (const NodeInfo& n : nodes)
+      if (n.leaf)
+        leafDepth[n.index] = n.depth;
+    int kept = 0, mirrored = 0, bad = 0;
+    for (vtkIdType f = 0; f < segmentation->GetNumberOfCells(); ++f)
+    {
+      const int r = static_cast<int>(role->GetTuple1(f));
+      const int l = static_cast<int>(leafId->GetTuple1(f));
+      if (r == 0 || r == 2)
+      {
+        ++kept;
+        bad += !leafDepth.count(l) || leafDepth[l] != depth->GetTuple1(f);
+      }
+      else if (r == 1)
+      {
+        ++mirrored;
+        bad += l != -1;
+      }
+      else
+        bad += r != -1 || l != -1;
+    }
+    EXPECT(bad == 0, c.label << ": " << bad << " inconsistent output-1 cells");
+    EXPECT(kept == storedFaces, c.label << ": " << kept << " kept cells, stored " << storedFaces);
+    EXPECT(mirrored > 0, c.label << ": no mirrored-away cells");
+  }
+
+  // Unfold in memory and after a .vtm round trip.
+  const std::string file = tempDir + "/TestFoldingTreeFilters_" +
+    std::to_string(std::hash<std::string>()(c.label) % 100000) + ".vtm";
+  vtkNew<vtkXMLMultiBlockDataWriter> writer;
+  writer->SetInputData(tree);
+  writer->SetFileName(file.c_str());
+  EXPECT(writer->Write() == 1, c.label << ": could not write " << file);
+  vtkNew<vtkXMLMultiBlockDataReader> reader;
+  reader->SetFileName(file.c_str());
+  reader->Update();
+  vtkMultiBlockDataSet* readBack = vtkMultiBlockDataSet::SafeDownCast(reader->GetOutput());
+  EXPECT(readBack, c.label << ": nothing read back");
+
+  vtkNew<vtkFoldingTreeUnfolder> unfolder, unfolderRead;
+  unfolder->SetInputData(tree);
+  EventLog log1, log2;
+  EXPECT(UpdateCapturing(unfolder, log1) == 1 && log1.errors.empty(),
+    c.label << ": unfold failed: " << (log1.errors.empty() ? "" : log1.errors[0]));
+  vtkPolyData* unfolded = unfolder->GetOutput();
+  if (readBack)
+  {
+    // The read-back tree has the same structure and names.
+    std::vector<NodeInfo> readNodes;
+    const char* name = BlockName(readBack, 0);
+    Walk(readBack->GetBlock(0), name ? name : "", 0, 0.0, -1, readNodes, c.label + " (read)");
+    EXPECT(readNodes.size() == nodes.size(),
+      c.label << ": read-back tree has " << readNodes.size() << " nodes");
+    CompareTrees(tree, readBack, c.label + " (vtm)");
+    unfolderRead->SetInputData(readBack);
+    EXPECT(UpdateCapturing(unfolderRead, log2) == 1 && log2.errors.empty(),
+      c.label << ": unfold of the read-back tree failed: "
+              << (log2.errors.empty() ? "" : log2.errors[0]));
+    ExpectIdentical(unfolded, unfolderRead->GetOutput(), c.label);
+  }
+
+  // unfold(fold(M)) against M.
+  const double toOriginal = MaximumVertexDistance(unfolded, input);
+  const double fromOriginal = MaximumVertexDistance(input, unfolded);
+  int open = 0, nonManifold = 0;
+  CountEdges(unfolded, open, nonManifold);
+  vtkFieldData* ufd = unfolded->GetFieldData();
+  std::printf("%s: unfolded %lld points / %lld faces (input %lld / %lld), distance %.3g / %.3g "
+              "of epsilon, open %d, non-manifold %d, gaps %g (length %g), stitched %g\n",
+    c.label.c_str(),
+    static_cast<long long>(unfolded->GetNumberOfPoints()),
+    static_cast<long long>(unfolded->GetNumberOfCells()),
+    static_cast<long long>(input->GetNumberOfPoints()),
+    static_cast<long long>(input->GetNumberOfCells()),
+    toOriginal / rootEpsilon,
+    fromOriginal / rootEpsilon,
+    open,
+    nonManifold,
+    FieldValue(ufd, "OpenGapCount"),
+    FieldValue(ufd, "OpenGapLength"),
+    FieldValue(ufd, "StitchedVertices"));
+  EXPECT(toOriginal <= rootEpsilon && fromOriginal <= rootEpsilon,
+    c.label << ": unfold(fold(M)) is " << toOriginal << " / " << fromOriginal << " from M, epsilon "
+            << rootEpsilon);
+  EXPECT(open == FieldValue(ufd, "OpenEdges") && nonManifold == FieldValue(ufd, "NonManifoldEdges"),
+    c.label << ": reported open/non-manifold edges differ from the mesh's");
+  if (c.exactlySymmetric)
+    EXPECT(open == 0 && nonManifold == 0, c.label << ": stitched result not closed");
+  EXPECT(
+    FieldValue(ufd, "UnfoldedFaces") == unfolded->GetNumberOfCells(), c.label << ": UnfoldedFaces");
+  for (const char* name : { "StitchedVertices", "OpenGapCount", "OpenGapLength" })
+    EXPECT(std::isfinite(FieldValue(ufd, name)), c.label << ": no field " << name);
+
+  // Carried arrays.
+  vtkPointData* pd = unfolded->GetPointData();
+  vtkCellData* cd = unfolded->GetCellData();
+  vtkDataArray* ids = pd->GetArray("OriginalPointId");
+  vtkDataArray* temperature = pd->GetArray("Temperature");
+  vtkDataArray* position = pd->GetArray("Position");
+  vtkDataArray* cids = cd->GetArray("OriginalCellId");
+  vtkDataArray* label = cd->GetArray("Label");
+  vtkDataArray* mirroredFlag = cd->GetArray("FoldingMirrored");
+  EXPECT(ids && temperature && position && cids && label && mirroredFlag &&
+      cd->GetArray("FoldingLeafId") && cd->GetArray("FoldingCopy"),
+    c.label << ": unfolded arrays missing");
+  EXPECT(!pd->GetArray("TearMask") && !pd->GetArray("PlaneMask"),
+    c.label << ": builder-internal masks carried to the unfolded mesh");
+  if (ids && temperature && position && cids && label && mirroredFlag)
+  {
+    vtkDataArray* inT = input->GetPointData()->GetArray("Temperature");
+    vtkDataArray* inL = input->GetCellData()->GetArray("Label");
+    int bad = 0, mirroredFaces = 0;
+    vtkNew<vtkIdList> cellPoints;
+    double vectorError = 0.0, mirroredVectorError = 0.0;
+    for (vtkIdType i = 0; i < unfolded->GetNumberOfPoints(); ++i)
+    {
+      bad += temperature->GetTuple1(i) != inT->GetTuple1(static_cast<vtkIdType>(ids->GetTuple1(i)));
+      double p[3], v[3];
+      unfolded->GetPoint(i, p);
+      position->GetTuple(i, v);
+      vectorError = std::max(vectorError, (Vec3(p) - Vec3(v)).norm());
+    }
+    for (vtkIdType f = 0; f < unfolded->GetNumberOfCells(); ++f)
+    {
+      bad += label->GetTuple1(f) != inL->GetTuple1(static_cast<vtkIdType>(cids->GetTuple1(f)));
+      if (mirroredFlag->GetTuple1(f) != 0)
+      {
+        ++mirroredFaces;
+        unfolded->GetCellPoints(f, cellPoints);
+        for (vtkIdType k = 0; k < cellPoints->GetNumberOfIds(); ++k)
+        {
+          double p[3], v[3];
+          unfolded->GetPoint(cellPoints->GetId(k), p);
+          position->GetTuple(cellPoints->GetId(k), v);
+          mirroredVectorError = std::max(mirroredVectorError, (Vec3(p) - Vec3(v)).norm());
+        }
+      }
+    }
+    // Cell vectors: the carried input face normal follows the face (multiplied by the copy's
+    // linear map: reflected on mirrored copies, whose triangles are also reversed), checked
+    // against the normal of the unfolded triangle; an unreflected normal would be off by the
+    // reflection. The id-like 3-component array is copied unchanged.
+    vtkDataArray* normal = cd->GetArray("FaceNormal");
+    vtkDataArray* tripleId = cd->GetArray("TripleId");
+    vtkDataArray* inTriple = input->GetCellData()->GetArray("TripleId");
+    vtkDataArray* filled = cd->GetArray("FoldingFilled");
+    EXPECT(normal && tripleId && filled, c.label << ": cell vector arrays not carried");
+    int checked = 0, aligned = 0, mirroredChecked = 0, mirroredAligned = 0;
+    int unreflectedAligned = 0;
+    for (vtkIdType f = 0; normal && tripleId && filled && f < unfolded->GetNumberOfCells(); ++f)
+    {
+      double t[3], u[3], v[3];
+      tripleId->GetTuple(f, t);
+      inTriple->GetTuple(static_cast<vtkIdType>(cids->GetTuple1(f)), u);
+      bad += t[0] != u[0] || t[1] != u[1] || t[2] != u[2];
+      const Vec3 n = FaceNormal(unfolded, f);
+      if (filled->GetTuple1(f) != 0 || n.norm() == 0.0)
+        continue;
+      normal->GetTuple(f, v);
+      const bool ok = n.dot(Vec3(v)) > 0.9;
+      ++checked;
+      aligned += ok;
+      if (mirroredFlag->GetTuple1(f) != 0)
+      {
+        ++mirroredChecked;
+        mirroredAligned += ok;
+        // Control: the input's (unreflected) normal of the same face.
+        vtkDataArray* inNormal = input->GetCellData()->GetArray("FaceNormal");
+        inNormal->GetTuple(static_cast<vtkIdType>(cids->GetTuple1(f)), v);
+        unreflectedAligned += n.dot(Vec3(v)) > 0.9;
+      }
+    }
+    std::printf("%s: carried face normals aligned on %d / %d faces (%d / %d mirrored; "
+                "unreflected input normals would be aligned on %d)\n",
+      c.label.c_str(),
+      aligned,
+      checked,
+      mirroredAligned,
+      mirroredChecked,
+      unreflectedAligned);
+    // Exact folds keep every face; approximate ones (projected fold lines, stitched and
+    // smoothed seams) tilt a few percent of the faces.
+    const double fraction = c.exactlySymmetric ? 0.99 : 0.93;
+    EXPECT(mirroredChecked > 0 && aligned >= fraction * checked &&
+        mirroredAligned >= fraction * mirroredChecked &&
+        unreflectedAligned < mirroredAligned - 0.2 * mirroredChecked,
+      c.label << ": cell vector array not reflected with the geometry");
+    // Copies: FoldingMirrored is the parity of FoldingMirrorMask, copy 0 is the stored leaf.
+    auto* masks = vtkTypeUInt64Array::SafeDownCast(cd->GetAbstractArray("FoldingMirrorMask"));
+    vtkDataArray* copies = cd->GetArray("FoldingCopy");
+    EXPECT(masks && copies, c.label << ": FoldingMirrorMask / FoldingCopy missing");
+    int badCopies = 0, maxCopy = 0;
+    for (vtkIdType f = 0; masks && copies && f < unfolded->GetNumberOfCells(); ++f)
+    {
+      const uint64_t mask = masks->GetValue(f);
+      const int parity = static_cast<int>(std::bitset<64>(mask).count() % 2);
+      badCopies += parity != mirroredFlag->GetTuple1(f);
+      badCopies += (copies->GetTuple1(f) == 0) != (mask == 0);
+      maxCopy = std::max(maxCopy, static_cast<int>(copies->GetTuple1(f)));
+    }
+    EXPECT(badCopies == 0, c.label << ": " << badCopies << " inconsistent copy records");
+    EXPECT(maxCopy + 1 == c.maximumCopies || c.maximumCopies == 0,
+      c.label << ": " << maxCopy + 1 << " copies of a leaf, expected " << c.maximumCopies);
+    EXPECT(bad == 0, c.label << ": " << bad << " carried scalar values differ from the input");
+    EXPECT(mirroredFaces > 0, c.label << ": no mirrored faces");
+    // When the planes pass (nearly) through the origin, the position vector mapped by the
+    // copy's linear map stays within a couple of epsilons of the mapped position.
+    EXPECT(!c.planesThroughOrigin || vectorError <= 2.0 * rootEpsilon,
+      c.label << ": vector array not reflected with the geometry (error " << vectorError
+              << ", on mirrored faces " << mirroredVectorError << ")");
+  }
+  return tree;
+}
+
+/// The first folding node's plane block / the first leaf block (with their parents).
+bool FindBlock(vtkMultiBlockDataSet* mb,
+  bool leaf,
+  vtkMultiBlockDataSet*& parent,
+  unsigned int& index)
+{
+  for (unsigned int b = 0; b < mb->GetNumberOfBlocks(); ++b)
+  {
+    vtkDataObject* child = mb->GetBlock(b);
+    const char* name = BlockName(mb, b);
+    const std::string n = name ? name : "";
+    if ((leaf && n.rfind("Leaf", 0) == 0) || (!leaf && n == "Plane"))
+    {
+      parent = mb;
+      index = b;
+      return true;
+    }
+    if (auto* inner = vtkMultiBlockDataSet::SafeDownCast(child))
+      if (FindBlock(inner, leaf, parent, index))
+        return true;
+  }
+  return false;
+}
+
+void ExpectUnfoldFailure(vtkMultiBlockDataSet* tree,
+  const std::string& label,
+  const std::string& mustContain)
+{
+  vtkNew<vtkFoldingTreeUnfolder> unfolder;
+  unfolder->SetInputData(tree);
+  EventLog log;
+  const int status = UpdateCapturing(unfolder, log);
+  EXPECT(status == 0, label << ": Update() returned " << status);
+  EXPECT(!log.errors.empty() && log.errors[0].find(mustContain) != std::string::npos,
+    label << ": error does not mention \"" << mustContain
+          << "\": " << (log.errors.empty() ? "(none)" : log.errors[0]));
+  std::printf(
+    "%s -> %s", label.c_str(), log.errors.empty() ? "(no error)\n" : log.errors[0].c_str());
+}
+
+void TestMalformed(vtkMultiBlockDataSet* good)
+{
+  {
+    vtkNew<vtkMultiBlockDataSet> tree;
+    tree->DeepCopy(good);
+    vtkMultiBlockDataSet* parent = nullptr;
+    unsigned int index = 0;
+    EXPECT(FindBlock(tree, false, parent, index), "no plane block to damage");
+    if (parent)
+    {
+      vtkNew<vtkFieldData> empty;
+      vtkPolyData::SafeDownCast(parent->GetBlock(index))->SetFieldData(empty);
+      ExpectUnfoldFailure(tree, "fold without plane metadata", "plane metadata");
+    }
+  }
+  {
+    vtkNew<vtkMultiBlockDataSet> tree;
+    tree->DeepCopy(good);
+    vtkMultiBlockDataSet* parent = nullptr;
+    unsigned int index = 0;
+    EXPECT(FindBlock(tree, false, parent, index), "no plane block to damage");
+    if (parent)
+    {
+      vtkPolyData* plane = vtkPolyData::SafeDownCast(parent->GetBlock(index));
+      plane->GetFieldData()->RemoveArray("FoldingPlaneNormal");
+      ExpectUnfoldFailure(tree, "fold without its normal", "FoldingPlaneNormal");
+    }
+  }
+  {
+    vtkNew<vtkMultiBlockDataSet> tree;
+    tree->DeepCopy(good);
+    vtkMultiBlockDataSet* parent = nullptr;
+    unsigned int index = 0;
+    EXPECT(FindBlock(tree, true, parent, index), "no leaf block to replace");
+    if (parent)
+    {
+      vtkNew<vtkImageData> image;
+      image->SetDimensions(2, 2, 2);
+      parent->SetBlock(index, image);
+      ExpectUnfoldFailure(tree, "leaf replaced by vtkImageData", "vtkImageData");
+    }
+  }
+  {
+    vtkNew<vtkMultiBlockDataSet> tree;
+    tree->DeepCopy(good);
+    vtkMultiBlockDataSet* parent = nullptr;
+    unsigned int index = 0;
+    if (FindBlock(tree, true, parent, index))
+    {
+      vtkPolyData* leaf = vtkPolyData::SafeDownCast(parent->GetBlock(index));
+      vtkNew<vtkIntArray> kind;
+      kind->SetName("FoldingNodeKind");
+      kind->InsertNextValue(2);
+      leaf->GetFieldData()->AddArray(kind);
+      ExpectUnfoldFailure(tree, "leaf with a wrong node kind", "FoldingNodeKind");
+    }
+  }
+  {
+    vtkNew<vtkMultiBlockDataSet> tree;
+    tree->DeepCopy(good);
+    vtkMultiBlockDataSet* parent = nullptr;
+    unsigned int index = 0;
+    if (FindBlock(tree, true, parent, index))
+    {
+      vtkPolyData* leaf = vtkPolyData::SafeDownCast(parent->GetBlock(index));
+      leaf->GetPointData()->GetAbstractArray("TearMask")->SetNumberOfTuples(3);
+      ExpectUnfoldFailure(tree, "leaf with a short TearMask", "TearMask");
+    }
+  }
+  {
+    vtkNew<vtkMultiBlockDataSet> tree;
+    ExpectUnfoldFailure(tree, "empty multiblock", "two top-level blocks");
+  }
+  {
+    vtkNew<vtkPolyData> empty;
+    vtkNew<vtkFoldingTreeBuilder> builder;
+    builder->SetInputData(empty);
+    EventLog log;
+    EXPECT(UpdateCapturing(builder, log) == 0 && !log.errors.empty(),
+      "builder on an empty mesh did not fail");
+  }
+}
+}
+
+/// Progress events are sent; aborting from the first one keeps a valid, flagged tree.
+void TestProgressAndAbort()
+{
+  pm::ProceduralMesh shape = pm::MakeThreePlaneShape(2000);
+  struct Counter
+  {
+    int events = 0;
+    bool abort = false;
+    double last = 0.0;
+  } counter;
+  auto onProgress = [](vtkObject* caller, unsigned long, void* clientData, void* callData)
+  {
+    auto* c = static_cast<Counter*>(clientData);
+    ++c->events;
+    c->last = *static_cast<double*>(callData);
+    if (c->abort)
+      vtkAlgorithm::SafeDownCast(caller)->SetAbortExecute(1);
+  };
+  vtkNew<vtkCallbackCommand> callback;
+  callback->SetCallback(onProgress);
+  callback->SetClientData(&counter);
+  vtkNew<vtkFoldingTreeBuilder> builder;
+  builder->SetInputData(shape.mesh);
+  builder->AddObserver(vtkCommand::ProgressEvent, callback);
+  EventLog log;
+  EXPECT(UpdateCapturing(builder, log) == 1, "progress run failed");
+  EXPECT(counter.events > 2 && counter.last == 1.0,
+    "builder progress: " << counter.events << " events, last " << counter.last);
+
+  counter = Counter();
+  counter.abort = true;
+  vtkNew<vtkFoldingTreeBuilder> aborted;
+  aborted->SetInputData(shape.mesh);
+  aborted->AddObserver(vtkCommand::ProgressEvent, callback);
+  vtkNew<vtkCallbackCommand> silence; // the abort warning
+  aborted->AddObserver(vtkCommand::WarningEvent, silence);
+  UpdateCapturing(aborted, log);
+  auto* tree = vtkMultiBlockDataSet::SafeDownCast(aborted->GetOutputDataObject(0));
+  vtkPolyData* info =
+    tree && tree->GetNumberOfBlocks() == 2 ? vtkPolyData::SafeDownCast(tree->GetBlock(1)) : nullptr;
+  std::printf("abort: %d progress events, tree %s, Aborted = %g\n",
+    counter.events,
+    info ? "present" : "absent",
+    info ? FieldValue(info->GetFieldData(), "Aborted") : -1.0);
+  EXPECT(
+    !info || FieldValue(info->GetFieldData(), "Aborted") == 1.0, "an aborted build is not flagged");
+}
+
+int TestFoldingTreeFilters(int argc, char* argv[])
+{
+  const std::string tempDir = argc > 1 ? argv[1] : ".";
+
+  vtkNew<vtkFoldingTreeBuilder> defaults;
+  EXPECT(defaults->GetTolerance() == 0.02 && defaults->GetToleranceMode() == 0 &&
+      defaults->GetKeepSide() == 0 && defaults->GetMinimumFaces() == 50 &&
+      defaults->GetMinimumAreaFraction() == 0.05 && defaults->GetMaximumFolds() == 8 &&
+      defaults->GetRequireMeaningfulSymmetry() && defaults->GetConnectNearbyParts() &&
+      defaults->GetMethod() == 0 && defaults->GetRandomSeed() == 1,
+    "builder defaults differ from FoldingTreeOptions");
+
+  std::vector<Case> cases;
+  cases.push_back({ "three-plane shape",
+    pm::MakeThreePlaneShape(4000),
+    [](vtkFoldingTreeBuilder* b) { b->SetMinimumAreaFraction(0.13); },
+    [](const std::vector<NodeInfo>& nodes)
+    {
+      // Fold 0 -> Fold 1 -> Fold 2 -> Leaf 3.
+      EXPECT(nodes.size() == 4, "three-plane shape: " << nodes.size() << " nodes");
+      for (size_t k = 0; k < nodes.size() && k < 3; ++k)
+        EXPECT(nodes[k].kind == 1 && nodes[k].index == static_cast<int>(k),
+          "three-plane shape: node " << k << " is " << nodes[k].name);
+      if (nodes.size() == 4)
+        EXPECT(nodes[3].kind == 0 && nodes[3].name == "Leaf 3",
+          "three-plane shape: last node " << nodes[3].name);
+    },
+    true,
+    true,
+    8 });
+  cases.push_back({ "bilateral blob",
+    pm::MakeBilateralBlob(4000),
+    [](vtkFoldingTreeBuilder* b) { b->SetMaximumFolds(1); },
+    [](const std::vector<NodeInfo>& nodes)
+    {
+      EXPECT(nodes.size() == 2 && nodes[0].name == "Fold 0 (depth 0)" && nodes[1].name == "Leaf 1",
+        "bilateral blob: " << nodes.size() << " nodes, root " << nodes[0].name);
+    },
+    true,
+    true,
+    2 });
+  cases.push_back({ "blob + attachment",
+    pm::MakeBlobWithAsymmetricPart(4000, 0.1),
+    nullptr,
+    [](const std::vector<NodeInfo>& nodes)
+    {
+      EXPECT(!nodes.empty() && nodes[0].kind == 2 && nodes[0].children.size() >= 2 &&
+          nodes[nodes[0].children[0]].kind == 1,
+        "blob + attachment: root " << (nodes.empty() ? "" : nodes[0].name)
+                                   << " is not a segmentation node starting with a fold");
+    },
+    false,
+    false });
+
+  vtkSmartPointer<vtkMultiBlockDataSet> segmented;
+  for (const Case& c : cases)
+  {
+    vtkSmartPointer<vtkMultiBlockDataSet> tree = RunCase(c, tempDir);
+    segmented = tree;
+  }
+  if (segmented && segmented->GetNumberOfBlocks() == 2)
+    TestMalformed(segmented);
+  TestProgressAndAbort();
+
+  if (failures)
+  {
+    std::printf("%d failure(s)\n", failures);
+    return 1;
+  }
+  std::printf("All folding tree filter tests passed.\n");
+  return 0;
+}
+
+int main(int argc, char* argv[])
+{
+  return TestFoldingTreeFilters(argc, argv);
+}
