@@ -30,7 +30,7 @@
  *   symmetric region (ties within 2% of the area: the lower RMS residual), not
  *   the lowest sum of rho. This finds local symmetries on asymmetric bodies and
  *   resists large asymmetric attachments. The finalists end with a polish
- *   phase at sigma = epsilon (support d <= 2 epsilon). Meshes above 120k faces search
+ *   phase at sigma = epsilon (support d <= 2 epsilon). Meshes above 50k faces search
  *   candidates on a simplified copy and refine the best on the full mesh.
  * - PAPER: exactly one start (the principal axes of the area-weighted mesh, or
  *   the user's initial plane), as in the paper.

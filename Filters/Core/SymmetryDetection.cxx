@@ -361,13 +361,13 @@ SymmetryResult DetectOnSimplified(const PreparedMesh& mesh, const SymmetryOption
   PreparedMesh small;
   std::string error;
   if (!PrepareMesh(SimplifiedMesh(mesh, SimplifiedMeshFaces), {}, small, error) ||
-    small.NumberOfFaces() > SimplifyAboveFaces || small.NumberOfFaces() < 4)
+    small.NumberOfFaces() < 4)
     return DetectSymmetryOnFullMesh(mesh, options);
   if (!mesh.proximityLinks.empty())
     LinkNearbyParts(small, options.epsilon);
   SymmetryOptions coarseOptions = options;
   coarseOptions.progress = [&](double p) { return report(0.6 * p); };
-  const SymmetryResult coarse = DetectSymmetry(small, coarseOptions);
+  const SymmetryResult coarse = DetectSymmetryOnFullMesh(small, coarseOptions); // no recursion
   result.candidateSeconds = Seconds(t0);
   if (coarse.aborted)
   {
@@ -382,13 +382,19 @@ SymmetryResult DetectOnSimplified(const PreparedMesh& mesh, const SymmetryOption
     Run run;
     refiner.Seed(run, coarse.finalists[k], nullptr);
     refiner.Fine(run, options.maximumIterations);
+    refiner.Polish(run, options.maximumIterations);
     refiner.Score(run, options.epsilon);
+    const bool tight = Tight(run, options, mesh.totalArea);
     runs.push_back(std::move(run));
     if (!report(0.6 + 0.4 * static_cast<double>(k + 1) / coarse.finalists.size()))
     {
       result.aborted = true;
       return result;
     }
+    // The finalists come best first: a tight refinement of the best one settles it (the
+    // others could only win with a larger tight region, which the small mesh ranked lower).
+    if (k == 0 && tight)
+      break;
   }
   result.fineSeconds = Seconds(t1);
   result.startsTried = coarse.startsTried;

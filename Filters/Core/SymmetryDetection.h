@@ -59,10 +59,10 @@ SymmetryResult DetectSymmetryOnFullMesh(const PreparedMesh& mesh, const Symmetry
 
 /// Meshes with more faces than this are searched for candidate planes on a simplified
 /// copy (SimplifiedMeshFaces faces); the finalists are then refined on the full mesh.
-constexpr int SimplifyAboveFaces = 120000;
+constexpr int SimplifyAboveFaces = 50000;
 /// The "symmetry found" residual rule: area-weighted RMS of d over S <= this * epsilon.
 constexpr double FoundResidualRatio = 0.35;
-constexpr int SimplifiedMeshFaces = 60000;
+constexpr int SimplifiedMeshFaces = 30000;
 }
 
 #endif
