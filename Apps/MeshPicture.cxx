@@ -127,10 +127,18 @@ vtkSmartPointer<vtkRenderWindow> MakeCategoryScene(vtkPolyData* mesh,
   if (labels && labels->GetNumberOfComponents() == 1)
   {
     // A qualitative palette (ColorBrewer Set1/Set3-like), cycled for many categories.
-    static const double palette[][3] = { { 0.89, 0.10, 0.11 }, { 0.22, 0.49, 0.72 },
-      { 0.30, 0.69, 0.29 }, { 0.60, 0.31, 0.64 }, { 1.00, 0.50, 0.00 }, { 0.90, 0.80, 0.20 },
-      { 0.65, 0.34, 0.16 }, { 0.97, 0.51, 0.75 }, { 0.40, 0.76, 0.65 }, { 0.55, 0.63, 0.80 },
-      { 0.65, 0.85, 0.33 }, { 0.17, 0.30, 0.45 } };
+    static const double palette[][3] = { { 0.89, 0.10, 0.11 },
+      { 0.22, 0.49, 0.72 },
+      { 0.30, 0.69, 0.29 },
+      { 0.60, 0.31, 0.64 },
+      { 1.00, 0.50, 0.00 },
+      { 0.90, 0.80, 0.20 },
+      { 0.65, 0.34, 0.16 },
+      { 0.97, 0.51, 0.75 },
+      { 0.40, 0.76, 0.65 },
+      { 0.55, 0.63, 0.80 },
+      { 0.65, 0.85, 0.33 },
+      { 0.17, 0.30, 0.45 } };
     const int paletteSize = static_cast<int>(sizeof(palette) / sizeof(palette[0]));
     std::set<long long> values;
     for (vtkIdType i = 0; i < labels->GetNumberOfTuples(); ++i)

@@ -20,8 +20,10 @@ namespace foldingmeshes
  * the paper's Figure 2) and, when given, the plane glyph as a translucent blue quad. The
  * camera looks at the mesh obliquely across the plane so both halves are visible.
  */
-vtkSmartPointer<vtkRenderWindow> MakeSymmetryScene(
-  vtkPolyData* labelledMesh, vtkPolyData* planeGlyph, int width, int height);
+vtkSmartPointer<vtkRenderWindow> MakeSymmetryScene(vtkPolyData* labelledMesh,
+  vtkPolyData* planeGlyph,
+  int width,
+  int height);
 
 /**
  * A render window (off-screen, fixed size, no multisampling) showing `mesh` coloured by its
@@ -30,8 +32,10 @@ vtkSmartPointer<vtkRenderWindow> MakeSymmetryScene(
  * stored in any leaf, are light grey). Without that array the mesh is plain grey. The camera
  * looks obliquely at the mesh, up along +Y (+Z when Y is the thinnest extent).
  */
-vtkSmartPointer<vtkRenderWindow> MakeCategoryScene(
-  vtkPolyData* mesh, const char* cellArrayName, int width, int height);
+vtkSmartPointer<vtkRenderWindow> MakeCategoryScene(vtkPolyData* mesh,
+  const char* cellArrayName,
+  int width,
+  int height);
 
 /// Renders the scene to a PNG file. Returns false and sets error on failure.
 bool WritePicture(vtkRenderWindow* window, const std::string& path, std::string& error);

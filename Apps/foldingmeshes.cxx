@@ -14,8 +14,8 @@
 #include "vtkSymmetryPlaneDetector.h"
 
 #include <vtkCallbackCommand.h>
-#include <vtkCommand.h>
 #include <vtkCellArray.h>
+#include <vtkCommand.h>
 #include <vtkDataArray.h>
 #include <vtkExecutive.h>
 #include <vtkFieldData.h>
@@ -371,7 +371,8 @@ int Detect(int argc, char* argv[])
     std::printf("time:                    %.3f s\n", seconds);
     if (!noFiles)
     {
-      std::printf("wrote:                   %s\n                         %s\n", output.c_str(),
+      std::printf("wrote:                   %s\n                         %s\n",
+        output.c_str(),
         planeOutput.c_str());
       if (!picture.empty())
         std::printf("                         %s\n", picture.c_str());
@@ -393,7 +394,10 @@ struct FoldSettings
   int maxFolds = 8;
 };
 
-double ParseNumber(const std::string& what, const std::string& v, double lo, double hi,
+double ParseNumber(const std::string& what,
+  const std::string& v,
+  double lo,
+  double hi,
   bool positive)
 {
   char* end = nullptr;
@@ -440,7 +444,8 @@ FoldSettings ParseFoldArguments(int argc, char* argv[])
       const std::string k = value("--keep");
       if (k != "more" && k != "fewer")
         throw std::runtime_error("--keep must be more or fewer, got '" + k + "'");
-      f.keep = k == "fewer" ? vtkFoldingTreeBuilder::FEWER_FACES : vtkFoldingTreeBuilder::MORE_FACES;
+      f.keep =
+        k == "fewer" ? vtkFoldingTreeBuilder::FEWER_FACES : vtkFoldingTreeBuilder::MORE_FACES;
     }
     else if (arg == "--min-area-fraction")
       f.minAreaFraction = ParseNumber(arg, value("--min-area-fraction"), 0.0, 1.0, false);
@@ -575,7 +580,9 @@ vtkSmartPointer<vtkMultiBlockDataSet> ReadTree(const std::string& path, std::str
 
 /// Writes a picture of `mesh` coloured by the cell array `arrayName`; skipped without a
 /// display (the returned path is then empty). False (with error) when it cannot be written.
-bool WriteCategoryPicture(vtkPolyData* mesh, const char* arrayName, std::string& picture,
+bool WriteCategoryPicture(vtkPolyData* mesh,
+  const char* arrayName,
+  std::string& picture,
   std::string& error)
 {
   if (!std::getenv("DISPLAY"))
@@ -635,7 +642,8 @@ Distances PointsToSurface(vtkPolyData* from, vtkPolyData* to)
   locator->BuildLocator();
   std::vector<double> d(from->GetNumberOfPoints(), 0.0);
   vtkSMPThreadLocalObject<vtkGenericCell> cells;
-  vtkSMPTools::For(0, from->GetNumberOfPoints(),
+  vtkSMPTools::For(0,
+    from->GetNumberOfPoints(),
     [&](vtkIdType begin, vtkIdType end)
     {
       vtkGenericCell* cell = cells.Local();
@@ -741,21 +749,36 @@ int Fold(int argc, char* argv[])
                 "  \"leaves\": %d,\n  \"nodes\": %d,\n  \"rootEpsilon\": %.9g,\n"
                 "  \"buildSeconds\": %.3f,\n  \"seconds\": %.3f,\n"
                 "  \"outputs\": {\"tree\": %s, \"segmentation\": %s, \"picture\": %s}\n}\n",
-      JsonString(f.meshPath).c_str(), original, stored, compression, height, folds, leaves,
-      nodes, epsilon, buildSeconds, seconds, JsonString(treePath).c_str(),
-      JsonString(segPath).c_str(), picture.empty() ? "null" : JsonString(picture).c_str());
+      JsonString(f.meshPath).c_str(),
+      original,
+      stored,
+      compression,
+      height,
+      folds,
+      leaves,
+      nodes,
+      epsilon,
+      buildSeconds,
+      seconds,
+      JsonString(treePath).c_str(),
+      JsonString(segPath).c_str(),
+      picture.empty() ? "null" : JsonString(picture).c_str());
   }
   else
   {
     std::printf("mesh:                    %s\n", f.meshPath.c_str());
-    std::printf("faces:                   %d original, %d stored (non-redundant)\n", original,
-      stored);
+    std::printf(
+      "faces:                   %d original, %d stored (non-redundant)\n", original, stored);
     std::printf("compression:             %.1f%%\n", 100.0 * compression);
-    std::printf("tree:                    height %d, %d folds, %d leaves, %d nodes\n", height,
-      folds, leaves, nodes);
+    std::printf("tree:                    height %d, %d folds, %d leaves, %d nodes\n",
+      height,
+      folds,
+      leaves,
+      nodes);
     std::printf("root epsilon:            %.6g\n", epsilon);
     std::printf("time:                    %.3f s (build %.3f s)\n", seconds, buildSeconds);
-    std::printf("wrote:                   %s\n                         %s\n", treePath.c_str(),
+    std::printf("wrote:                   %s\n                         %s\n",
+      treePath.c_str(),
       segPath.c_str());
     if (!picture.empty())
       std::printf("                         %s\n", picture.c_str());
@@ -840,15 +863,24 @@ int Unfold(int argc, char* argv[])
                 "  \"stitchedVertices\": %d,\n  \"openGapCount\": %d,\n"
                 "  \"openGapLength\": %.9g,\n  \"seconds\": %.3f,\n"
                 "  \"outputs\": {\"mesh\": %s, \"picture\": %s}\n}\n",
-      JsonString(treePath).c_str(), stitch ? "true" : "false", faces,
-      static_cast<long long>(mesh->GetNumberOfPoints()), openEdges, nonManifold, stitched, gaps,
-      gapLength, seconds, JsonString(meshPath).c_str(),
+      JsonString(treePath).c_str(),
+      stitch ? "true" : "false",
+      faces,
+      static_cast<long long>(mesh->GetNumberOfPoints()),
+      openEdges,
+      nonManifold,
+      stitched,
+      gaps,
+      gapLength,
+      seconds,
+      JsonString(meshPath).c_str(),
       picture.empty() ? "null" : JsonString(picture).c_str());
   }
   else
   {
     std::printf("tree:                    %s\n", treePath.c_str());
-    std::printf("faces:                   %lld (%lld points)\n", faces,
+    std::printf("faces:                   %lld (%lld points)\n",
+      faces,
       static_cast<long long>(mesh->GetNumberOfPoints()));
     std::printf("open edges:              %d (non-manifold %d)\n", openEdges, nonManifold);
     std::printf("stitched vertices:       %d%s\n", stitched, stitch ? "" : " (stitching off)");
@@ -943,26 +975,50 @@ int Roundtrip(int argc, char* argv[])
                 "  \"openEdgesAfter\": %lld,\n  \"openGapCount\": %d,\n"
                 "  \"foldSeconds\": %.3f,\n  \"unfoldSeconds\": %.3f,\n"
                 "  \"outputs\": {\"tree\": %s, \"unfolded\": %s}\n}\n",
-      JsonString(f.meshPath).c_str(), original, stored, compression, height,
-      static_cast<long long>(unfolded->GetNumberOfCells()), diagonal, epsilon, epsilon * scale,
-      hausdorff, hausdorff * scale, mean * scale, within ? "true" : "false", openBefore,
-      openAfter, static_cast<int>(FieldValue(unfolded, "OpenGapCount")), foldSeconds,
-      unfoldSeconds, JsonString(treePath).c_str(), JsonString(unfoldedPath).c_str());
+      JsonString(f.meshPath).c_str(),
+      original,
+      stored,
+      compression,
+      height,
+      static_cast<long long>(unfolded->GetNumberOfCells()),
+      diagonal,
+      epsilon,
+      epsilon * scale,
+      hausdorff,
+      hausdorff * scale,
+      mean * scale,
+      within ? "true" : "false",
+      openBefore,
+      openAfter,
+      static_cast<int>(FieldValue(unfolded, "OpenGapCount")),
+      foldSeconds,
+      unfoldSeconds,
+      JsonString(treePath).c_str(),
+      JsonString(unfoldedPath).c_str());
   }
   else
   {
     std::printf("mesh:                    %s\n", f.meshPath.c_str());
     std::printf("faces:                   %d original, %d stored (%.1f%% compression), "
                 "%lld unfolded\n",
-      original, stored, 100.0 * compression, static_cast<long long>(unfolded->GetNumberOfCells()));
+      original,
+      stored,
+      100.0 * compression,
+      static_cast<long long>(unfolded->GetNumberOfCells()));
     std::printf("tree height:             %d\n", height);
     std::printf("hausdorff / diagonal:    %.6f max, %.6f mean (bound: root epsilon %.6f) %s\n",
-      hausdorff * scale, mean * scale, epsilon * scale, within ? "ok" : "VIOLATED");
-    std::printf("open edges:              %lld before, %lld after (%d open gaps)\n", openBefore,
-      openAfter, static_cast<int>(FieldValue(unfolded, "OpenGapCount")));
-    std::printf("time:                    fold %.3f s, unfold %.3f s\n", foldSeconds,
-      unfoldSeconds);
-    std::printf("wrote:                   %s\n                         %s\n", treePath.c_str(),
+      hausdorff * scale,
+      mean * scale,
+      epsilon * scale,
+      within ? "ok" : "VIOLATED");
+    std::printf("open edges:              %lld before, %lld after (%d open gaps)\n",
+      openBefore,
+      openAfter,
+      static_cast<int>(FieldValue(unfolded, "OpenGapCount")));
+    std::printf(
+      "time:                    fold %.3f s, unfold %.3f s\n", foldSeconds, unfoldSeconds);
+    std::printf("wrote:                   %s\n                         %s\n",
+      treePath.c_str(),
       unfoldedPath.c_str());
   }
   if (!within)

@@ -112,7 +112,6 @@ int vtkSymmetryPlaneDetector::FillInputPortInformation(int, vtkInformation* info
   return 1;
 }
 
-
 //------------------------------------------------------------------------------
 int vtkSymmetryPlaneDetector::RequestData(vtkInformation*,
   vtkInformationVector** inputVector,

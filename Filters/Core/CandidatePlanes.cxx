@@ -177,13 +177,15 @@ std::vector<Plane> VotedPlanes(const PreparedMesh& mesh, int count, double epsil
   std::vector<int> byCurvature(nv), rank(nv);
   for (int v = 0; v < nv; ++v)
     byCurvature[v] = v;
-  std::sort(byCurvature.begin(), byCurvature.end(), [&](int a, int b) {
-    return curvature[a] != curvature[b] ? curvature[a] < curvature[b] : a < b;
-  });
+  std::sort(byCurvature.begin(),
+    byCurvature.end(),
+    [&](int a, int b)
+    { return curvature[a] != curvature[b] ? curvature[a] < curvature[b] : a < b; });
   for (int r = 0; r < nv; ++r)
     rank[byCurvature[r]] = r;
   const int window = std::max(8, nv / 100);
-  auto similar = [&](int a) {
+  auto similar = [&](int a)
+  {
     const int lo = std::max(0, rank[a] - window), hi = std::min(nv - 1, rank[a] + window);
     return byCurvature[lo + static_cast<int>(random() % static_cast<unsigned>(hi - lo + 1))];
   };

@@ -380,7 +380,8 @@ TriangleMesh SimplifiedMesh(const PreparedMesh& mesh, int targetFaces)
   for (int v = 0; v < nv; ++v)
   {
     const Eigen::Vector3d q = ((mesh.points[v] - mesh.boundsMin) / h).array().floor();
-    const auto i = static_cast<unsigned long long>(q.x()), j = static_cast<unsigned long long>(q.y()),
+    const auto i = static_cast<unsigned long long>(q.x()),
+               j = static_cast<unsigned long long>(q.y()),
                k = static_cast<unsigned long long>(q.z());
     keyed[v] = { (i << 42) | (j << 21) | k, v };
   }
@@ -408,8 +409,9 @@ TriangleMesh SimplifiedMesh(const PreparedMesh& mesh, int targetFaces)
   {
     if (mesh.faceDegenerate[f])
       continue;
-    Triangle t{ cluster[mesh.triangles[f][0]], cluster[mesh.triangles[f][1]],
-      cluster[mesh.triangles[f][2]] };
+    Triangle t{
+      cluster[mesh.triangles[f][0]], cluster[mesh.triangles[f][1]], cluster[mesh.triangles[f][2]]
+    };
     if (t[0] == t[1] || t[1] == t[2] || t[0] == t[2])
       continue;
     std::array<int, 3> sorted = t;
@@ -420,9 +422,9 @@ TriangleMesh SimplifiedMesh(const PreparedMesh& mesh, int targetFaces)
   // Drop duplicates (two faces collapsing onto the same cluster triangle).
   std::vector<int> order(out.triangles.size());
   std::iota(order.begin(), order.end(), 0);
-  std::sort(order.begin(), order.end(), [&](int a, int b) {
-    return seen[a] != seen[b] ? seen[a] < seen[b] : a < b;
-  });
+  std::sort(order.begin(),
+    order.end(),
+    [&](int a, int b) { return seen[a] != seen[b] ? seen[a] < seen[b] : a < b; });
   std::vector<char> keep(out.triangles.size(), 1);
   for (size_t m = 1; m < order.size(); ++m)
     if (seen[order[m]] == seen[order[m - 1]])

@@ -127,8 +127,11 @@ public:
           values.push_back(run.distance[v] / eps);
       std::sort(values.begin(), values.end());
       if (!values.empty())
-        std::fprintf(stderr, "  region stats: median %.3f p75 %.3f p90 %.3f\n",
-          values[values.size() / 2], values[values.size() * 3 / 4], values[values.size() * 9 / 10]);
+        std::fprintf(stderr,
+          "  region stats: median %.3f p75 %.3f p90 %.3f\n",
+          values[values.size() / 2],
+          values[values.size() * 3 / 4],
+          values[values.size() * 9 / 10]);
     }
   }
 
@@ -331,8 +334,11 @@ bool Better(const Run& a, const Run& b, double totalArea, const SymmetryOptions&
 namespace
 {
 /// Full-range distances and labels of the winning run into the result.
-void Finish(const PreparedMesh& mesh, const SymmetryOptions& options, const Refiner& refiner,
-  Run& best, SymmetryResult& result)
+void Finish(const PreparedMesh& mesh,
+  const SymmetryOptions& options,
+  const Refiner& refiner,
+  Run& best,
+  SymmetryResult& result)
 {
   const int nf = mesh.NumberOfFaces();
   refiner.Score(best, 9.0 * options.epsilon); // distances up to 3 sigma for the output
@@ -555,7 +561,8 @@ SymmetryResult DetectSymmetryOnFullMesh(const PreparedMesh& mesh, const Symmetry
   if (finished.empty()) // no probe at all (cannot happen with a paper start): take any run
     for (size_t k = 0; k < runs.size(); ++k)
       finished.push_back(k);
-  std::stable_sort(finished.begin(), finished.end(),
+  std::stable_sort(finished.begin(),
+    finished.end(),
     [&](size_t a, size_t b) { return Better(runs[a], runs[b], mesh.totalArea, options); });
   for (size_t k : finished)
     result.finalists.push_back(runs[k].plane);

@@ -53,6 +53,8 @@ struct SymmetryResult
  * RMS of d over S <= 0.35 epsilon.
  */
 SymmetryResult DetectSymmetry(const PreparedMesh& mesh, const SymmetryOptions& options);
+// Setting the environment variable FOLDINGMESHES_DEBUG prints every run (start, iterations,
+// region, RMS/epsilon, plane) and region statistics to stderr.
 
 /// DetectSymmetry without the simplified-copy candidate search of very large meshes.
 SymmetryResult DetectSymmetryOnFullMesh(const PreparedMesh& mesh, const SymmetryOptions& options);

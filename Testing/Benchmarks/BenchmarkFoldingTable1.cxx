@@ -113,7 +113,8 @@ void PointsToSurface(vtkPolyData* from, vtkPolyData* to, double& max, double& su
   locator->BuildLocator();
   std::vector<double> d(from->GetNumberOfPoints(), 0.0);
   vtkSMPThreadLocalObject<vtkGenericCell> cells;
-  vtkSMPTools::For(0, from->GetNumberOfPoints(),
+  vtkSMPTools::For(0,
+    from->GetNumberOfPoints(),
     [&](vtkIdType begin, vtkIdType end)
     {
       vtkGenericCell* cell = cells.Local();
@@ -188,8 +189,13 @@ void Run(const std::string& path, vtkPolyData* mesh)
     CountOpenEdges(input),
     CountOpenEdges(unfolded));
   if (const PaperRow* row = FindPaperRow(stem))
-    std::printf("  | %-11s %6d %6d %5.1f%% %3d %5.0f", row->model, row->faces, row->stored,
-      row->compression, row->height, row->seconds);
+    std::printf("  | %-11s %6d %6d %5.1f%% %3d %5.0f",
+      row->model,
+      row->faces,
+      row->stored,
+      row->compression,
+      row->height,
+      row->seconds);
   std::printf("\n");
   std::fflush(stdout);
 }
@@ -226,8 +232,23 @@ int main(int argc, char* argv[])
     vtkSMPTools::GetBackend(),
     vtkSMPTools::GetEstimatedNumberOfThreads());
   std::printf("%-26s %7s %7s %7s %3s %7s %7s %8s %8s %6s %6s  | %-11s %6s %6s %6s %3s %5s\n",
-    "mesh", "faces", "stored", "compr", "h", "build s", "unfld s", "H/diag", "mean/dg", "open<",
-    "open>", "paper", "faces", "stored", "compr", "h", "s");
+    "mesh",
+    "faces",
+    "stored",
+    "compr",
+    "h",
+    "build s",
+    "unfld s",
+    "H/diag",
+    "mean/dg",
+    "open<",
+    "open>",
+    "paper",
+    "faces",
+    "stored",
+    "compr",
+    "h",
+    "s");
   for (const std::string& path : meshes)
   {
     std::string error;

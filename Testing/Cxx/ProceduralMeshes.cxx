@@ -214,15 +214,19 @@ Creature CreatureShape(unsigned seed)
   s.crestAmp = Uniform(g, 0.15, 0.21);
   s.yCrest = Uniform(g, -0.35, 0.0);
   const double leg = Uniform(g, 0.48, 0.62);
-  s.bumps.push_back({ Uniform(g, -0.6, -0.45), 0.2, 0.75, -0.66, 0.5, leg });         // hind legs
-  s.bumps.push_back({ Uniform(g, 0.1, 0.22), 0.17, 0.75, -0.66, 0.45, 0.6 * leg });   // fore legs
-  s.bumps.push_back({ s.yh - 0.08, 0.12, 0.5, 0.85, 0.4, Uniform(g, 0.25, 0.32) });   // ears
-  s.bumps.push_back({ s.yh + 0.06, 0.07, 0.78, 0.5, 0.3, Uniform(g, 0.15, 0.22) });   // eyes
+  s.bumps.push_back({ Uniform(g, -0.6, -0.45), 0.2, 0.75, -0.66, 0.5, leg });       // hind legs
+  s.bumps.push_back({ Uniform(g, 0.1, 0.22), 0.17, 0.75, -0.66, 0.45, 0.6 * leg }); // fore legs
+  s.bumps.push_back({ s.yh - 0.08, 0.12, 0.5, 0.85, 0.4, Uniform(g, 0.25, 0.32) }); // ears
+  s.bumps.push_back({ s.yh + 0.06, 0.07, 0.78, 0.5, 0.3, Uniform(g, 0.15, 0.22) }); // eyes
   for (int k = 0; k < 5; ++k) // irregular flank bumps
   {
     const double psi = Uniform(g, 0.35, 2.6);
-    s.bumps.push_back({ Uniform(g, -0.9, 0.6), Uniform(g, 0.08, 0.18), std::sin(psi),
-      std::cos(psi), Uniform(g, 0.3, 0.5), Uniform(g, 0.15, 0.3) });
+    s.bumps.push_back({ Uniform(g, -0.9, 0.6),
+      Uniform(g, 0.08, 0.18),
+      std::sin(psi),
+      std::cos(psi),
+      Uniform(g, 0.3, 0.5),
+      Uniform(g, 0.15, 0.3) });
   }
   s.bumps.push_back({ Uniform(g, -0.9, -0.7), 0.1, 0.0, 1.0, 0.4, 0.25 }); // a hump on the tail
   s.BuildTable();
@@ -314,7 +318,8 @@ Vec3 HemiDir(int i, int j, int n)
   const double d = double(s) / n;
   const double phi = 0.5 * kPi * std::abs(j) / s;
   const double sn = d * std::sqrt(2 - d * d);
-  return { s == n ? 0.0 : 1 - d * d, i == 0 ? 0.0 : std::copysign(sn * std::cos(phi), double(i)),
+  return { s == n ? 0.0 : 1 - d * d,
+    i == 0 ? 0.0 : std::copysign(sn * std::cos(phi), double(i)),
     j == 0 ? 0.0 : std::copysign(sn * std::sin(phi), double(j)) };
 }
 
@@ -382,8 +387,11 @@ std::vector<std::array<int, 2>> DiamondRing(int R)
 // counter-clockwise when both loops are counter-clockwise around the inner one. A one-vertex
 // inner loop gives a fan.
 template <class Emit>
-void Zip(const std::vector<Id>& in, const std::vector<double>& tin, const std::vector<Id>& out,
-  const std::vector<double>& tout, Emit emit)
+void Zip(const std::vector<Id>& in,
+  const std::vector<double>& tin,
+  const std::vector<Id>& out,
+  const std::vector<double>& tout,
+  Emit emit)
 {
   const size_t ni = in.size(), no = out.size(), iend = ni == 1 ? 0 : ni;
   size_t i = 0, k = 0;
@@ -503,7 +511,10 @@ TriMesh OctaSphereTwoResolutions(int n, int m, const std::function<Vec3(const Ve
   {
     outer.push_back(A(ij[0], ij[1]));
   }
-  Zip(inner, UniformParams(inner.size()), outer, UniformParams(outer.size()),
+  Zip(inner,
+    UniformParams(inner.size()),
+    outer,
+    UniformParams(outer.size()),
     [&](Id a, Id b, Id c) { M.Face(a, b, c, 1); });
   for (size_t f = firstB; f < M.t.size(); ++f) // built as a half x >= 0: flip for x < 0
   {
@@ -551,8 +562,11 @@ struct TubeSpec
 // exactly, and a section offset odd in x along X and even along Y gives a tube exactly
 // symmetric about local x = 0). Returns the mesh; ring0 receives the ids of the first ring,
 // whose edges the tube uses as ring0[k+1] -> ring0[k].
-TriMesh BuildTube(
-  const TubeSpec& s, const Vec3& o, const Eigen::Matrix3d& E, char sym, std::vector<Id>& ring0)
+TriMesh BuildTube(const TubeSpec& s,
+  const Vec3& o,
+  const Eigen::Matrix3d& E,
+  char sym,
+  std::vector<Id>& ring0)
 {
   double len = 0;
   for (int k = 0; k < 64; ++k)
@@ -597,8 +611,8 @@ TriMesh BuildTube(
     const Vec2 r = s.radii(S.t);
     for (size_t k = 0; k < M; ++k)
     {
-      const Vec2 off = s.section ? s.section(S.t, table[k])
-                                 : Vec2(r.x() * table[k].x(), r.y() * table[k].y());
+      const Vec2 off =
+        s.section ? s.section(S.t, table[k]) : Vec2(r.x() * table[k].x(), r.y() * table[k].y());
       const Vec3 local = S.c + (S.scale * off.x()) * S.X + (S.scale * off.y()) * S.Y;
       ring[j].push_back(m.Add(o + E * local));
     }
@@ -646,8 +660,12 @@ uint64_t EdgeKey(Id a, Id b)
 
 // Removes the faces around P (connected to the face nearest P, centroid within rho, allowed),
 // fills notches, and checks that the boundary is one simple loop.
-bool CutHole(const TriMesh& m, const Vec3& P, double rho, double h,
-  const std::vector<char>& allowed, Hole& hole)
+bool CutHole(const TriMesh& m,
+  const Vec3& P,
+  double rho,
+  double h,
+  const std::vector<char>& allowed,
+  Hole& hole)
 {
   const size_t nf = m.t.size();
   std::vector<Vec3> cen(nf);
@@ -791,8 +809,11 @@ bool CutHole(const TriMesh& m, const Vec3& P, double rho, double h,
 }
 
 // Tries radii around rho until the hole is a clean disc.
-Hole CutHoleRobust(
-  const TriMesh& m, const Vec3& P, double rho, double h, const std::vector<char>& allowed)
+Hole CutHoleRobust(const TriMesh& m,
+  const Vec3& P,
+  double rho,
+  double h,
+  const std::vector<char>& allowed)
 {
   Hole hole;
   for (int k = 0; k < 24; ++k)
@@ -952,9 +973,14 @@ double LoopLift(const TriMesh& m, const Hole& hole)
 // Of 8 turns about the hole normal of the frame E, the one whose tube spec (length L) keeps
 // farthest from the body's vertices beyond arc length `skip` from its start at o; with `cost`,
 // the one of least cost among those keeping at least `minGap` away (if any).
-Eigen::Matrix3d ClearestFrame(const TriMesh& body, const Eigen::Matrix3d& E, const TubeSpec& s,
-  const Vec3& o, double L, double skip,
-  const std::function<double(const Eigen::Matrix3d&)>& cost = {}, double minGap = 0)
+Eigen::Matrix3d ClearestFrame(const TriMesh& body,
+  const Eigen::Matrix3d& E,
+  const TubeSpec& s,
+  const Vec3& o,
+  double L,
+  double skip,
+  const std::function<double(const Eigen::Matrix3d&)>& cost = {},
+  double minGap = 0)
 {
   const size_t stride = std::max<size_t>(1, body.p.size() / 3000);
   const std::vector<Vec2> dirs = RingTable(4);
@@ -999,9 +1025,15 @@ Eigen::Matrix3d ClearestFrame(const TriMesh& body, const Eigen::Matrix3d& E, con
 }
 
 // Welds tubes of growing length until the area fraction of faces with sym == which reaches target.
-TriMesh WeldToFraction(const TriMesh& body, const Hole& hole,
-  const std::function<TubeSpec(double)>& spec, const Vec3& o, const Eigen::Matrix3d& E,
-  char tubeSym, int which, double target, double L0)
+TriMesh WeldToFraction(const TriMesh& body,
+  const Hole& hole,
+  const std::function<TubeSpec(double)>& spec,
+  const Vec3& o,
+  const Eigen::Matrix3d& E,
+  char tubeSym,
+  int which,
+  double target,
+  double L0)
 {
   auto make = [&](double L)
   {
@@ -1203,8 +1235,9 @@ ProceduralMesh MakeThreePlaneShape(int approxFaces)
   return Finish(m, { kPlaneX, kPlaneY, kPlaneZ });
 }
 
-ProceduralMesh MakeBlobWithAsymmetricPart(
-  int approxFaces, double attachmentAreaFraction, unsigned seed)
+ProceduralMesh MakeBlobWithAsymmetricPart(int approxFaces,
+  double attachmentAreaFraction,
+  unsigned seed)
 {
   const double f = std::clamp(attachmentAreaFraction, 0.02, 0.7);
   const Creature s = CreatureShape(seed);
@@ -1214,7 +1247,7 @@ ProceduralMesh MakeBlobWithAsymmetricPart(
   const double rb = std::sqrt(area / (4 * kPi));
   auto g = Rng(seed, 303);
   const double dy = Uniform(g, -0.4, 0.1); // not too close to the head
-  const double dz = Uniform(g, 0.3, 0.8); // upper flank: clear of the legs
+  const double dz = Uniform(g, 0.3, 0.8);  // upper flank: clear of the legs
   const Vec3 P = s(Vec3(0.8, dy, dz).normalized());
   std::vector<char> allowed(body.t.size(), 0);
   for (size_t t = 0; t < half; ++t)
@@ -1258,8 +1291,8 @@ ProceduralMesh MakeBlobWithAsymmetricPart(
     const double bend = std::min(1.0, std::max(0.15, 2.5 * rmax * tilt / L)); // in u
     const double turns = hand * 2 * kPi * L * std::cos(tilt) / pitch;         // radians
     const double twist = std::copysign(std::min(std::abs(twistMax), L / rmax), twistMax);
-    const double oval = std::min(1.0, std::max(0.12, rmax / L)); // ellipticity ramp, in u
-    const double bw = std::max(0.07, 0.6 * rmax / L);            // bump width, in u
+    const double oval = std::min(1.0, std::max(0.12, rmax / L));   // ellipticity ramp, in u
+    const double bw = std::max(0.07, 0.6 * rmax / L);              // bump width, in u
     const double tiltL = std::min(tilt, bend * L / (2.25 * rmax)); // bend radius >= 1.5 rmax
     auto tangent = [=](double v)
     {
@@ -1292,7 +1325,8 @@ ProceduralMesh MakeBlobWithAsymmetricPart(
       }
       const double e = SmoothStep(u / oval), al = twist * u;
       const Vec2 p = radius(u) * m * Vec2((1 + 0.35 * e) * dir.x(), (1 - 0.3 * e) * dir.y());
-      return Vec2(std::cos(al) * p.x() - std::sin(al) * p.y(), std::sin(al) * p.x() + std::cos(al) * p.y());
+      return Vec2(
+        std::cos(al) * p.x() - std::sin(al) * p.y(), std::sin(al) * p.x() + std::cos(al) * p.y());
     };
     t.quarter = q;
     t.spacing = h;
@@ -1305,8 +1339,9 @@ ProceduralMesh MakeBlobWithAsymmetricPart(
   return Finish(m, { kPlaneX });
 }
 
-ProceduralMesh MakeAsymmetricBodyWithSymmetricPart(
-  int approxFaces, double symmetricAreaFraction, unsigned seed)
+ProceduralMesh MakeAsymmetricBodyWithSymmetricPart(int approxFaces,
+  double symmetricAreaFraction,
+  unsigned seed)
 {
   const double f = std::clamp(symmetricAreaFraction, 0.02, 0.6);
   const Lumpy s = LumpyShape(seed);
@@ -1506,7 +1541,10 @@ ProceduralMesh MakeCylinder(int approxFaces)
           outer.push_back(m.Add(Vec3(R * j / J * c.x(), R * j / J * c.y(), z)));
         }
       }
-      Zip(inner, UniformParams(inner.size()), outer, UniformParams(outer.size()),
+      Zip(inner,
+        UniformParams(inner.size()),
+        outer,
+        UniformParams(outer.size()),
         [&](Id a, Id b, Id c) { m.Face(a, b, c, 1); });
       inner = outer;
     }
@@ -1517,8 +1555,11 @@ ProceduralMesh MakeCylinder(int approxFaces)
   }
   const double h = std::sqrt(0.5);
   ProceduralMesh r = Finish(m,
-    { kPlaneX, kPlaneY, KnownPlane{ Vec3::Zero(), Vec3(h, -h, 0) },
-      KnownPlane{ Vec3::Zero(), Vec3(h, h, 0) }, kPlaneZ });
+    { kPlaneX,
+      kPlaneY,
+      KnownPlane{ Vec3::Zero(), Vec3(h, -h, 0) },
+      KnownPlane{ Vec3::Zero(), Vec3(h, h, 0) },
+      kPlaneZ });
   r.family = SymmetryFamily::AnyPlaneContainingAxis;
   return r;
 }
@@ -1533,8 +1574,10 @@ ProceduralMesh MakeMultiPartSymmetric(int approxFaces)
   const Vec3 c = body(Vec3(st * std::sin(psi), ty, st * std::cos(psi))) +
     0.1 * Vec3(std::sin(psi), 0, std::cos(psi));
   TriMesh right = OctaSphere(
-    OctaResolution(0.2 * approxFaces), [&](const Vec3& u) { return Vec3(c + 0.25 * ear(u)); },
-    false, 1);
+    OctaResolution(0.2 * approxFaces),
+    [&](const Vec3& u) { return Vec3(c + 0.25 * ear(u)); },
+    false,
+    1);
   double minX = 1e300; // the ears stay clear of each other (and of the plane x = 0)
   for (const Vec3& p : right.p)
   {
@@ -1565,8 +1608,10 @@ Eigen::Isometry3d RandomRigidMotion(unsigned seed)
   auto g = Rng(seed, 505);
   const double u1 = Uniform(g), u2 = Uniform(g), u3 = Uniform(g); // Shoemake: uniform rotation
   const double a = std::sqrt(1 - u1), b = std::sqrt(u1);
-  const Eigen::Quaterniond q(b * std::cos(2 * kPi * u3), a * std::sin(2 * kPi * u2),
-    a * std::cos(2 * kPi * u2), b * std::sin(2 * kPi * u3));
+  const Eigen::Quaterniond q(b * std::cos(2 * kPi * u3),
+    a * std::sin(2 * kPi * u2),
+    a * std::cos(2 * kPi * u2),
+    b * std::sin(2 * kPi * u3));
   Vec3 t;
   for (int k = 0; k < 3; ++k)
   {
@@ -1697,23 +1742,28 @@ double PlaneAngleDegrees(const Eigen::Vector3d& n1, const Eigen::Vector3d& n2)
   return std::atan2(n1.cross(n2).norm(), std::abs(n1.dot(n2))) * 180 / kPi;
 }
 
-double PlaneOffsetError(const KnownPlane& truth, const Eigen::Vector3d& origin,
-  const Eigen::Vector3d& normal, const Eigen::Vector3d& at, double diagonal)
+double PlaneOffsetError(const KnownPlane& truth,
+  const Eigen::Vector3d& origin,
+  const Eigen::Vector3d& normal,
+  const Eigen::Vector3d& at,
+  double diagonal)
 {
   const Vec3 nt = truth.normal.normalized();
   const Vec3 q = at - nt.dot(at - truth.origin) * nt;
   return std::abs(normal.normalized().dot(q - origin)) / diagonal;
 }
 
-PlaneMatch BestPlaneMatch(
-  const ProceduralMesh& m, const Eigen::Vector3d& origin, const Eigen::Vector3d& normal)
+PlaneMatch BestPlaneMatch(const ProceduralMesh& m,
+  const Eigen::Vector3d& origin,
+  const Eigen::Vector3d& normal)
 {
   const Vec3 at = AreaCentroid(m.mesh);
   const double diag = BoundsDiagonal(m.mesh);
   std::vector<PlaneMatch> c;
   for (size_t i = 0; i < m.planes.size(); ++i)
   {
-    c.push_back({ int(i), PlaneAngleDegrees(normal, m.planes[i].normal),
+    c.push_back({ int(i),
+      PlaneAngleDegrees(normal, m.planes[i].normal),
       PlaneOffsetError(m.planes[i], origin, normal, at, diag) });
   }
   Vec3 n = normal.normalized();

@@ -77,15 +77,17 @@ ProceduralMesh MakeThreePlaneShape(int approxFaces);
 // mirroring the removed hole; the area of the 0 faces is about attachmentAreaFraction
 // (0.02 .. 0.7) of the total (within 0.01 from 2k faces up; on coarser meshes the smallest weld,
 // a hole of 1.5 edge lengths, may exceed a tiny request).
-ProceduralMesh MakeBlobWithAsymmetricPart(
-  int approxFaces, double attachmentAreaFraction, unsigned seed = 1);
+ProceduralMesh MakeBlobWithAsymmetricPart(int approxFaces,
+  double attachmentAreaFraction,
+  unsigned seed = 1);
 // The lumpy asymmetric body of MakeAsymmetricBlob with an exactly symmetric sub-part welded into
 // a hole: a "head" with ONE mirror plane, a short neck flaring into a wide, bent, crested head
 // with eyes, closed by a dome; its plane is `planes[0]`, symmetricFace marks its faces (about
 // symmetricAreaFraction, 0.02 .. 0.6, of the area). The collar joining it to the body is
 // marked 0. The part sits where the body looks least symmetric about the part's plane.
-ProceduralMesh MakeAsymmetricBodyWithSymmetricPart(
-  int approxFaces, double symmetricAreaFraction, unsigned seed = 1);
+ProceduralMesh MakeAsymmetricBodyWithSymmetricPart(int approxFaces,
+  double symmetricAreaFraction,
+  unsigned seed = 1);
 // A random lumpy blob with no mirror symmetry, not even approximately (planes empty,
 // symmetricFace all 0): big lopsided lobes at random directions and a rough skin of random
 // waves, so that no plane maps much of it onto itself within 2% of the diagonal.
@@ -107,8 +109,10 @@ void ApplyRigidMotion(ProceduralMesh& m, const Eigen::Isometry3d& T);
 void ScaleUniformly(ProceduralMesh& m, double s); // about the world origin, s > 0
 // Gaussian noise of standard deviation sigmaFraction * bounding-box diagonal, along the
 // area-weighted vertex normals (or isotropic: that deviation on each coordinate). The planes stay.
-void AddGaussianNoise(
-  ProceduralMesh& m, double sigmaFraction, unsigned seed, bool alongNormals = true);
+void AddGaussianNoise(ProceduralMesh& m,
+  double sigmaFraction,
+  unsigned seed,
+  bool alongNormals = true);
 
 // ---- measures ----
 double BoundsDiagonal(vtkPolyData* mesh);
@@ -119,8 +123,11 @@ double MaskAreaFraction(vtkPolyData* mesh, const std::vector<char>& mask); // ar
 double PlaneAngleDegrees(const Eigen::Vector3d& n1, const Eigen::Vector3d& n2);
 // Distance from the point of the true plane nearest to `at` (use the mesh centroid) to the found
 // plane (origin, normal), divided by `diagonal` (use the bounding-box diagonal).
-double PlaneOffsetError(const KnownPlane& truth, const Eigen::Vector3d& origin,
-  const Eigen::Vector3d& normal, const Eigen::Vector3d& at, double diagonal);
+double PlaneOffsetError(const KnownPlane& truth,
+  const Eigen::Vector3d& origin,
+  const Eigen::Vector3d& normal,
+  const Eigen::Vector3d& at,
+  double diagonal);
 struct PlaneMatch
 {
   int index = -1; // into m.planes; -1: a member of m.family (or no plane at all)
@@ -129,8 +136,9 @@ struct PlaneMatch
 };
 // Best match of a found plane over all the known planes and the continuous family (minimum
 // angle, then minimum offset among the planes within 1e-6 degrees of that angle).
-PlaneMatch BestPlaneMatch(
-  const ProceduralMesh& m, const Eigen::Vector3d& origin, const Eigen::Vector3d& normal);
+PlaneMatch BestPlaneMatch(const ProceduralMesh& m,
+  const Eigen::Vector3d& origin,
+  const Eigen::Vector3d& normal);
 // Area-weighted intersection over union of two face masks (sizes must equal the cell count, else
 // std::invalid_argument); 1 when both are empty.
 double RegionIoU(vtkPolyData* mesh, const std::vector<char>& found, const std::vector<char>& truth);

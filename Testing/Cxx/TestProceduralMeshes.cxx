@@ -21,8 +21,8 @@
 
 // The core's headers are visible only when FoldingMeshesCore is linked to this test.
 #if defined(__has_include)
-#if __has_include("MeshPreparation.h") && __has_include("MirrorDistance.h") &&                    \
-  __has_include("RegionGrowing.h")
+#if __has_include("MeshPreparation.h") &&                                                          \
+  __has_include("MirrorDistance.h") && __has_include("RegionGrowing.h")
 #include "MeshPreparation.h"
 #include "MirrorDistance.h"
 #include "RegionGrowing.h"
@@ -263,8 +263,10 @@ struct Reflection
   size_t unmatchedFaces = 0;
   double matchedFraction = 0;
 };
-Reflection ReflectVertices(
-  vtkPolyData* pd, const Soup& s, const KnownPlane& pl, const std::vector<char>* mask)
+Reflection ReflectVertices(vtkPolyData* pd,
+  const Soup& s,
+  const KnownPlane& pl,
+  const std::vector<char>* mask)
 {
   Reflection r;
   const double diag = BoundsDiagonal(pd);
@@ -511,7 +513,10 @@ public:
 #endif
   }
 
-  double Eps() const { return this->Epsilon; }
+  double Eps() const
+  {
+    return this->Epsilon;
+  }
 
   double Fraction(const KnownPlane& plane) const
   {
@@ -519,7 +524,9 @@ public:
 #if FOLDINGMESHES_TEST_HAS_CORE
     std::vector<double> d;
     this->Distance->Compute(foldingmeshes::Plane{ plane.origin, n },
-      foldingmeshes::DistanceMetric::Fine, 3 * this->Epsilon, d);
+      foldingmeshes::DistanceMetric::Fine,
+      3 * this->Epsilon,
+      d);
     const std::vector<char> region = foldingmeshes::LargestConnectedRegion(
       this->Mesh, foldingmeshes::FacesWithVerticesWithin(this->Mesh, d, this->Epsilon, true));
     return foldingmeshes::RegionArea(this->Mesh, region) / this->Mesh.totalArea;
@@ -594,7 +601,8 @@ public:
     {
       if (mask.empty() || mask[f])
       {
-        c += this->Area[f] * (this->P[this->T[f][0]] + this->P[this->T[f][1]] + this->P[this->T[f][2]]) / 3;
+        c += this->Area[f] *
+          (this->P[this->T[f][0]] + this->P[this->T[f][1]] + this->P[this->T[f][2]]) / 3;
         w += this->Area[f];
       }
     }
@@ -625,7 +633,8 @@ private:
     std::array<int, 3> c;
     for (int k = 0; k < 3; ++k)
     {
-      c[size_t(k)] = std::clamp(int(std::floor((x[k] - this->Lo[k]) / this->Epsilon)), 0, this->Dims[k] - 1);
+      c[size_t(k)] =
+        std::clamp(int(std::floor((x[k] - this->Lo[k]) / this->Epsilon)), 0, this->Dims[k] - 1);
     }
     return c;
   }
@@ -640,7 +649,8 @@ private:
   // barycentric interpolation of the vertex normals at the point q of face f (unit)
   Vec3 InterpolatedNormal(size_t f, const Vec3& q) const
   {
-    const Vec3 &a = this->P[this->T[f][0]], &b = this->P[this->T[f][1]], &c = this->P[this->T[f][2]];
+    const Vec3 &a = this->P[this->T[f][0]], &b = this->P[this->T[f][1]],
+               &c = this->P[this->T[f][2]];
     const Vec3 w = (b - a).cross(c - a);
     const double ww = w.squaredNorm();
     const double la = (c - b).cross(q - b).dot(w) / ww, lb = (a - c).cross(q - c).dot(w) / ww;
@@ -676,11 +686,11 @@ Vec3 RandomNormal(std::mt19937& g)
 
 struct Competition
 {
-  double truth = -1;        // RegionFraction of the true plane (-1: none)
-  double principal = 0;     // best principal plane other than the true one
-  double random = 0;        // best random plane (through the centroids given)
-  double refined = 0;       // best after refining the best random planes (if asked)
-  int skipped = 0;          // random planes within `exclude` degrees of the true plane
+  double truth = -1;    // RegionFraction of the true plane (-1: none)
+  double principal = 0; // best principal plane other than the true one
+  double random = 0;    // best random plane (through the centroids given)
+  double refined = 0;   // best after refining the best random planes (if asked)
+  int skipped = 0;      // random planes within `exclude` degrees of the true plane
   double Best() const { return std::max({ principal, random, refined }); }
 };
 
@@ -690,8 +700,13 @@ struct Competition
 // continuously as the plane turns away from it); with `refine`, the 5 best random planes are
 // improved by a random local search (tilts and shifts, halved when stuck), never entering the
 // excluded cone either.
-Competition Compete(const ProceduralMesh& m, const RegionMeasure& rm,
-  const std::vector<Vec3>& centers, int count, double exclude, unsigned seed, bool refine)
+Competition Compete(const ProceduralMesh& m,
+  const RegionMeasure& rm,
+  const std::vector<Vec3>& centers,
+  int count,
+  double exclude,
+  unsigned seed,
+  bool refine)
 {
   Competition c;
   const bool hasTruth = !m.planes.empty();
@@ -728,8 +743,8 @@ Competition Compete(const ProceduralMesh& m, const RegionMeasure& rm,
   }
   if (refine)
   {
-    std::sort(tried.begin(), tried.end(),
-      [](const auto& a, const auto& b) { return a.first > b.first; });
+    std::sort(
+      tried.begin(), tried.end(), [](const auto& a, const auto& b) { return a.first > b.first; });
     for (size_t k = 0; k < std::min<size_t>(5, tried.size()); ++k)
     {
       KnownPlane p = tried[k].second;
@@ -767,7 +782,10 @@ struct Gen
 };
 
 // Full check of one mesh; returns its reflection error (max over planes).
-double CheckMesh(const Gen& g, const ProceduralMesh& m, const std::string& name, int approxFaces,
+double CheckMesh(const Gen& g,
+  const ProceduralMesh& m,
+  const std::string& name,
+  int approxFaces,
   double seconds = -1)
 {
   Soup s;
@@ -812,7 +830,13 @@ double CheckMesh(const Gen& g, const ProceduralMesh& m, const std::string& name,
   if (!quiet)
   {
     std::printf("  %-44s %7zu faces %7zu pts %d comp min/mean area %.3f refl err %s%s\n",
-      name.c_str(), s.t.size(), s.p.size(), info.components, info.minAreaRatio, refl, gen);
+      name.c_str(),
+      s.t.size(),
+      s.p.size(),
+      info.components,
+      info.minAreaRatio,
+      refl,
+      gen);
   }
   return worst;
 }
@@ -837,7 +861,9 @@ vtkSmartPointer<vtkPolyData> FromSoup(const Soup& s)
 }
 
 // Runs the checks on a deliberately broken copy of m; they must report a failure.
-void ExpectCaught(const Gen& g, const ProceduralMesh& m, const std::string& what,
+void ExpectCaught(const Gen& g,
+  const ProceduralMesh& m,
+  const std::string& what,
   const std::function<void(Soup&)>& breakIt)
 {
   Soup s;
@@ -896,12 +922,21 @@ int main()
   const std::vector<Gen> gens = {
     { "BilateralBlob", [](int f) { return MakeBilateralBlob(f); }, true, true, 1 },
     { "BilateralBlobDifferentTessellation",
-      [](int f) { return MakeBilateralBlobDifferentTessellation(f); }, false, false, 1 },
+      [](int f) { return MakeBilateralBlobDifferentTessellation(f); },
+      false,
+      false,
+      1 },
     { "ThreePlaneShape", [](int f) { return MakeThreePlaneShape(f); }, true, true, 1 },
-    { "BlobWithAsymmetricPart(0.25)", [](int f) { return MakeBlobWithAsymmetricPart(f, 0.25); },
-      true, true, 1 },
+    { "BlobWithAsymmetricPart(0.25)",
+      [](int f) { return MakeBlobWithAsymmetricPart(f, 0.25); },
+      true,
+      true,
+      1 },
     { "AsymmetricBodyWithSymmetricPart(0.2)",
-      [](int f) { return MakeAsymmetricBodyWithSymmetricPart(f, 0.2); }, true, true, 1 },
+      [](int f) { return MakeAsymmetricBodyWithSymmetricPart(f, 0.2); },
+      true,
+      true,
+      1 },
     { "AsymmetricBlob", [](int f) { return MakeAsymmetricBlob(f); }, false, false, 1 },
     { "Sphere", [](int f) { return MakeSphere(f); }, true, true, 1 },
     { "Cylinder", [](int f) { return MakeCylinder(f); }, true, false, 1 },
@@ -913,7 +948,9 @@ int main()
     const Gen& g = gens[0];
     const ProceduralMesh m = MakeBilateralBlob(500);
     ExpectCaught(g, m, "one flipped triangle", [](Soup& s) { std::swap(s.t[7][0], s.t[7][1]); });
-    ExpectCaught(g, m, "all triangles flipped (inward)",
+    ExpectCaught(g,
+      m,
+      "all triangles flipped (inward)",
       [](Soup& s)
       {
         for (Tri& t : s.t)
@@ -921,7 +958,9 @@ int main()
       });
     ExpectCaught(g, m, "one triangle removed (hole)", [](Soup& s) { s.t.pop_back(); });
     ExpectCaught(g, m, "one triangle doubled", [](Soup& s) { s.t.push_back(s.t[3]); });
-    ExpectCaught(g, m, "a duplicated point",
+    ExpectCaught(g,
+      m,
+      "a duplicated point",
       [](Soup& s)
       {
         s.p.push_back(s.p[s.t[5][0]]);
@@ -929,7 +968,9 @@ int main()
       });
     ExpectCaught(g, m, "an unused point", [](Soup& s) { s.p.push_back(Vec3(9, 9, 9)); });
     ExpectCaught(g, m, "a vertex moved by 1e-7", [](Soup& s) { s.p[s.t[0][0]].y() += 1e-7; });
-    ExpectCaught(g, m, "two spheres sharing a vertex (pinch)",
+    ExpectCaught(g,
+      m,
+      "two spheres sharing a vertex (pinch)",
       [](Soup& s)
       {
         Soup o = s;
@@ -997,7 +1038,9 @@ int main()
     const double maxd = *std::max_element(d.begin(), d.end()) / diag;
     std::printf("  %zu faces: %.1f%% of reflected vertices on a vertex, max surface distance "
                 "%.2e diag\n",
-      s.t.size(), 100 * r.matchedFraction, maxd);
+      s.t.size(),
+      100 * r.matchedFraction,
+      maxd);
     EXPECT(r.matchedFraction < 0.2, "DifferentTessellation: the vertex set is symmetric");
     EXPECT(maxd < 1e-3, "DifferentTessellation: reflected vertex " << maxd << " diag off surface");
   }
@@ -1013,8 +1056,13 @@ int main()
     {
       const bool isTrue = !named.second.planes.empty() &&
         PlaneAngleDegrees(res.first, named.second.planes[0].normal) < 5;
-      std::printf("  %-22s normal (%6.3f %6.3f %6.3f): RMS %.4f%s\n", named.first.c_str(),
-        res.first.x(), res.first.y(), res.first.z(), res.second, isTrue ? " (true plane)" : "");
+      std::printf("  %-22s normal (%6.3f %6.3f %6.3f): RMS %.4f%s\n",
+        named.first.c_str(),
+        res.first.x(),
+        res.first.y(),
+        res.first.z(),
+        res.second,
+        isTrue ? " (true plane)" : "");
       EXPECT(isTrue ? res.second < 2e-3 : res.second > 1e-2,
         named.first << ": principal plane residual " << res.second);
     }
@@ -1033,8 +1081,11 @@ int main()
       {
         std::snprintf(truth, sizeof(truth), "%6.3f", c.truth);
       }
-      std::printf("  %-36s true %s  other principal %.3f  random %.3f", name.c_str(), truth,
-        c.principal, c.random);
+      std::printf("  %-36s true %s  other principal %.3f  random %.3f",
+        name.c_str(),
+        truth,
+        c.principal,
+        c.random);
       if (c.refined > 0)
       {
         std::printf("  refined %.3f", c.refined);
@@ -1116,7 +1167,12 @@ int main()
       const double fb = MaskAreaFraction(b.mesh, b.symmetricFace);
       std::printf("  F=%6d request %.2f: asymmetric attachment %.3f (%lld faces), symmetric part "
                   "%.3f (%lld faces)\n",
-        F, f, fa, (long long)a.mesh->GetNumberOfCells(), fb, (long long)b.mesh->GetNumberOfCells());
+        F,
+        f,
+        fa,
+        (long long)a.mesh->GetNumberOfCells(),
+        fb,
+        (long long)b.mesh->GetNumberOfCells());
       EXPECT(std::abs(fa - f) <= 0.1, "BlobWithAsymmetricPart(" << F << ", " << f << "): " << fa);
       EXPECT(std::abs(fb - f) <= 0.1,
         "AsymmetricBodyWithSymmetricPart(" << F << ", " << f << "): " << fb);
@@ -1217,7 +1273,8 @@ int main()
     const ProceduralMesh m = MakeBilateralBlob(1000000);
     const double dt = Seconds(t0);
     std::printf("  MakeBilateralBlob(1000000): %lld faces in %.3f s\n",
-      (long long)m.mesh->GetNumberOfCells(), dt);
+      (long long)m.mesh->GetNumberOfCells(),
+      dt);
     CheckMesh(gens[0], m, "BilateralBlob@1000000", 1000000);
   }
 

@@ -160,17 +160,20 @@ int main()
     Check(fine.iou > 0.7, "region = the sub-part");
   }
   {
-    std::printf("same, robust method without voted starts, from the initial plane of the sub-part\n");
+    std::printf(
+      "same, robust method without voted starts, from the initial plane of the sub-part\n");
     ProceduralMesh m = MakeAsymmetricBodyWithSymmetricPart(8000, 0.3, 9);
     Moved(m, 9);
     const KnownPlane truth = m.planes[0];
-    Outcome r = Detect(m, [&](vtkSymmetryPlaneDetector* d) {
-      d->SetNumberOfCandidates(0); // no voted starts: the initial plane must do it
-      d->SetTolerance(0.01);
-      d->UseInitialPlaneOn();
-      d->SetInitialPlaneOrigin(truth.origin.data());
-      d->SetInitialPlaneNormal(truth.normal.data());
-    });
+    Outcome r = Detect(m,
+      [&](vtkSymmetryPlaneDetector* d)
+      {
+        d->SetNumberOfCandidates(0); // no voted starts: the initial plane must do it
+        d->SetTolerance(0.01);
+        d->UseInitialPlaneOn();
+        d->SetInitialPlaneOrigin(truth.origin.data());
+        d->SetInitialPlaneNormal(truth.normal.data());
+      });
     Check(r.match.angleDegrees < 1.0, "initial plane keeps the sub-part's plane");
   }
   {

@@ -21,8 +21,14 @@ int main(int argc, char* argv[])
   detector->Update();
   const double* o = detector->GetPlaneOrigin();
   const double* n = detector->GetPlaneNormal();
-  std::printf("plane origin %g %g %g normal %g %g %g, symmetric area %.1f%%, found %s\n", o[0], o[1],
-    o[2], n[0], n[1], n[2], 100.0 * detector->GetSymmetricAreaFraction(),
+  std::printf("plane origin %g %g %g normal %g %g %g, symmetric area %.1f%%, found %s\n",
+    o[0],
+    o[1],
+    o[2],
+    n[0],
+    n[1],
+    n[2],
+    100.0 * detector->GetSymmetricAreaFraction(),
     detector->GetSymmetryFound() ? "yes" : "no");
   return detector->GetSymmetryFound() ? 0 : 2;
 }
