@@ -7,6 +7,7 @@
 // numbers for humans and closing notes.
 //
 //   BenchmarkFoldingTable1 [--threads N] MESH_OR_FOLDER...
+#include "MeshComparison.h"
 #include "MeshIO.h"
 #include "vtkFoldingTreeBuilder.h"
 #include "vtkFoldingTreeUnfolder.h"
@@ -74,67 +75,6 @@ double TreeValue(vtkMultiBlockDataSet* tree, const char* name)
   return a && a->GetNumberOfTuples() > 0 ? a->GetTuple1(0) : 0.0;
 }
 
-/// Edges used by exactly one polygon, vertices at identical positions counted as one.
-long long CountOpenEdges(vtkPolyData* mesh)
-{
-  std::map<std::array<double, 3>, vtkIdType> unique;
-  std::vector<vtkIdType> id(mesh->GetNumberOfPoints());
-  for (vtkIdType p = 0; p < mesh->GetNumberOfPoints(); ++p)
-  {
-    std::array<double, 3> x;
-    mesh->GetPoint(p, x.data());
-    id[p] = unique.emplace(x, static_cast<vtkIdType>(unique.size())).first->second;
-  }
-  std::map<std::pair<vtkIdType, vtkIdType>, int> edges;
-  vtkIdType n = 0;
-  const vtkIdType* pts = nullptr;
-  vtkCellArray* polys = mesh->GetPolys();
-  for (polys->InitTraversal(); polys->GetNextCell(n, pts);)
-    for (vtkIdType k = 0; k < n; ++k)
-    {
-      const vtkIdType a = id[pts[k]], b = id[pts[(k + 1) % n]];
-      if (a != b)
-        ++edges[{ std::min(a, b), std::max(a, b) }];
-    }
-  long long open = 0;
-  for (const auto& e : edges)
-    open += e.second == 1;
-  return open;
-}
-
-/// Max and sum of the distances from the points of `from` to the surface `to`.
-void PointsToSurface(vtkPolyData* from, vtkPolyData* to, double& max, double& sum)
-{
-  max = sum = 0.0;
-  if (from->GetNumberOfPoints() == 0 || to->GetNumberOfCells() == 0)
-    return;
-  vtkNew<vtkStaticCellLocator> locator;
-  locator->SetDataSet(to);
-  locator->BuildLocator();
-  std::vector<double> d(from->GetNumberOfPoints(), 0.0);
-  vtkSMPThreadLocalObject<vtkGenericCell> cells;
-  vtkSMPTools::For(0,
-    from->GetNumberOfPoints(),
-    [&](vtkIdType begin, vtkIdType end)
-    {
-      vtkGenericCell* cell = cells.Local();
-      double x[3], closest[3], dist2 = 0.0;
-      vtkIdType cellId = -1;
-      int subId = 0;
-      for (vtkIdType p = begin; p < end; ++p)
-      {
-        from->GetPoint(p, x);
-        locator->FindClosestPoint(x, closest, cell, cellId, subId, dist2);
-        d[p] = std::sqrt(dist2);
-      }
-    });
-  for (double v : d)
-  {
-    max = std::max(max, v);
-    sum += v;
-  }
-}
-
 void Run(const std::string& path, vtkPolyData* mesh)
 {
   const std::string stem = std::filesystem::path(path).stem().string();
@@ -167,12 +107,10 @@ void Run(const std::string& path, vtkPolyData* mesh)
   const double diagonal = std::sqrt((bounds[1] - bounds[0]) * (bounds[1] - bounds[0]) +
     (bounds[3] - bounds[2]) * (bounds[3] - bounds[2]) +
     (bounds[5] - bounds[4]) * (bounds[5] - bounds[4]));
-  double maxAB, sumAB, maxBA, sumBA;
-  PointsToSurface(input, unfolded, maxAB, sumAB);
-  PointsToSurface(unfolded, input, maxBA, sumBA);
-  const double hausdorff = std::max(maxAB, maxBA) / diagonal;
-  const double mean = (sumAB + sumBA) /
-    static_cast<double>(input->GetNumberOfPoints() + unfolded->GetNumberOfPoints()) / diagonal;
+  double hausdorff = 0.0, mean = 0.0;
+  foldingmeshes::SymmetricSurfaceDistance(input, unfolded, hausdorff, mean);
+  hausdorff /= diagonal;
+  mean /= diagonal;
   const double epsilon = TreeValue(tree, "RootEpsilon") / diagonal;
 
   std::printf("%-26s %7d %7d %6.1f%% %3d %7.3f %7.3f %7.4f%s %8.5f %6lld %6lld",
@@ -186,8 +124,8 @@ void Run(const std::string& path, vtkPolyData* mesh)
     hausdorff,
     hausdorff <= epsilon ? " " : "!",
     mean,
-    CountOpenEdges(input),
-    CountOpenEdges(unfolded));
+    foldingmeshes::CountOpenEdges(input),
+    foldingmeshes::CountOpenEdges(unfolded));
   if (const PaperRow* row = FindPaperRow(stem))
     std::printf("  | %-11s %6d %6d %5.1f%% %3d %5.0f",
       row->model,

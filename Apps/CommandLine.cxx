@@ -1,0 +1,102 @@
+#include "CommandLine.h"
+
+#include <cstdlib>
+#include <sstream>
+
+namespace foldingmeshes
+{
+namespace cli
+{
+const char* const Usage = R"(usage: foldingmeshes detect MESH [options]
+       foldingmeshes fold MESH [fold options]
+       foldingmeshes unfold TREE.vtm [unfold options]
+       foldingmeshes roundtrip MESH [fold options]
+
+MESH is a .vtp .vtk .ply .obj .stl or .off file; outputs are named after its stem.
+
+detect: finds the dominant planar reflection symmetry of a triangle mesh and the largest
+connected region that has it (Folding meshes, SGP 2006, section 3).
+  --tolerance F            epsilon as a fraction of the bounding-box diagonal (default 0.02)
+  --absolute-tolerance L   epsilon as a length (overrides --tolerance)
+  --method robust|paper    several starts judged by final region (default) or the paper's one start
+  --initial-plane OX,OY,OZ,NX,NY,NZ
+                           start from this plane instead of the principal axes
+  --candidates N           voted candidate planes tried by the robust method (default 8)
+  --separate-parts         regions never span separate parts (default: parts touching within
+                           epsilon are connected)
+  --output FILE            labelled mesh (default: MESH stem + "_symmetry.vtp" in --outdir)
+  --plane-output FILE      plane glyph (default: MESH stem + "_plane.vtp" in --outdir)
+  --picture FILE           PNG picture (default: MESH stem + "_symmetry.png" in --outdir)
+  --outdir DIR             folder for default outputs (default: current folder)
+  --no-files               write nothing, only print
+  --json                   print the result as JSON
+  --quiet                  no progress on stderr
+  --help                   this text
+
+fold: folds the mesh into a folding tree (section 4.1-4.2) and writes, in --outdir,
+STEM_tree.vtm (the tree, XML multiblock; its pieces go to the folder STEM_tree/),
+STEM_segmentation.vtp (the mesh with cell arrays FoldingLeafId, FoldingDepth, FoldingRole)
+and STEM_segmentation.png (coloured by FoldingLeafId; grey: faces mirrored away); prints
+original and stored faces, compression, tree height, folds, leaves and time.
+  --tolerance F            root epsilon as a fraction of the diagonal (default 0.02), halved
+                           below every fold
+  --absolute-tolerance L   root epsilon as a length (overrides --tolerance)
+  --keep more|fewer        a fold keeps the half with more faces (default, the paper's) or
+                           fewer (less storage)
+  --min-area-fraction F    leaf when a region's area is below F of the mesh's (default 0.05)
+  --max-folds N            leaf when N folds lie above a region (default 8, at most 63)
+  --outdir DIR             folder for the outputs (default: current folder)
+  --json                   print the result as JSON
+  --quiet                  no progress on stderr
+
+unfold: reconstructs the mesh from a tree written by fold (section 4.3) and writes, in
+--outdir, STEM_unfolded.vtp and STEM_unfolded.png (coloured by FoldingLeafId), where STEM is
+the tree's file stem without a trailing "_tree"; prints faces, open edges, stitched vertices
+and open gaps.
+  --no-stitch              the raw union of the copies: no stitching or smoothing of tears
+  --outdir DIR             folder for the outputs (default: current folder)
+  --json, --quiet          as for fold
+
+roundtrip: folds MESH (fold options), writes STEM_tree.vtm, reads it back, unfolds it, writes
+STEM_unfolded.vtp and reports the symmetric Hausdorff distance between the (triangulated)
+input and the unfolded mesh as a fraction of the input's bounding-box diagonal: the maximum
+and the mean over the vertices of both meshes of the distance to the other surface. Also
+prints the open (boundary) edges before and after (vertices at identical positions counted
+as one). Fails with exit code 4 when the Hausdorff distance exceeds the root epsilon. No
+pictures.
+
+Pictures need a display: without $DISPLAY they are skipped with a message (use xvfb-run -a).
+
+exit codes: 0 success, 1 bad command line, 2 unreadable or invalid input, 3 cannot write,
+            4 roundtrip: Hausdorff distance above the root epsilon (the paper's bound)
+)";
+
+bool ParseNumbers(const std::string& text, std::vector<double>& values)
+{
+  std::stringstream in(text);
+  std::string item;
+  values.clear();
+  while (std::getline(in, item, ','))
+  {
+    char* end = nullptr;
+    const double v = std::strtod(item.c_str(), &end);
+    if (end == item.c_str() || *end != '\0')
+      return false;
+    values.push_back(v);
+  }
+  return true;
+}
+
+std::string JsonString(const std::string& s)
+{
+  std::string out = "\"";
+  for (char c : s)
+  {
+    if (c == '"' || c == '\\')
+      out += '\\';
+    out += c;
+  }
+  return out + "\"";
+}
+}
+}
