@@ -1,16 +1,12 @@
 #include "MeshComparison.h"
 
+#include "SurfaceDistance.h"
+
 #include <vtkCellArray.h>
-#include <vtkGenericCell.h>
-#include <vtkNew.h>
 #include <vtkPolyData.h>
-#include <vtkSMPThreadLocalObject.h>
-#include <vtkSMPTools.h>
-#include <vtkStaticCellLocator.h>
 
 #include <algorithm>
 #include <array>
-#include <cmath>
 #include <map>
 #include <utility>
 #include <vector>
@@ -49,54 +45,31 @@ long long CountOpenEdges(vtkPolyData* mesh)
 
 namespace
 {
-struct Distances
+/// The polygons of `mesh` as triangles (fans), for the core's distance queries.
+TriangleMesh ToTriangles(vtkPolyData* mesh)
 {
-  double max = 0.0, sum = 0.0;
-  vtkIdType count = 0;
-};
-
-/// Distances from every point of `from` to the surface `to` (vtkStaticCellLocator).
-Distances PointsToSurface(vtkPolyData* from, vtkPolyData* to)
-{
-  Distances result;
-  if (from->GetNumberOfPoints() == 0 || to->GetNumberOfCells() == 0)
-    return result;
-  vtkNew<vtkStaticCellLocator> locator;
-  locator->SetDataSet(to);
-  locator->BuildLocator();
-  std::vector<double> d(from->GetNumberOfPoints(), 0.0);
-  vtkSMPThreadLocalObject<vtkGenericCell> cells;
-  vtkSMPTools::For(0,
-    from->GetNumberOfPoints(),
-    [&](vtkIdType begin, vtkIdType end)
-    {
-      vtkGenericCell* cell = cells.Local();
-      double x[3], closest[3], dist2 = 0.0;
-      vtkIdType cellId = -1;
-      int subId = 0;
-      for (vtkIdType p = begin; p < end; ++p)
-      {
-        from->GetPoint(p, x);
-        locator->FindClosestPoint(x, closest, cell, cellId, subId, dist2);
-        d[p] = std::sqrt(dist2);
-      }
-    });
-  for (double v : d)
-  {
-    result.max = std::max(result.max, v);
-    result.sum += v;
-  }
-  result.count = static_cast<vtkIdType>(d.size());
-  return result;
+  TriangleMesh out;
+  out.points.resize(mesh->GetNumberOfPoints());
+  for (vtkIdType p = 0; p < mesh->GetNumberOfPoints(); ++p)
+    mesh->GetPoint(p, out.points[p].data());
+  vtkCellArray* polys = mesh->GetPolys();
+  if (!polys)
+    return out;
+  vtkIdType n = 0;
+  const vtkIdType* pts = nullptr;
+  for (polys->InitTraversal(); polys->GetNextCell(n, pts);)
+    for (vtkIdType k = 1; k + 1 < n; ++k)
+      out.triangles.push_back({ static_cast<int>(pts[0]), static_cast<int>(pts[k]),
+        static_cast<int>(pts[k + 1]) });
+  return out;
+}
 }
 
-}
-
-/// Symmetric Hausdorff distance (max) and mean point-to-surface distance over both meshes.
+/// Symmetric Hausdorff distance (max) and mean distance over the samples of both meshes.
 void SymmetricSurfaceDistance(vtkPolyData* a, vtkPolyData* b, double& hausdorff, double& mean)
 {
-  const Distances ab = PointsToSurface(a, b), ba = PointsToSurface(b, a);
-  hausdorff = std::max(ab.max, ba.max);
-  mean = ab.count + ba.count > 0 ? (ab.sum + ba.sum) / static_cast<double>(ab.count + ba.count) : 0;
+  const SurfaceComparison c = CompareSurfaces(ToTriangles(a), ToTriangles(b));
+  hausdorff = c.hausdorff;
+  mean = c.mean;
 }
 }

@@ -13,9 +13,11 @@ namespace foldingmeshes
 long long CountOpenEdges(vtkPolyData* mesh);
 
 /**
- * Symmetric Hausdorff distance (the largest distance from a point of either mesh to the
- * other surface, vtkStaticCellLocator, in parallel) and the mean of those point-to-surface
- * distances over the points of both meshes. Lengths, not fractions of a diagonal.
+ * Symmetric Hausdorff distance and mean distance between the polygon surfaces of two meshes,
+ * by the core's CompareSurfaces (Filters/Core/SurfaceDistance.h: exact point-to-surface
+ * distances sampled at the vertices and face centroids of both meshes) - the same measure
+ * vtkFoldingTreeUnfolder reports against its "Original" input. Lengths, not fractions of a
+ * diagonal.
  */
 void SymmetricSurfaceDistance(vtkPolyData* a, vtkPolyData* b, double& hausdorff, double& mean);
 }

@@ -164,6 +164,56 @@ FaceTree::Hit FaceTree::ClosestCompatibleFace(const Vec3& p,
   return hit;
 }
 
+FaceTree::Hit FaceTree::ClosestFace(const Vec3& p, double maxDistance) const
+{
+  Hit hit;
+  if (this->Nodes.empty())
+    return hit;
+  double best2 = maxDistance * maxDistance;
+  int stack[128];
+  int top = 0;
+  stack[top++] = 0;
+  while (top > 0)
+  {
+    const Node& node = this->Nodes[stack[--top]];
+    if (BoxDistance2(node.lo, node.hi, p) > best2)
+      continue;
+    if (node.count > 0)
+    {
+      for (int k = node.first; k < node.first + node.count; ++k)
+      {
+        const int f = this->Order[k];
+        const Triangle& t = Mesh.triangles[f];
+        const ClosestPointOnTriangle cp =
+          ClosestPointTriangle(p, Mesh.points[t[0]], Mesh.points[t[1]], Mesh.points[t[2]]);
+        if (cp.squaredDistance < best2 ||
+          (cp.squaredDistance == best2 && (hit.face < 0 || f < hit.face)))
+        {
+          best2 = cp.squaredDistance;
+          hit.face = f;
+          hit.point = cp.point;
+        }
+      }
+      continue;
+    }
+    const double dl = BoxDistance2(this->Nodes[node.left].lo, this->Nodes[node.left].hi, p);
+    const double dr = BoxDistance2(this->Nodes[node.right].lo, this->Nodes[node.right].hi, p);
+    if (dl <= dr)
+    {
+      stack[top++] = node.right;
+      stack[top++] = node.left;
+    }
+    else
+    {
+      stack[top++] = node.left;
+      stack[top++] = node.right;
+    }
+  }
+  if (hit.face >= 0)
+    hit.distance = std::sqrt(best2);
+  return hit;
+}
+
 int FaceTree::NearestCentroidFace(const Vec3& p) const
 {
   int bestFace = -1;

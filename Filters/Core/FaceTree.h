@@ -46,6 +46,9 @@ public:
     double cosLimit,
     double maxDistance) const;
 
+  /// The face closest to p, whatever its normal (closer than maxDistance; else face -1).
+  Hit ClosestFace(const Vec3& p, double maxDistance) const;
+
   /// The (non-degenerate) face whose centroid is nearest to p; -1 if there is none.
   int NearestCentroidFace(const Vec3& p) const;
 

@@ -4,14 +4,18 @@
 #include "MeshPreparation.h"
 #include "MirrorDistance.h"
 #include "RegionGrowing.h"
+#include "SurfaceDistance.h"
 
 #include <Eigen/Dense>
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <limits>
 #include <map>
+#include <memory>
 #include <numeric>
 
 namespace foldingmeshes
@@ -221,7 +225,13 @@ public:
   {
     this->PlaneAtDepth.assign(MaximumFoldingTreeLevels, Plane());
     this->EpsilonAtDepth.assign(MaximumFoldingTreeLevels, 0.0);
-    this->Build(std::move(root), -1, 0, this->Options.epsilon, 0, 0);
+    {
+      TriangleMesh input;
+      input.points = root.points;
+      input.triangles = root.triangles;
+      this->ToInput.reset(new SurfaceDistanceQuery(input));
+    }
+    this->Build(std::move(root), -1, 0, this->Options.epsilon, 0, 0, this->Options.epsilon);
     this->Report(1.0);
   }
 
@@ -432,8 +442,15 @@ private:
     return false;
   }
 
-  /// Builds the subtree of region w; returns its node index.
-  int Build(WorkMesh w, int parent, int depth, double eps, int folds, uint64_t pathFolds)
+  /// Builds the subtree of region w; returns its node index. `budget`: the unfolding error
+  /// the folds below may still add on this path (see FoldingTreeOptions::errorBudget).
+  int Build(WorkMesh w,
+    int parent,
+    int depth,
+    double eps,
+    int folds,
+    uint64_t pathFolds,
+    double budget)
   {
     const std::vector<int> dropped = WeldAndDropCollapsed(w);
     if (parent < 0)
@@ -492,13 +509,16 @@ private:
       any = any || S[f];
     }
     Plane plane = result.plane;
+    // Trimming keeps the faces whose mirrored vertices are within this of S: the node's
+    // epsilon, or less when the folds above have used up most of the error budget.
+    const double trim = O.errorBudget ? std::min(eps, budget) : eps;
     if (any && O.trimToMirrorConsistent)
-      S = this->Trim(w, pm, S, plane, eps);
+      S = this->Trim(w, pm, S, plane, trim);
     if (any && O.polishPlane)
     {
       plane = this->Polish(w, pm, S, plane, eps);
       if (O.trimToMirrorConsistent)
-        S = this->Trim(w, pm, S, plane, eps);
+        S = this->Trim(w, pm, S, plane, trim);
     }
     // Input-degenerate faces (never in S: detection ignores them) follow S when all their
     // vertices are vertices of S.
@@ -547,7 +567,7 @@ private:
     const int n = LabelConnectedRegions(pm, rest, labels);
     if (n == 0)
     {
-      this->Fold(index, std::move(w), plane, depth, eps, folds, pathFolds);
+      this->Fold(index, std::move(w), plane, depth, eps, folds, pathFolds, budget);
       return index;
     }
 
@@ -585,10 +605,10 @@ private:
     {
       const int foldIndex = this->NewNode(index, depth + 1, eps, folds, ws);
       this->Tree.nodes[foldIndex].symmetricAreaFraction = 1.0;
-      this->Fold(foldIndex, std::move(ws), plane, depth + 1, eps, folds, pathFolds);
+      this->Fold(foldIndex, std::move(ws), plane, depth + 1, eps, folds, pathFolds, budget);
     }
     for (int r = 0; r < n; ++r)
-      this->Build(std::move(regions[r]), index, depth + 1, eps, folds, pathFolds);
+      this->Build(std::move(regions[r]), index, depth + 1, eps, folds, pathFolds, budget);
     return index;
   }
 
@@ -771,8 +791,14 @@ private:
   }
 
   /// Turns node `index` (region w) into a folding node and builds the kept half below it.
-  void
-  Fold(int index, WorkMesh w, Plane plane, int depth, double eps, int folds, uint64_t pathFolds)
+  void Fold(int index,
+    WorkMesh w,
+    Plane plane,
+    int depth,
+    double eps,
+    int folds,
+    uint64_t pathFolds,
+    double budget)
   {
     const FoldingTreeOptions& O = this->Options;
     const int nf = w.NumberOfFaces();
@@ -812,13 +838,74 @@ private:
       if (keep[f])
         for (int v : w.triangles[f])
           used[v] = 1;
+    // The error this fold adds to unfold(): the largest distance of a mirrored vertex of the
+    // region to the region (both halves: either may be the one reproduced), before projection.
+    TriangleMesh region;
+    region.points = w.points;
+    region.triangles = w.triangles;
+    const SurfaceDistanceQuery toRegion(region);
+    double mirrorError = 0.0, keptError = 0.0, discardedError = 0.0;
+    if (O.errorBudget)
+    {
+      std::vector<Vec3> mirrored(w.points.size());
+      for (int v = 0; v < w.NumberOfPoints(); ++v)
+        mirrored[v] = plane.Reflect(w.points[v]);
+      const std::vector<double> toS = toRegion.Distances(mirrored);
+      const std::vector<double> toM = this->ToInput->Distances(mirrored);
+      for (int v = 0; v < w.NumberOfPoints(); ++v)
+        if (used[v])
+          keptError = std::max(keptError, toM[v]);
+        else
+          discardedError = std::max(discardedError, toS[v]);
+      mirrorError = std::max(keptError, discardedError);
+    }
     this->TransferDiscardedTears(w, used, plane, depth, eps);
     int projected = 0;
     const uint64_t bit = uint64_t(1) << depth;
+    // Sliding (see FoldingTreeOptions::slideOntoPlane): per discarded-side vertex, the point
+    // where one of its edges to a kept-side vertex of a kept face crosses the plane, nearest
+    // to its orthogonal projection. That point lies on the input surface.
+    std::vector<Vec3> slide(w.points.size());
+    std::vector<char> slides(w.points.size(), 0);
+    if (O.slideOntoPlane)
+    {
+      std::vector<double> slideMove(w.points.size(), std::numeric_limits<double>::infinity());
+      for (int f = 0; f < nf; ++f)
+        if (keep[f])
+          for (int k = 0; k < 3; ++k)
+            for (int j = 1; j <= 2; ++j)
+            {
+              const int v = w.triangles[f][k], a = w.triangles[f][(k + j) % 3];
+              if (side[v] >= 0 || side[a] <= 0)
+                continue;
+              const double sv = plane.SignedDistance(w.points[v]);
+              const double sa = plane.SignedDistance(w.points[a]);
+              const Vec3 q = w.points[v] + (sv / (sv - sa)) * (w.points[a] - w.points[v]);
+              const double move = (q - plane.Project(w.points[v])).norm();
+              if (move < slideMove[v])
+              {
+                slideMove[v] = move;
+                slide[v] = plane.Project(q); // exactly on the plane
+                slides[v] = 1;
+              }
+            }
+    }
     for (int v = 0; v < w.NumberOfPoints(); ++v)
     {
       if (!used[v] || side[v] > 0)
         continue;
+      bool onAncestorPlane = false;
+      for (int d = 0; d < depth; ++d)
+        onAncestorPlane = onAncestorPlane ||
+          ((w.onPlane[v] & (uint64_t(1) << d)) && (pathFolds & (uint64_t(1) << d)));
+      if (slides[v] && !onAncestorPlane)
+      {
+        w.points[v] = slide[v];
+        w.onPlane[v] |= bit;
+        w.projected[v] = 1;
+        ++projected;
+        continue;
+      }
       std::vector<Plane> constraints{ plane };
       for (int d = 0; d < depth; ++d)
         if ((w.onPlane[v] & (uint64_t(1) << d)) && (pathFolds & (uint64_t(1) << d)))
@@ -837,6 +924,40 @@ private:
       }
     }
 
+    // ... plus the largest distance of a point projected (or snapped) onto the plane(s) to
+    // the region as it was.
+    double projectionError = 0.0;
+    if (O.errorBudget)
+    {
+      std::vector<Vec3> moved;
+      for (int v = 0; v < w.NumberOfPoints(); ++v)
+        if (used[v] && side[v] <= 0)
+          moved.push_back(w.points[v]);
+      // Faces changed by a move: their centroids too (a slid vertex is on the surface, its
+      // faces need not be).
+      for (int f = 0; f < nf; ++f)
+      {
+        const Triangle& t = w.triangles[f];
+        if (keep[f] && (side[t[0]] < 0 || side[t[1]] < 0 || side[t[2]] < 0))
+          moved.push_back((w.points[t[0]] + w.points[t[1]] + w.points[t[2]]) / 3.0);
+      }
+      for (double d : toRegion.Distances(moved))
+        projectionError = std::max(projectionError, d);
+    }
+    const double childBudget = std::max(0.0, budget - mirrorError - projectionError);
+    if (std::getenv("FOLDINGMESHES_DEBUG"))
+      std::printf("[fold] node %d depth %d eps %.3g budget %.3g: mirror error %.3g, projection "
+                  "error %.3g (kept %.3g discarded %.3g), child budget %.3g\n",
+        index,
+        depth,
+        eps,
+        budget,
+        mirrorError,
+        projectionError,
+        keptError,
+        discardedError,
+        childBudget);
+
     this->FlagMirroredFoldLines(w, keep, plane, depth, pathFolds);
 
     FoldingNode& node = this->Tree.nodes[index];
@@ -852,12 +973,14 @@ private:
     this->PlaneAtDepth[depth] = plane;
     this->EpsilonAtDepth[depth] = eps;
     WorkMesh half = Extract(w, keep);
-    this->Build(std::move(half), index, depth + 1, 0.5 * eps, folds + 1, pathFolds | bit);
+    this->Build(
+      std::move(half), index, depth + 1, 0.5 * eps, folds + 1, pathFolds | bit, childBudget);
   }
 
   const FoldingTreeOptions& Options;
   const std::vector<Vec3>& InputNormals;
   FoldingTree& Tree;
+  std::unique_ptr<SurfaceDistanceQuery> ToInput; ///< distances to the input surface
   std::vector<Plane> PlaneAtDepth;
   std::vector<double> EpsilonAtDepth;
   int MaximumDepth = 48;

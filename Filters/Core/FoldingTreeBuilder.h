@@ -75,6 +75,27 @@ struct FoldingTreeOptions
    */
   bool polishPlane = true;
   /**
+   * Keep unfold(tree) within epsilon of the input (the paper's bound). Halving epsilon
+   * below folds alone does not: the copies made by k nested folds can each be off by the
+   * fold's tolerance, epsilon (1 + 1/2 + ...) < 2 epsilon in all. With errorBudget on, every
+   * root-to-leaf path has a budget of epsilon: each fold measures what it adds - the largest
+   * distance of a mirrored vertex of its region to the region, plus the largest distance of
+   * a vertex it projects onto the plane to the region - and passes the rest to its kept half;
+   * S is trimmed (trimToMirrorConsistent) with min(node epsilon, remaining budget), so a
+   * fold never adds more than the budget left (exact symmetries cost nothing).
+   */
+  bool errorBudget = true;
+  /**
+   * How a vertex of a kept face lying on the discarded side reaches the fold plane: on
+   * (default), it slides along one of its edges to a kept-side vertex to where that edge
+   * crosses the plane (the crossing nearest to its orthogonal projection), so it stays on
+   * the input surface and its face keeps (part of) its input plane; off, it is projected
+   * orthogonally (the paper's choice), which can move it off the surface by up to an edge
+   * length times the sine of the angle between surface and plane. Vertices already on an
+   * ancestor's fold plane are always projected onto the intersection of the planes.
+   */
+  bool slideOntoPlane = true;
+  /**
    * Vertices within planeSnapFraction * epsilon of a fold plane count as lying on it: they
    * are snapped onto it (and flagged in planeMask) so the unfolder closes the fold line.
    */

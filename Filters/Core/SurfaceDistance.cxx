@@ -1,0 +1,129 @@
+#include "SurfaceDistance.h"
+
+#include "FaceTree.h"
+
+#include <vtkSMPTools.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace foldingmeshes
+{
+struct SurfaceDistanceQuery::Internal
+{
+  PreparedMesh Mesh; // only what FaceTree reads: points, triangles, centroids, normals
+  std::unique_ptr<FaceTree> Tree;
+};
+
+SurfaceDistanceQuery::SurfaceDistanceQuery(const TriangleMesh& surface)
+  : Impl(new Internal)
+{
+  PreparedMesh& m = this->Impl->Mesh;
+  m.points = surface.points;
+  m.triangles = surface.triangles;
+  const int nf = static_cast<int>(surface.triangles.size());
+  m.faceCentroids.resize(nf);
+  m.faceDegenerate.assign(nf, 0); // degenerate triangles are measured as their edges
+  for (int f = 0; f < nf; ++f)
+  {
+    const Triangle& t = surface.triangles[f];
+    m.faceCentroids[f] = (m.points[t[0]] + m.points[t[1]] + m.points[t[2]]) / 3.0;
+  }
+  m.vertexNormals.assign(m.points.size(), Vec3::Zero()); // no normal cones
+  this->Impl->Tree.reset(new FaceTree(m));
+}
+
+SurfaceDistanceQuery::~SurfaceDistanceQuery() = default;
+
+double SurfaceDistanceQuery::Distance(const Vec3& p) const
+{
+  return this->Impl->Tree->ClosestFace(p, std::numeric_limits<double>::infinity()).distance;
+}
+
+std::vector<double> SurfaceDistanceQuery::Distances(const std::vector<Vec3>& points) const
+{
+  std::vector<double> d(points.size(), std::numeric_limits<double>::infinity());
+  vtkSMPTools::For(0,
+    static_cast<vtkIdType>(points.size()),
+    [&](vtkIdType begin, vtkIdType end)
+    {
+      for (vtkIdType i = begin; i < end; ++i)
+        d[i] = this->Distance(points[i]);
+    });
+  return d;
+}
+
+std::vector<Vec3> SurfaceSamplePoints(const TriangleMesh& mesh)
+{
+  std::vector<char> used(mesh.points.size(), 0);
+  for (const Triangle& t : mesh.triangles)
+    for (int v : t)
+      used[v] = 1;
+  std::vector<Vec3> samples;
+  samples.reserve(mesh.points.size() + mesh.triangles.size());
+  for (size_t v = 0; v < mesh.points.size(); ++v)
+    if (used[v])
+      samples.push_back(mesh.points[v]);
+  for (const Triangle& t : mesh.triangles)
+    samples.push_back((mesh.points[t[0]] + mesh.points[t[1]] + mesh.points[t[2]]) / 3.0);
+  return samples;
+}
+
+namespace
+{
+/// Distances of the samples of `from` to `to`; point distances of `from` (0: unused point).
+void OneWay(const TriangleMesh& from,
+  const SurfaceDistanceQuery& to,
+  std::vector<double>& pointDistances,
+  double& maximum,
+  double& sum,
+  int& count)
+{
+  const std::vector<double> d = to.Distances(SurfaceSamplePoints(from));
+  std::vector<char> used(from.points.size(), 0);
+  for (const Triangle& t : from.triangles)
+    for (int v : t)
+      used[v] = 1;
+  pointDistances.assign(from.points.size(), 0.0);
+  size_t k = 0;
+  for (size_t v = 0; v < from.points.size(); ++v)
+    if (used[v])
+      pointDistances[v] = d[k++];
+  maximum = 0.0;
+  sum = 0.0;
+  for (double x : d)
+  {
+    maximum = std::max(maximum, x);
+    sum += x;
+  }
+  count = static_cast<int>(d.size());
+}
+}
+
+SurfaceComparison CompareSurfaces(const TriangleMesh& a, const TriangleMesh& b)
+{
+  SurfaceComparison result;
+  const bool aEmpty = a.triangles.empty(), bEmpty = b.triangles.empty();
+  if (aEmpty || bEmpty)
+  {
+    const double inf = std::numeric_limits<double>::infinity();
+    result.aPointDistances.assign(a.points.size(), bEmpty ? inf : 0.0);
+    result.bPointDistances.assign(b.points.size(), aEmpty ? inf : 0.0);
+    const double d = aEmpty && bEmpty ? 0.0 : inf;
+    result.aToB = aEmpty ? 0.0 : d;
+    result.bToA = bEmpty ? 0.0 : d;
+    result.hausdorff = result.mean = d;
+    return result;
+  }
+  const SurfaceDistanceQuery toA(a), toB(b);
+  double sumA = 0.0, sumB = 0.0;
+  int countA = 0, countB = 0;
+  OneWay(a, toB, result.aPointDistances, result.aToB, sumA, countA);
+  OneWay(b, toA, result.bPointDistances, result.bToA, sumB, countB);
+  result.hausdorff = std::max(result.aToB, result.bToA);
+  result.samples = countA + countB;
+  result.mean = result.samples > 0 ? (sumA + sumB) / result.samples : 0.0;
+  return result;
+}
+}

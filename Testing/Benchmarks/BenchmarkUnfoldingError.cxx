@@ -1,0 +1,145 @@
+// Where does unfold(fold(M)) depart from M? Per mesh: the distance of the stored leaf points to
+// M (by kind: projected onto a fold plane, on a fold plane, other), then the symmetric
+// Hausdorff distance / diagonal of the unfolded mesh after each reconstruction step (raw
+// union, fold-line slab merge, stitching, zipper, gap filling, smoothing), with open edges.
+// Not a test: numbers to find which step breaks the error bound.
+//
+//   BenchmarkUnfoldingError MESH...
+#include "Core/FoldingTreeUnfolder.h"
+#include "Core/SurfaceDistance.h"
+#include "MeshIO.h"
+#include "vtkFoldingTreeBuilder.h"
+#include "vtkFoldingTreeIO.h"
+#include "vtkTriangleMeshAdapter.h"
+
+#include <vtkMultiBlockDataSet.h>
+#include <vtkNew.h>
+#include <vtkPolyData.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+using namespace foldingmeshes;
+
+namespace
+{
+void Report(const char* label,
+  const FoldingTree& tree,
+  const TriangleMesh& original,
+  const UnfoldOptions& options)
+{
+  UnfoldedMesh m;
+  std::string error;
+  if (!UnfoldFoldingTree(tree, options, m, error))
+  {
+    std::printf("  %-10s error %s\n", label, error.c_str());
+    return;
+  }
+  TriangleMesh u;
+  u.points = m.points;
+  u.triangles = m.triangles;
+  const SurfaceComparison c = CompareSurfaces(u, original);
+  int worst = 0;
+  for (int v = 0; v < m.NumberOfPoints(); ++v)
+    if (c.aPointDistances[v] > c.aPointDistances[worst])
+      worst = v;
+  const UnfoldCopy& copy = m.copies[m.pointCopy[worst]];
+  const FoldingLeafMesh& leaf = tree.nodes[copy.leaf].mesh;
+  int local = -1;
+  for (int v = 0; v < leaf.NumberOfPoints(); ++v)
+    if (leaf.originalPointIds[v] == m.pointOriginalIds[worst])
+      local = v;
+  double leafDistance = -1;
+  if (local >= 0)
+  {
+    const SurfaceDistanceQuery q(original);
+    leafDistance = q.Distance(leaf.points[local]) / tree.diagonal;
+  }
+  std::printf("  %-10s H %.4f (u->M %.4f M->u %.4f) mean %.5f open %5d nm %4d pts %6d | worst "
+              "pt %.4f leaf %d mask %llx proj %d leafd %.4f\n",
+    label,
+    c.hausdorff / tree.diagonal,
+    c.aToB / tree.diagonal,
+    c.bToA / tree.diagonal,
+    c.mean / tree.diagonal,
+    m.openEdges,
+    m.nonManifoldEdges,
+    m.NumberOfPoints(),
+    c.aPointDistances[worst] / tree.diagonal,
+    copy.leaf,
+    static_cast<unsigned long long>(copy.mirrorMask),
+    local >= 0 ? int(leaf.projected[local]) : -1,
+    leafDistance);
+}
+}
+
+int main(int argc, char* argv[])
+{
+  for (int i = 1; i < argc; ++i)
+  {
+    std::string error;
+    auto mesh = ReadMesh(argv[i], error);
+    if (!mesh)
+      continue;
+    vtkNew<vtkFoldingTreeBuilder> builder;
+    builder->SetInputData(mesh);
+    builder->Update();
+    auto* blocks = vtkMultiBlockDataSet::SafeDownCast(builder->GetOutputDataObject(0));
+    FoldingTree tree;
+    TriangleMesh original;
+    std::vector<Vec3> normals;
+    if (!blocks || !MultiBlockToFoldingTree(blocks, tree, error) ||
+      !ToTriangleMesh(builder->GetOutput(1), original, normals, error))
+    {
+      std::printf("%s: %s\n", argv[i], error.c_str());
+      continue;
+    }
+    std::printf("%s  (eps %.4f of the diagonal, %d nodes, %d points)\n",
+      std::filesystem::path(argv[i]).stem().string().c_str(),
+      tree.rootEpsilon / tree.diagonal,
+      tree.NumberOfNodes(),
+      static_cast<int>(original.points.size()));
+    // Leaf points.
+    const SurfaceDistanceQuery toOriginal(original);
+    double worst[3] = { 0, 0, 0 };
+    int count[3] = { 0, 0, 0 };
+    for (int leaf : tree.Leaves())
+    {
+      const FoldingLeafMesh& m = tree.nodes[leaf].mesh;
+      const std::vector<double> d = toOriginal.Distances(m.points);
+      for (int v = 0; v < m.NumberOfPoints(); ++v)
+      {
+        const int kind = m.projected[v] ? 0 : (m.planeMask[v] ? 1 : 2);
+        worst[kind] = std::max(worst[kind], d[v]);
+        ++count[kind];
+      }
+    }
+    std::printf("  leaves: projected %d max %.4f | on plane %d max %.4f | other %d max %.4f\n",
+      count[0],
+      worst[0] / tree.diagonal,
+      count[1],
+      worst[1] / tree.diagonal,
+      count[2],
+      worst[2] / tree.diagonal);
+    UnfoldOptions o;
+    o.stitch = false;
+    o.foldLineToleranceScale = 0.0;
+    Report("raw", tree, original, o);
+    o.foldLineToleranceScale = UnfoldOptions().foldLineToleranceScale;
+    Report("+slab", tree, original, o);
+    o.stitch = true;
+    o.zipper = o.fillSeamGaps = false;
+    o.smoothingIterations = 0;
+    Report("+stitch", tree, original, o);
+    o.zipper = true;
+    Report("+zip", tree, original, o);
+    o.fillSeamGaps = true;
+    Report("+fill", tree, original, o);
+    Report("default", tree, original, UnfoldOptions());
+    std::fflush(stdout);
+  }
+  return 0;
+}
