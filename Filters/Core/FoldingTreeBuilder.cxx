@@ -34,6 +34,8 @@ struct WorkMesh
   std::vector<char> projected;
   /// Per point: (2 * level + flag, mirror mask), flag 0 tear, 1 plane; see MirroredFlag.
   std::vector<std::vector<std::pair<int, uint64_t>>> mirrorFlags;
+  /// Per point: the unfolding error the folds below may still add here (errorBudget).
+  std::vector<double> budget;
 
   int NumberOfFaces() const { return static_cast<int>(triangles.size()); }
   int NumberOfPoints() const { return static_cast<int>(points.size()); }
@@ -71,6 +73,7 @@ WorkMesh Extract(const WorkMesh& w, const std::vector<char>& mask)
       out.onPlane.push_back(w.onPlane[v]);
       out.projected.push_back(w.projected[v]);
       out.mirrorFlags.push_back(w.mirrorFlags[v]);
+      out.budget.push_back(w.budget[v]);
     }
   for (int f = 0; f < w.NumberOfFaces(); ++f)
     if (mask[f])
@@ -99,6 +102,7 @@ WorkMesh ExtractFaces(const WorkMesh& w, const std::vector<int>& faces)
     out.onPlane.push_back(w.onPlane[v]);
     out.projected.push_back(w.projected[v]);
     out.mirrorFlags.push_back(w.mirrorFlags[v]);
+    out.budget.push_back(w.budget[v]);
   }
   auto id = [&](int v)
   { return static_cast<int>(std::lower_bound(points.begin(), points.end(), v) - points.begin()); };
@@ -150,6 +154,7 @@ std::vector<int> WeldAndDropCollapsed(WorkMesh& w)
       w.tear[rep[v]] |= w.tear[v];
       w.onPlane[rep[v]] |= w.onPlane[v];
       w.projected[rep[v]] |= w.projected[v];
+      w.budget[rep[v]] = std::min(w.budget[rep[v]], w.budget[v]);
       auto& into = w.mirrorFlags[rep[v]];
       into.insert(into.end(), w.mirrorFlags[v].begin(), w.mirrorFlags[v].end());
       std::sort(into.begin(), into.end());
@@ -231,7 +236,7 @@ public:
       input.triangles = root.triangles;
       this->ToInput.reset(new SurfaceDistanceQuery(input));
     }
-    this->Build(std::move(root), -1, 0, this->Options.epsilon, 0, 0, this->Options.epsilon);
+    this->Build(std::move(root), -1, 0, this->Options.epsilon, 0, 0);
     this->Report(1.0);
   }
 
@@ -394,6 +399,34 @@ private:
     return CanonicalPlane(best, plane.origin);
   }
 
+  /**
+   * For the points `ids` of w: the error a fold through `plane` may add there, the least of
+   * eps and the budgets of the point and of the point of `ids` nearest to its mirror image
+   * (within eps; else the least budget of all): a copy made by the fold lands there.
+   */
+  std::vector<double> MirrorBudget(const WorkMesh& w,
+    const std::vector<int>& ids,
+    const Plane& plane,
+    double eps) const
+  {
+    Buckets buckets;
+    buckets.cell = std::max(eps, 1e-12 * this->Tree.diagonal);
+    double least = eps;
+    for (int v : ids)
+    {
+      buckets.Add(w.points[v], v);
+      least = std::min(least, w.budget[v]);
+    }
+    std::vector<double> limit(ids.size());
+    for (size_t k = 0; k < ids.size(); ++k)
+    {
+      const int v = ids[k];
+      const int p = buckets.Nearest(w.points, plane.Reflect(w.points[v]), eps);
+      limit[k] = std::min({ eps, w.budget[v], p >= 0 ? w.budget[p] : least });
+    }
+    return limit;
+  }
+
   std::vector<char> Trim(const WorkMesh& w,
     const PreparedMesh& pm,
     std::vector<char> S,
@@ -408,6 +441,25 @@ private:
       MirrorDistance distances(spm, this->Options.symmetry.compatibilityAngle);
       std::vector<double> d;
       distances.Compute(plane, DistanceMetric::Fine, eps, d);
+      if (this->Options.errorBudget)
+      {
+        // The vertices of S are spm's points, in increasing order of their ids in w.
+        std::vector<int> ids;
+        {
+          std::vector<char> inS(w.points.size(), 0);
+          for (int f = 0; f < w.NumberOfFaces(); ++f)
+            if (S[f])
+              for (int v : w.triangles[f])
+                inS[v] = 1;
+          for (int v = 0; v < w.NumberOfPoints(); ++v)
+            if (inS[v])
+              ids.push_back(v);
+        }
+        const std::vector<double> limit = this->MirrorBudget(w, ids, plane, eps);
+        for (size_t k = 0; k < d.size() && k < ids.size(); ++k)
+          if (!(d[k] < limit[k]))
+            d[k] = std::numeric_limits<double>::infinity();
+      }
       const std::vector<char> ok = FacesWithVerticesWithin(spm, d, eps, true);
       std::vector<char> next = S;
       bool changed = false;
@@ -442,15 +494,8 @@ private:
     return false;
   }
 
-  /// Builds the subtree of region w; returns its node index. `budget`: the unfolding error
-  /// the folds below may still add on this path (see FoldingTreeOptions::errorBudget).
-  int Build(WorkMesh w,
-    int parent,
-    int depth,
-    double eps,
-    int folds,
-    uint64_t pathFolds,
-    double budget)
+  /// Builds the subtree of region w; returns its node index.
+  int Build(WorkMesh w, int parent, int depth, double eps, int folds, uint64_t pathFolds)
   {
     const std::vector<int> dropped = WeldAndDropCollapsed(w);
     if (parent < 0)
@@ -509,16 +554,15 @@ private:
       any = any || S[f];
     }
     Plane plane = result.plane;
-    // Trimming keeps the faces whose mirrored vertices are within this of S: the node's
-    // epsilon, or less when the folds above have used up most of the error budget.
-    const double trim = O.errorBudget ? std::min(eps, budget) : eps;
+    // Trimming keeps the faces whose mirrored vertices are within eps of S - or within the
+    // error budget left there, if less (errorBudget).
     if (any && O.trimToMirrorConsistent)
-      S = this->Trim(w, pm, S, plane, trim);
+      S = this->Trim(w, pm, S, plane, eps);
     if (any && O.polishPlane)
     {
       plane = this->Polish(w, pm, S, plane, eps);
       if (O.trimToMirrorConsistent)
-        S = this->Trim(w, pm, S, plane, trim);
+        S = this->Trim(w, pm, S, plane, eps);
     }
     // Input-degenerate faces (never in S: detection ignores them) follow S when all their
     // vertices are vertices of S.
@@ -567,7 +611,7 @@ private:
     const int n = LabelConnectedRegions(pm, rest, labels);
     if (n == 0)
     {
-      this->Fold(index, std::move(w), plane, depth, eps, folds, pathFolds, budget);
+      this->Fold(index, std::move(w), plane, depth, eps, folds, pathFolds);
       return index;
     }
 
@@ -605,10 +649,10 @@ private:
     {
       const int foldIndex = this->NewNode(index, depth + 1, eps, folds, ws);
       this->Tree.nodes[foldIndex].symmetricAreaFraction = 1.0;
-      this->Fold(foldIndex, std::move(ws), plane, depth + 1, eps, folds, pathFolds, budget);
+      this->Fold(foldIndex, std::move(ws), plane, depth + 1, eps, folds, pathFolds);
     }
     for (int r = 0; r < n; ++r)
-      this->Build(std::move(regions[r]), index, depth + 1, eps, folds, pathFolds, budget);
+      this->Build(std::move(regions[r]), index, depth + 1, eps, folds, pathFolds);
     return index;
   }
 
@@ -791,14 +835,8 @@ private:
   }
 
   /// Turns node `index` (region w) into a folding node and builds the kept half below it.
-  void Fold(int index,
-    WorkMesh w,
-    Plane plane,
-    int depth,
-    double eps,
-    int folds,
-    uint64_t pathFolds,
-    double budget)
+  void
+  Fold(int index, WorkMesh w, Plane plane, int depth, double eps, int folds, uint64_t pathFolds)
   {
     const FoldingTreeOptions& O = this->Options;
     const int nf = w.NumberOfFaces();
@@ -844,7 +882,14 @@ private:
     region.points = w.points;
     region.triangles = w.triangles;
     const SurfaceDistanceQuery toRegion(region);
-    double mirrorError = 0.0, keptError = 0.0, discardedError = 0.0;
+    // Per kept point: what the copies made by this fold add there. A kept point's mirror
+    // copy must lie near the input (error: its distance to the input); a discarded point must
+    // be reproduced by the mirror copy of the kept half (error: the distance of its mirror
+    // image to the region), charged to the kept point nearest to that image. Either lands
+    // where the budget of the partner point applies too.
+    std::vector<double> charge(w.points.size(), 0.0),
+      limit(w.points.size(), std::numeric_limits<double>::infinity());
+    double mirrorError = 0.0;
     if (O.errorBudget)
     {
       std::vector<Vec3> mirrored(w.points.size());
@@ -852,12 +897,29 @@ private:
         mirrored[v] = plane.Reflect(w.points[v]);
       const std::vector<double> toS = toRegion.Distances(mirrored);
       const std::vector<double> toM = this->ToInput->Distances(mirrored);
+      Buckets all, kept;
+      all.cell = kept.cell = std::max(eps, 1e-12 * this->Tree.diagonal);
+      double least = std::numeric_limits<double>::infinity();
       for (int v = 0; v < w.NumberOfPoints(); ++v)
+      {
+        all.Add(w.points[v], v);
         if (used[v])
-          keptError = std::max(keptError, toM[v]);
-        else
-          discardedError = std::max(discardedError, toS[v]);
-      mirrorError = std::max(keptError, discardedError);
+          kept.Add(w.points[v], v);
+        least = std::min(least, w.budget[v]);
+      }
+      for (int v = 0; v < w.NumberOfPoints(); ++v)
+      {
+        const double e = used[v] ? toM[v] : toS[v];
+        mirrorError = std::max(mirrorError, e);
+        const int k = used[v] ? v : kept.Nearest(w.points, mirrored[v], eps);
+        if (k < 0)
+          continue; // no kept point there: its copy reproduces nothing of v
+        const int p = all.Nearest(w.points, mirrored[v], eps);
+        charge[k] = std::max(charge[k], e);
+        limit[k] = std::min({ limit[k], w.budget[v], p >= 0 ? w.budget[p] : least });
+      }
+      for (int v = 0; v < w.NumberOfPoints(); ++v)
+        limit[v] = std::min(limit[v], w.budget[v]);
     }
     this->TransferDiscardedTears(w, used, plane, depth, eps);
     int projected = 0;
@@ -930,32 +992,49 @@ private:
     if (O.errorBudget)
     {
       std::vector<Vec3> moved;
+      std::vector<int> movedPoint, movedFace;
       for (int v = 0; v < w.NumberOfPoints(); ++v)
         if (used[v] && side[v] <= 0)
+        {
           moved.push_back(w.points[v]);
+          movedPoint.push_back(v);
+        }
       // Faces changed by a move: their centroids too (a slid vertex is on the surface, its
       // faces need not be).
       for (int f = 0; f < nf; ++f)
       {
         const Triangle& t = w.triangles[f];
         if (keep[f] && (side[t[0]] < 0 || side[t[1]] < 0 || side[t[2]] < 0))
+        {
           moved.push_back((w.points[t[0]] + w.points[t[1]] + w.points[t[2]]) / 3.0);
+          movedFace.push_back(f);
+        }
       }
-      for (double d : toRegion.Distances(moved))
-        projectionError = std::max(projectionError, d);
+      const std::vector<double> d = toRegion.Distances(moved);
+      std::vector<double> displacement(w.points.size(), 0.0);
+      for (size_t k = 0; k < movedPoint.size(); ++k)
+        displacement[movedPoint[k]] = std::max(displacement[movedPoint[k]], d[k]);
+      for (size_t k = 0; k < movedFace.size(); ++k)
+        for (int v : w.triangles[movedFace[k]])
+          displacement[v] = std::max(displacement[v], d[movedPoint.size() + k]);
+      for (int v = 0; v < w.NumberOfPoints(); ++v)
+      {
+        projectionError = std::max(projectionError, displacement[v]);
+        w.budget[v] = std::max(0.0, limit[v] - charge[v] - displacement[v]);
+      }
     }
-    const double childBudget = std::max(0.0, budget - mirrorError - projectionError);
+    double childBudget = eps;
+    for (int v = 0; v < w.NumberOfPoints(); ++v)
+      if (used[v])
+        childBudget = std::min(childBudget, w.budget[v]);
     if (std::getenv("FOLDINGMESHES_DEBUG"))
-      std::printf("[fold] node %d depth %d eps %.3g budget %.3g: mirror error %.3g, projection "
-                  "error %.3g (kept %.3g discarded %.3g), child budget %.3g\n",
+      std::printf("[fold] node %d depth %d eps %.3g: mirror error %.3g, projection "
+                  "error %.3g, least child budget %.3g\n",
         index,
         depth,
         eps,
-        budget,
         mirrorError,
         projectionError,
-        keptError,
-        discardedError,
         childBudget);
 
     this->FlagMirroredFoldLines(w, keep, plane, depth, pathFolds);
@@ -973,8 +1052,7 @@ private:
     this->PlaneAtDepth[depth] = plane;
     this->EpsilonAtDepth[depth] = eps;
     WorkMesh half = Extract(w, keep);
-    this->Build(
-      std::move(half), index, depth + 1, 0.5 * eps, folds + 1, pathFolds | bit, childBudget);
+    this->Build(std::move(half), index, depth + 1, 0.5 * eps, folds + 1, pathFolds | bit);
   }
 
   const FoldingTreeOptions& Options;
@@ -1049,6 +1127,7 @@ bool BuildFoldingTree(const TriangleMesh& input,
   root.onPlane.assign(np, 0);
   root.projected.assign(np, 0);
   root.mirrorFlags.assign(np, {});
+  root.budget.assign(np, options.epsilon);
 
   tree.numberOfOriginalFaces = static_cast<int>(input.triangles.size());
   tree.numberOfOriginalPoints = np;
