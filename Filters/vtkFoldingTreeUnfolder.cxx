@@ -1,7 +1,9 @@
 #include "vtkFoldingTreeUnfolder.h"
 
 #include "Core/FoldingTreeUnfolder.h"
+#include "Core/SurfaceDistance.h"
 #include "vtkFoldingTreeIO.h"
+#include "vtkTriangleMeshAdapter.h"
 
 #include <vtkCellArray.h>
 #include <vtkCellData.h>
@@ -22,6 +24,7 @@
 #include <vtkTypeUInt64Array.h>
 #include <vtkUnsignedCharArray.h>
 
+#include <cmath>
 #include <cstring>
 #include <string>
 #include <unordered_map>
@@ -168,17 +171,86 @@ void CarryArrays(const std::vector<std::string>& names,
 //------------------------------------------------------------------------------
 vtkFoldingTreeUnfolder::vtkFoldingTreeUnfolder()
 {
-  this->SetNumberOfInputPorts(1);
+  this->SetNumberOfInputPorts(2);
   this->SetNumberOfOutputPorts(1);
 }
 
 vtkFoldingTreeUnfolder::~vtkFoldingTreeUnfolder() = default;
 
 //------------------------------------------------------------------------------
-int vtkFoldingTreeUnfolder::FillInputPortInformation(int, vtkInformation* info)
+int vtkFoldingTreeUnfolder::FillInputPortInformation(int port, vtkInformation* info)
 {
+  if (port == 1)
+  {
+    info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkPolyData");
+    info->Set(vtkAlgorithm::INPUT_IS_OPTIONAL(), 1);
+    return 1;
+  }
   info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkMultiBlockDataSet");
   return 1;
+}
+
+//------------------------------------------------------------------------------
+void vtkFoldingTreeUnfolder::SetOriginalData(vtkPolyData* original)
+{
+  if (original)
+    this->SetInputData(1, original);
+  else
+    this->SetInputConnection(1, nullptr);
+}
+
+void vtkFoldingTreeUnfolder::SetOriginalConnection(vtkAlgorithmOutput* output)
+{
+  this->SetInputConnection(1, output);
+}
+
+//------------------------------------------------------------------------------
+bool vtkFoldingTreeUnfolder::MeasureToOriginal(vtkPolyData* original, vtkPolyData* output)
+{
+  vtkIdType droppedVerts = 0, droppedLines = 0;
+  vtkSmartPointer<vtkPolyData> triangles =
+    foldingmeshes::TriangulateSurface(original, droppedVerts, droppedLines);
+  foldingmeshes::TriangleMesh reference, unfolded;
+  std::vector<Vec3> normals;
+  std::string error;
+  if (!triangles || !foldingmeshes::ToTriangleMesh(triangles, reference, normals, error) ||
+    reference.triangles.empty())
+  {
+    vtkErrorMacro("The original (input port 1) has no usable surface"
+      << (error.empty() ? std::string() : ": " + error) << ".");
+    return false;
+  }
+  unfolded.points.resize(output->GetNumberOfPoints());
+  for (vtkIdType i = 0; i < output->GetNumberOfPoints(); ++i)
+    output->GetPoint(i, unfolded.points[i].data());
+  vtkIdType n = 0;
+  const vtkIdType* pts = nullptr;
+  vtkCellArray* polys = output->GetPolys();
+  for (polys->InitTraversal(); polys->GetNextCell(n, pts);)
+    unfolded.triangles.push_back(
+      { static_cast<int>(pts[0]), static_cast<int>(pts[1]), static_cast<int>(pts[2]) });
+  const foldingmeshes::SurfaceComparison c = foldingmeshes::CompareSurfaces(unfolded, reference);
+
+  vtkNew<vtkDoubleArray> distance;
+  distance->SetName("DistanceToOriginal");
+  distance->SetNumberOfTuples(output->GetNumberOfPoints());
+  for (vtkIdType i = 0; i < output->GetNumberOfPoints(); ++i)
+    distance->SetValue(i, c.aPointDistances[i]);
+  output->GetPointData()->AddArray(distance);
+
+  double bounds[6];
+  triangles->GetBounds(bounds);
+  const double diagonal = std::sqrt((bounds[1] - bounds[0]) * (bounds[1] - bounds[0]) +
+    (bounds[3] - bounds[2]) * (bounds[3] - bounds[2]) +
+    (bounds[5] - bounds[4]) * (bounds[5] - bounds[4]));
+  vtkFieldData* fd = output->GetFieldData();
+  AddValue(fd, "HausdorffToOriginal", c.hausdorff);
+  AddValue(fd, "MeanDistanceToOriginal", c.mean);
+  AddValue(fd, "OriginalDiagonal", diagonal);
+  AddValue(fd, "HausdorffToOriginalRelative", diagonal > 0 ? c.hausdorff / diagonal : 0.0);
+  AddValue(fd, "MeanDistanceToOriginalRelative", diagonal > 0 ? c.mean / diagonal : 0.0);
+  this->HausdorffToOriginal = c.hausdorff;
+  return true;
 }
 
 //------------------------------------------------------------------------------
@@ -189,6 +261,7 @@ int vtkFoldingTreeUnfolder::RequestData(vtkInformation*,
   vtkMultiBlockDataSet* input = vtkMultiBlockDataSet::GetData(inputVector[0], 0);
   vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
   this->OpenGapCount = this->StitchedVertices = this->OpenEdges = 0;
+  this->HausdorffToOriginal = -1.0;
   this->OpenGapLength = 0.0;
   if (!input || !output)
   {
@@ -380,6 +453,9 @@ int vtkFoldingTreeUnfolder::RequestData(vtkInformation*,
   this->OpenGapLength = mesh.gapLength;
   this->StitchedVertices = mesh.stitchedVertices;
   this->OpenEdges = mesh.openEdges;
+  if (vtkPolyData* original = vtkPolyData::GetData(inputVector[1], 0))
+    if (!this->MeasureToOriginal(original, output))
+      return 0;
   this->UpdateProgress(1.0);
   return 1;
 }
@@ -398,4 +474,5 @@ void vtkFoldingTreeUnfolder::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "OpenGapLength: " << this->OpenGapLength << "\n";
   os << indent << "StitchedVertices: " << this->StitchedVertices << "\n";
   os << indent << "OpenEdges: " << this->OpenEdges << "\n";
+  os << indent << "HausdorffToOriginal: " << this->HausdorffToOriginal << "\n";
 }

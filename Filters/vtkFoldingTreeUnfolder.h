@@ -28,6 +28,19 @@
  *   tear vertices), "OpenGapLength", "FilledFaces", "OpenEdges", "NonManifoldEdges" and the
  *   tree's "RootEpsilon" and "Diagonal".
  *
+ * Optional input port 1, "Original" (vtkPolyData: the mesh the tree was built from; polygons
+ * and strips are triangulated, other cells ignored): when connected, the output also gets
+ * - point array "DistanceToOriginal": the distance of every output point to the original
+ *   surface (exact point-to-triangle distances);
+ * - field data "HausdorffToOriginal" (the symmetric Hausdorff distance between the output and
+ *   the original, sampled at the vertices and face centroids of both), "MeanDistanceToOriginal"
+ *   (the mean of those sampled distances), the same divided by the original's bounding-box
+ *   diagonal, "HausdorffToOriginalRelative" and "MeanDistanceToOriginalRelative", and
+ *   "OriginalDiagonal".
+ * The measure is the core's CompareSurfaces (Filters/Core/SurfaceDistance.h), the one the
+ * command line's roundtrip and the Table 1 benchmark use. The paper's bound: with the builder's
+ * defaults, HausdorffToOriginal <= RootEpsilon.
+ *
  * A malformed tree (missing plane metadata, wrong node kinds, a block that is not polydata,
  * wrong array sizes) is reported with vtkErrorMacro and the request fails.
  */
@@ -36,6 +49,9 @@
 
 #include "FoldingMeshesFiltersModule.h" // for export macro
 #include "vtkPolyDataAlgorithm.h"
+
+class vtkPolyData;
+class vtkAlgorithmOutput;
 
 class FOLDINGMESHESFILTERS_EXPORT vtkFoldingTreeUnfolder : public vtkPolyDataAlgorithm
 {
@@ -84,11 +100,22 @@ public:
   ///@}
 
   ///@{
+  /**
+   * The optional original mesh (input port 1) to measure the output against; see above.
+   * SetOriginalData(nullptr) disconnects it.
+   */
+  void SetOriginalData(vtkPolyData* original);
+  void SetOriginalConnection(vtkAlgorithmOutput* output);
+  ///@}
+
+  ///@{
   /** Results of the last run. */
   vtkGetMacro(OpenGapCount, int);
   vtkGetMacro(OpenGapLength, double);
   vtkGetMacro(StitchedVertices, int);
   vtkGetMacro(OpenEdges, int);
+  /** With an original: its Hausdorff distance to the output (-1 without one). */
+  vtkGetMacro(HausdorffToOriginal, double);
   ///@}
 
 protected:
@@ -97,6 +124,8 @@ protected:
 
   int FillInputPortInformation(int port, vtkInformation* info) override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+  /// Adds DistanceToOriginal and the *ToOriginal field data; false on an unusable original.
+  bool MeasureToOriginal(vtkPolyData* original, vtkPolyData* output);
 
   bool Stitch = true;
   double StitchToleranceScale = 1.0;
@@ -109,6 +138,7 @@ protected:
   double OpenGapLength = 0.0;
   int StitchedVertices = 0;
   int OpenEdges = 0;
+  double HausdorffToOriginal = -1.0;
 
 private:
   vtkFoldingTreeUnfolder(const vtkFoldingTreeUnfolder&) = delete;
