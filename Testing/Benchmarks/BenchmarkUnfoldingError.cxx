@@ -19,6 +19,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -58,6 +59,65 @@ void Report(const char* label,
     const SurfaceDistanceQuery q(original);
     leafDistance = q.Distance(leaf.points[local]) / tree.diagonal;
   }
+  // Open edges: on a fold plane (fold line not closed), or elsewhere (seams, input border).
+  int onPlane = 0, elsewhere = 0;
+  std::vector<std::pair<Vec3, std::pair<int, int>>> openMid;
+  {
+    std::map<std::pair<int, int>, int> edges;
+    for (const Triangle& t : m.triangles)
+      for (int k = 0; k < 3; ++k)
+        ++edges[{ std::min(t[k], t[(k + 1) % 3]), std::max(t[k], t[(k + 1) % 3]) }];
+    std::vector<Plane> planes;
+    for (const FoldingNode& n : tree.nodes)
+      if (n.kind == FoldingNodeKind::Folding)
+        for (const UnfoldCopy& c : m.copies)
+        {
+          // The plane as placed in this copy: all images of fold planes.
+          Plane q;
+          q.normal = (c.linear * n.plane.normal).normalized();
+          q.origin = c.linear * n.plane.origin + c.translation;
+          planes.push_back(q);
+        }
+    for (const auto& e : edges)
+      if (e.second == 1)
+      {
+        const Vec3 a = m.points[e.first.first], b = m.points[e.first.second];
+        bool on = false;
+        for (const Plane& q : planes)
+          on = on ||
+            (std::abs(q.SignedDistance(a)) < 1e-6 * tree.diagonal &&
+              std::abs(q.SignedDistance(b)) < 1e-6 * tree.diagonal);
+        on ? ++onPlane : ++elsewhere;
+        if (!on)
+          openMid.push_back({ 0.5 * (a + b), { e.first.first, e.first.second } });
+      }
+    // Crack widths: distance from an open edge's midpoint to the nearest open edge not
+    // sharing a vertex with it.
+    int bins[4] = { 0, 0, 0, 0 };
+    const double eps = tree.rootEpsilon;
+    for (size_t i = 0; i < openMid.size(); ++i)
+    {
+      double best = 1e300;
+      for (size_t j = 0; j < openMid.size(); ++j)
+      {
+        const auto& p = openMid[i].second;
+        const auto& q = openMid[j].second;
+        if (p.first == q.first || p.first == q.second || p.second == q.first ||
+          p.second == q.second)
+          continue;
+        best = std::min(best, (openMid[i].first - openMid[j].first).norm());
+      }
+      bins[best < 0.05 * eps ? 0 : best < 0.25 * eps ? 1 : best < eps ? 2 : 3]++;
+    }
+    std::printf("  %-10s elsewhere by crack width: <0.05eps %d, <0.25eps %d, <eps %d, more %d\n",
+      label, bins[0], bins[1], bins[2], bins[3]);
+  }
+  std::printf("  %-10s open on fold planes %d elsewhere %d; unmatched tears %d gap edges %d\n",
+    label,
+    onPlane,
+    elsewhere,
+    m.unmatchedTearVertices,
+    m.gapEdges);
   std::printf("  %-10s H %.4f (u->M %.4f M->u %.4f) mean %.5f open %5d nm %4d pts %6d | worst "
               "pt %.4f leaf %d mask %llx proj %d leafd %.4f\n",
     label,

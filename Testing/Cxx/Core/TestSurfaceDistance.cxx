@@ -1,0 +1,176 @@
+// SurfaceDistance (the project's one Hausdorff measure) on meshes with known distances:
+// - a flat grid and the same grid moved by t along its normal: every point distance is t,
+//   Hausdorff and mean are t, both ways;
+// - a grid and a grid twice as long in the same plane: the short one lies on the long one
+//   (distance 0), the long one's far end is 1 away (Hausdorff 1, one-sided);
+// - a cube [-1, 1]^3 and the cube scaled by s: every point of the small cube is s - 1 from
+//   the big one; the big cube's corners are sqrt(3) (s - 1) from the small one (Hausdorff);
+// - random points against a bumpy procedural mesh: equal to the brute-force minimum over all
+//   triangles (ClosestPointTriangle);
+// - the comparison is symmetric, does not depend on the SMP backend, and handles empty meshes.
+#include "CoreTestUtilities.h"
+#include "PointTriangleDistance.h"
+#include "ProceduralMeshes.h"
+#include "SurfaceDistance.h"
+
+#include <vtkSMPTools.h>
+
+#include <cmath>
+#include <limits>
+#include <random>
+
+using namespace foldingmeshes;
+
+namespace
+{
+/// An n x n grid of squares (4 triangles each, around a centre point) on [0, lx] x [0, 1], z = 0.
+TriangleMesh Grid(int n, double lx)
+{
+  TriangleMesh m;
+  auto at = [&](double x, double y)
+  {
+    m.points.emplace_back(x, y, 0.0);
+    return static_cast<int>(m.points.size()) - 1;
+  };
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j)
+    {
+      const double x0 = lx * i / n, x1 = lx * (i + 1) / n, y0 = double(j) / n,
+                   y1 = double(j + 1) / n;
+      const int a = at(x0, y0), b = at(x1, y0), c = at(x1, y1), d = at(x0, y1);
+      const int e = at(0.5 * (x0 + x1), 0.5 * (y0 + y1));
+      m.triangles.push_back({ a, b, e });
+      m.triangles.push_back({ b, c, e });
+      m.triangles.push_back({ c, d, e });
+      m.triangles.push_back({ d, a, e });
+    }
+  return m;
+}
+
+/// The surface of [-h, h]^3, n x n squares of 4 triangles per face.
+TriangleMesh Cube(int n, double h)
+{
+  TriangleMesh m;
+  for (int axis = 0; axis < 3; ++axis)
+    for (double side : { -1.0, 1.0 })
+    {
+      const int u = (axis + 1) % 3, v = (axis + 2) % 3;
+      auto at = [&](double a, double b)
+      {
+        Vec3 p;
+        p[axis] = side * h;
+        p[u] = a;
+        p[v] = b;
+        m.points.push_back(p);
+        return static_cast<int>(m.points.size()) - 1;
+      };
+      for (int i = 0; i < n; ++i)
+        for (int j = 0; j < n; ++j)
+        {
+          const double a0 = -h + 2 * h * i / n, a1 = -h + 2 * h * (i + 1) / n;
+          const double b0 = -h + 2 * h * j / n, b1 = -h + 2 * h * (j + 1) / n;
+          const int p = at(a0, b0), q = at(a1, b0), r = at(a1, b1), s = at(a0, b1);
+          const int c = at(0.5 * (a0 + a1), 0.5 * (b0 + b1));
+          m.triangles.push_back({ p, q, c });
+          m.triangles.push_back({ q, r, c });
+          m.triangles.push_back({ r, s, c });
+          m.triangles.push_back({ s, p, c });
+        }
+    }
+  return m;
+}
+
+TriangleMesh Moved(TriangleMesh m, const Vec3& t, double scale = 1.0)
+{
+  for (Vec3& p : m.points)
+    p = scale * p + t;
+  return m;
+}
+
+double MaxAbsDifference(const std::vector<double>& d, double value)
+{
+  double worst = 0.0;
+  for (double x : d)
+    worst = std::max(worst, std::abs(x - value));
+  return worst;
+}
+}
+
+int main()
+{
+  // Translated plate.
+  {
+    const double t = 0.0375;
+    const TriangleMesh a = Grid(6, 1.0), b = Moved(a, Vec3(0, 0, t));
+    const SurfaceComparison c = CompareSurfaces(a, b);
+    EXPECT(std::abs(c.hausdorff - t) < 1e-12, "plate: Hausdorff " << c.hausdorff << " != " << t);
+    EXPECT(std::abs(c.mean - t) < 1e-12, "plate: mean " << c.mean << " != " << t);
+    EXPECT(MaxAbsDifference(c.aPointDistances, t) < 1e-12 &&
+        MaxAbsDifference(c.bPointDistances, t) < 1e-12,
+      "plate: point distances differ from the offset");
+    EXPECT(c.samples == 2 * static_cast<int>(a.points.size() + a.triangles.size()),
+      "plate: " << c.samples << " samples, not the vertices and centroids of both");
+  }
+  // A plate lying on a longer one.
+  {
+    const TriangleMesh a = Grid(4, 1.0), b = Grid(8, 2.0);
+    const SurfaceComparison c = CompareSurfaces(a, b);
+    EXPECT(c.aToB < 1e-12, "sub-plate: a -> b " << c.aToB << " != 0");
+    EXPECT(std::abs(c.bToA - 1.0) < 1e-12, "sub-plate: b -> a " << c.bToA << " != 1");
+    EXPECT(std::abs(c.hausdorff - 1.0) < 1e-12, "sub-plate: Hausdorff " << c.hausdorff);
+    const SurfaceComparison r = CompareSurfaces(b, a);
+    EXPECT(r.hausdorff == c.hausdorff && r.mean == c.mean && r.aToB == c.bToA,
+      "sub-plate: the comparison is not symmetric");
+  }
+  // Cube in a scaled cube.
+  {
+    const double s = 1.15;
+    const TriangleMesh small = Cube(3, 1.0), big = Moved(small, Vec3::Zero(), s);
+    const SurfaceComparison c = CompareSurfaces(small, big);
+    EXPECT(MaxAbsDifference(c.aPointDistances, s - 1.0) < 1e-12,
+      "cube: a point of the small cube is not s - 1 from the big one");
+    EXPECT(std::abs(c.aToB - (s - 1.0)) < 1e-12, "cube: small -> big " << c.aToB);
+    EXPECT(std::abs(c.hausdorff - std::sqrt(3.0) * (s - 1.0)) < 1e-12,
+      "cube: Hausdorff " << c.hausdorff << " != sqrt(3)(s - 1) " << std::sqrt(3.0) * (s - 1.0));
+  }
+  // Exactness against brute force, and independence of the SMP backend.
+  {
+    const testing::ProceduralMesh blob = testing::MakeBilateralBlob(1500);
+    const TriangleMesh m = coretest::ToTriangleMesh(blob.mesh);
+    std::mt19937 random(7);
+    std::uniform_real_distribution<double> u(-1.5, 1.5);
+    std::vector<Vec3> queries(400);
+    for (Vec3& q : queries)
+      q = Vec3(u(random), u(random), u(random));
+    const SurfaceDistanceQuery query(m);
+    const std::vector<double> d = query.Distances(queries);
+    int wrong = 0;
+    for (size_t i = 0; i < queries.size(); ++i)
+    {
+      double best = std::numeric_limits<double>::infinity();
+      for (const Triangle& t : m.triangles)
+        best = std::min(best,
+          std::sqrt(ClosestPointTriangle(queries[i], m.points[t[0]], m.points[t[1]], m.points[t[2]])
+                      .squaredDistance));
+      wrong += !(std::abs(best - d[i]) <= 1e-12 * (1.0 + best));
+    }
+    EXPECT(wrong == 0, "blob: " << wrong << " distances differ from brute force");
+    const TriangleMesh moved = Moved(m, Vec3(0.01, -0.02, 0.005), 1.03);
+    vtkSMPTools::SetBackend("Sequential");
+    const SurfaceComparison one = CompareSurfaces(m, moved);
+    vtkSMPTools::SetBackend("STDThread");
+    vtkSMPTools::Initialize(2);
+    const SurfaceComparison two = CompareSurfaces(m, moved);
+    EXPECT(one.hausdorff == two.hausdorff && one.mean == two.mean &&
+        one.aPointDistances == two.aPointDistances,
+      "blob: results depend on the SMP backend");
+    EXPECT(one.hausdorff > 0.0, "blob: moved mesh at distance 0");
+  }
+  // Empty meshes.
+  {
+    const TriangleMesh empty, plate = Grid(2, 1.0);
+    EXPECT(std::isinf(CompareSurfaces(empty, plate).hausdorff), "empty vs plate not infinite");
+    EXPECT(CompareSurfaces(empty, empty).hausdorff == 0.0, "empty vs empty not 0");
+  }
+  return coretest::Finish("TestSurfaceDistance");
+}
