@@ -929,7 +929,7 @@ private:
     // to its orthogonal projection. That point lies on the input surface.
     std::vector<Vec3> slide(w.points.size());
     std::vector<char> slides(w.points.size(), 0);
-    if (O.slideOntoPlane)
+    if (O.slideOntoPlane || O.errorBudget)
     {
       std::vector<double> slideMove(w.points.size(), std::numeric_limits<double>::infinity());
       for (int f = 0; f < nf; ++f)
@@ -960,7 +960,12 @@ private:
       for (int d = 0; d < depth; ++d)
         onAncestorPlane = onAncestorPlane ||
           ((w.onPlane[v] & (uint64_t(1) << d)) && (pathFolds & (uint64_t(1) << d)));
-      if (slides[v] && !onAncestorPlane)
+      // Projecting is the default; sliding when asked for, or when the projected point
+      // would be farther from the region than the error budget left there.
+      bool slideIt = slides[v] && !onAncestorPlane && side[v] < 0;
+      if (slideIt && !O.slideOntoPlane)
+        slideIt = charge[v] + toRegion.Distance(plane.Project(w.points[v])) > limit[v];
+      if (slideIt)
       {
         w.points[v] = slide[v];
         w.onPlane[v] |= bit;

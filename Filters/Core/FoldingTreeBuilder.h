@@ -86,15 +86,16 @@ struct FoldingTreeOptions
    */
   bool errorBudget = true;
   /**
-   * How a vertex of a kept face lying on the discarded side reaches the fold plane: on
-   * (default), it slides along one of its edges to a kept-side vertex to where that edge
-   * crosses the plane (the crossing nearest to its orthogonal projection), so it stays on
-   * the input surface and its face keeps (part of) its input plane; off, it is projected
-   * orthogonally (the paper's choice), which can move it off the surface by up to an edge
-   * length times the sine of the angle between surface and plane. Vertices already on an
-   * ancestor's fold plane are always projected onto the intersection of the planes.
+   * How a vertex of a kept face lying on the discarded side reaches the fold plane. By
+   * default it is projected orthogonally (the paper's choice), which can move it off the
+   * surface by up to an edge length times the sine of the angle between surface and plane;
+   * with errorBudget on, a vertex whose projection would exceed the error budget left there
+   * slides instead: along one of its edges to a kept-side vertex, to where that edge crosses
+   * the plane (the crossing nearest to its orthogonal projection), so it stays on the input
+   * surface. slideOntoPlane on slides every such vertex. Vertices already on an ancestor's
+   * fold plane are always projected onto the intersection of the planes.
    */
-  bool slideOntoPlane = true;
+  bool slideOntoPlane = false;
   /**
    * Vertices within planeSnapFraction * epsilon of a fold plane count as lying on it: they
    * are snapped onto it (and flagged in planeMask) so the unfolder closes the fold line.

@@ -1,0 +1,324 @@
+// unfold(fold(M)) against M, measured through vtkFoldingTreeUnfolder's optional "Original"
+// input (port 1, the core's SurfaceDistance):
+// - known distances: a cube [-1, 1]^3 tessellated with all its mirror symmetries, folded and
+//   unfolded, against the cube scaled by s: DistanceToOriginal is s - max|x_i| at every output
+//   point (exactly: the output lies inside the big cube), HausdorffToOriginal sqrt(3) (s - 1)
+//   (the big cube's corners), the relative values are divided by the big cube's diagonal; the
+//   unscaled cube comes back exactly (Hausdorff ~ 0, closed); without an original there is no
+//   DistanceToOriginal; an original without polygons fails the request;
+// - procedural meshes (exact and approximate symmetry, asymmetric attachment) and real meshes
+//   of ../shared/data/meshes (the small ones, given as arguments): Hausdorff <= the root
+//   epsilon (2% of the diagonal, the paper's bound), orientation consistent (no interior edge
+//   traversed twice in the same direction), point count within 5% of M's (welded), open and
+//   non-manifold edges reported and below 5% of the edges; exact cases closed.
+//
+//   TestUnfoldingAccuracy [MESH...]
+#include "MeshIO.h"
+#include "ProceduralMeshes.h"
+#include "vtkFoldingTreeBuilder.h"
+#include "vtkFoldingTreeUnfolder.h"
+
+#include <vtkCellArray.h>
+#include <vtkDataArray.h>
+#include <vtkExecutive.h>
+#include <vtkFieldData.h>
+#include <vtkMultiBlockDataSet.h>
+#include <vtkNew.h>
+#include <vtkPointData.h>
+#include <vtkPoints.h>
+#include <vtkPolyData.h>
+
+#include <algorithm>
+#include <array>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <map>
+#include <set>
+#include <sstream>
+#include <string>
+
+namespace
+{
+int Failures = 0;
+#define EXPECT(cond, msg)                                                                          \
+  do                                                                                               \
+  {                                                                                                \
+    if (!(cond))                                                                                   \
+    {                                                                                              \
+      std::ostringstream os_;                                                                      \
+      os_ << msg;                                                                                  \
+      std::printf("FAIL (%s:%d): %s\n", __FILE__, __LINE__, os_.str().c_str());                    \
+      ++Failures;                                                                                  \
+    }                                                                                              \
+  } while (0)
+
+double Field(vtkPolyData* pd, const char* name)
+{
+  vtkDataArray* a = pd->GetFieldData()->GetArray(name);
+  return a && a->GetNumberOfTuples() > 0 ? a->GetTuple1(0) : std::nan("");
+}
+
+/// The surface of [-h, h]^3, n x n squares of 4 triangles (around a centre point) per face,
+/// outward: symmetric about x, y, z = 0 and the diagonal planes, as a triangle set.
+vtkSmartPointer<vtkPolyData> Cube(int n, double h)
+{
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  vtkNew<vtkCellArray> polys;
+  std::map<std::array<long long, 3>, vtkIdType> ids;
+  auto at = [&](double x, double y, double z)
+  {
+    const std::array<long long, 3> key{ std::llround(x * 1e9), std::llround(y * 1e9),
+      std::llround(z * 1e9) };
+    auto it = ids.find(key);
+    if (it != ids.end())
+      return it->second;
+    const vtkIdType id = points->InsertNextPoint(x, y, z);
+    ids[key] = id;
+    return id;
+  };
+  for (int axis = 0; axis < 3; ++axis)
+    for (double side : { -1.0, 1.0 })
+    {
+      const int u = (axis + 1) % 3, v = (axis + 2) % 3;
+      auto point = [&](double a, double b)
+      {
+        double p[3];
+        p[axis] = side * h;
+        p[u] = a;
+        p[v] = b;
+        return at(p[0], p[1], p[2]);
+      };
+      for (int i = 0; i < n; ++i)
+        for (int j = 0; j < n; ++j)
+        {
+          const double a0 = -h + 2 * h * i / n, a1 = -h + 2 * h * (i + 1) / n;
+          const double b0 = -h + 2 * h * j / n, b1 = -h + 2 * h * (j + 1) / n;
+          vtkIdType q[4] = { point(a0, b0), point(a1, b0), point(a1, b1), point(a0, b1) };
+          const vtkIdType c = point(0.5 * (a0 + a1), 0.5 * (b0 + b1));
+          for (int k = 0; k < 4; ++k)
+          {
+            // (u, v, axis) is right-handed: counter-clockwise in (u, v) faces +axis.
+            vtkIdType t[3] = { q[k], q[(k + 1) % 4], c };
+            if (side < 0)
+              std::swap(t[0], t[1]);
+            polys->InsertNextCell(3, t);
+          }
+        }
+    }
+  auto pd = vtkSmartPointer<vtkPolyData>::New();
+  pd->SetPoints(points);
+  pd->SetPolys(polys);
+  return pd;
+}
+
+vtkSmartPointer<vtkPolyData> Scaled(vtkPolyData* in, double s)
+{
+  auto out = vtkSmartPointer<vtkPolyData>::New();
+  out->DeepCopy(in);
+  for (vtkIdType i = 0; i < out->GetNumberOfPoints(); ++i)
+  {
+    double p[3];
+    out->GetPoint(i, p);
+    out->GetPoints()->SetPoint(i, s * p[0], s * p[1], s * p[2]);
+  }
+  return out;
+}
+
+struct EdgeCounts
+{
+  long long edges = 0, open = 0, nonManifold = 0, misoriented = 0;
+};
+
+/// Undirected edge uses (open: 1, non-manifold: > 2) and interior edges whose two faces
+/// traverse them in the same direction (inconsistent orientation).
+EdgeCounts CountEdges(vtkPolyData* pd)
+{
+  std::map<std::pair<vtkIdType, vtkIdType>, std::array<int, 2>> uses; // (forward, backward)
+  vtkIdType n = 0;
+  const vtkIdType* pts = nullptr;
+  vtkCellArray* polys = pd->GetPolys();
+  for (polys->InitTraversal(); polys->GetNextCell(n, pts);)
+    for (vtkIdType k = 0; k < n; ++k)
+    {
+      const vtkIdType a = pts[k], b = pts[(k + 1) % n];
+      auto& u = uses[{ std::min(a, b), std::max(a, b) }];
+      if (!u[0] && !u[1])
+        u = { 0, 0 };
+      ++u[a < b ? 0 : 1];
+    }
+  EdgeCounts c;
+  for (const auto& e : uses)
+  {
+    const int total = e.second[0] + e.second[1];
+    ++c.edges;
+    c.open += total == 1;
+    c.nonManifold += total > 2;
+    c.misoriented += total == 2 && (e.second[0] == 2 || e.second[1] == 2);
+  }
+  return c;
+}
+
+/// Points of M used by a polygon, coincident ones counted once.
+long long WeldedPointCount(vtkPolyData* pd)
+{
+  std::set<std::array<double, 3>> unique;
+  vtkIdType n = 0;
+  const vtkIdType* pts = nullptr;
+  vtkCellArray* polys = pd->GetPolys();
+  for (polys->InitTraversal(); polys->GetNextCell(n, pts);)
+    for (vtkIdType k = 0; k < n; ++k)
+    {
+      std::array<double, 3> x;
+      pd->GetPoint(pts[k], x.data());
+      unique.insert(x);
+    }
+  return static_cast<long long>(unique.size());
+}
+
+/// Folds and unfolds `mesh` (default options) with `mesh` as the original; checks the bound,
+/// orientation and point count; returns the unfolded mesh.
+vtkSmartPointer<vtkPolyData> RoundTrip(const std::string& name,
+  vtkPolyData* mesh,
+  bool exact,
+  double* seconds = nullptr)
+{
+  const auto start = std::chrono::steady_clock::now();
+  vtkNew<vtkFoldingTreeBuilder> builder;
+  builder->SetInputData(mesh);
+  vtkNew<vtkFoldingTreeUnfolder> unfolder;
+  unfolder->SetInputConnection(builder->GetOutputPort(0));
+  unfolder->SetOriginalData(mesh);
+  unfolder->Update();
+  vtkPolyData* out = unfolder->GetOutput();
+  if (seconds)
+    *seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  EXPECT(out->GetNumberOfCells() > 0, name << ": nothing unfolded");
+  if (out->GetNumberOfCells() == 0)
+    return out;
+  const double epsilon = Field(out, "RootEpsilon"), diagonal = Field(out, "OriginalDiagonal");
+  const double h = Field(out, "HausdorffToOriginal");
+  const EdgeCounts input = CountEdges(mesh), edges = CountEdges(out);
+  const long long points = out->GetNumberOfPoints(), welded = WeldedPointCount(mesh);
+  std::printf("%-24s H/diag %.4f (eps %.4f) mean/diag %.5f | points %lld (M %lld, %+.1f%%) | open "
+              "%lld (M %lld) non-manifold %lld (M %lld) misoriented %lld | gaps %g (length/diag "
+              "%.3f)\n",
+    name.c_str(),
+    h / diagonal,
+    epsilon / diagonal,
+    Field(out, "MeanDistanceToOriginalRelative"),
+    points,
+    welded,
+    100.0 * (points - welded) / welded,
+    edges.open,
+    input.open,
+    edges.nonManifold,
+    input.nonManifold,
+    edges.misoriented,
+    Field(out, "OpenGapCount"),
+    Field(out, "OpenGapLength") / diagonal);
+  std::fflush(stdout);
+  EXPECT(h <= epsilon, name << ": Hausdorff " << h << " above the root epsilon " << epsilon);
+  EXPECT(edges.misoriented == 0, name << ": " << edges.misoriented << " misoriented edges");
+  EXPECT(std::abs(points - welded) <= 0.05 * welded,
+    name << ": " << points << " points, M has " << welded);
+  EXPECT(edges.open <= input.open + 0.05 * edges.edges,
+    name << ": " << edges.open << " open edges of " << edges.edges);
+  if (exact)
+  {
+    EXPECT(h <= 1e-9 * diagonal, name << ": exact case, Hausdorff " << h);
+    EXPECT(edges.open == input.open && edges.nonManifold == input.nonManifold,
+      name << ": exact case not closed");
+  }
+  return out;
+}
+
+void KnownDistances()
+{
+  const vtkSmartPointer<vtkPolyData> cube = Cube(4, 1.0);
+  const vtkSmartPointer<vtkPolyData> unfolded = RoundTrip("cube", cube, true);
+  const double s = 1.2;
+  vtkNew<vtkFoldingTreeBuilder> builder;
+  builder->SetInputData(cube);
+  vtkNew<vtkFoldingTreeUnfolder> unfolder;
+  unfolder->SetInputConnection(builder->GetOutputPort(0));
+  unfolder->Update();
+  vtkPolyData* out = unfolder->GetOutput();
+  EXPECT(!out->GetPointData()->GetArray("DistanceToOriginal") &&
+      !out->GetFieldData()->GetArray("HausdorffToOriginal") &&
+      unfolder->GetHausdorffToOriginal() == -1.0,
+    "cube: distance arrays without an original");
+  const vtkSmartPointer<vtkPolyData> big = Scaled(cube, s);
+  unfolder->SetOriginalData(big);
+  unfolder->Update();
+  out = unfolder->GetOutput();
+  vtkDataArray* d = out->GetPointData()->GetArray("DistanceToOriginal");
+  EXPECT(d && d->GetNumberOfTuples() == out->GetNumberOfPoints(), "cube: no DistanceToOriginal");
+  if (d)
+  {
+    double worst = 0.0;
+    for (vtkIdType i = 0; i < out->GetNumberOfPoints(); ++i)
+    {
+      double p[3];
+      out->GetPoint(i, p);
+      const double expected =
+        s - std::max({ std::abs(p[0]), std::abs(p[1]), std::abs(p[2]) });
+      worst = std::max(worst, std::abs(d->GetTuple1(i) - expected));
+    }
+    EXPECT(worst < 1e-12, "cube: DistanceToOriginal off by " << worst);
+  }
+  const double h = Field(out, "HausdorffToOriginal"), expected = std::sqrt(3.0) * (s - 1.0);
+  const double diagonal = 2.0 * s * std::sqrt(3.0);
+  EXPECT(std::abs(h - expected) < 1e-9, "cube: Hausdorff " << h << " != " << expected);
+  EXPECT(unfolder->GetHausdorffToOriginal() == h, "cube: GetHausdorffToOriginal");
+  EXPECT(std::abs(Field(out, "OriginalDiagonal") - diagonal) < 1e-12, "cube: OriginalDiagonal");
+  EXPECT(std::abs(Field(out, "HausdorffToOriginalRelative") - h / diagonal) < 1e-15,
+    "cube: HausdorffToOriginalRelative");
+  const double mean = Field(out, "MeanDistanceToOriginal");
+  EXPECT(mean > s - 1.0 - 1e-12 && mean < expected &&
+      std::abs(Field(out, "MeanDistanceToOriginalRelative") - mean / diagonal) < 1e-15,
+    "cube: mean distance " << mean << " outside (s - 1, sqrt(3)(s - 1))");
+
+  // An original without polygons fails the request.
+  vtkNew<vtkPolyData> empty;
+  empty->SetPoints(big->GetPoints());
+  unfolder->SetOriginalData(empty);
+  vtkObject::GlobalWarningDisplayOff();
+  const int ok = unfolder->GetExecutive()->Update();
+  vtkObject::GlobalWarningDisplayOn();
+  EXPECT(ok == 0, "cube: an original without polygons did not fail the request");
+  unfolder->SetOriginalData(nullptr);
+  unfolder->Update();
+  EXPECT(unfolder->GetNumberOfInputConnections(1) == 0 &&
+      !unfolder->GetOutput()->GetPointData()->GetArray("DistanceToOriginal"),
+    "cube: SetOriginalData(nullptr) did not disconnect");
+}
+}
+
+int main(int argc, char* argv[])
+{
+  namespace pm = foldingmeshes::testing;
+  KnownDistances();
+  RoundTrip("bilateral blob", pm::MakeBilateralBlob(3000).mesh, false);
+  RoundTrip("different tessellation", pm::MakeBilateralBlobDifferentTessellation(3000).mesh, false);
+  RoundTrip("three planes", pm::MakeThreePlaneShape(3000).mesh, false);
+  RoundTrip("asymmetric attachment", pm::MakeBlobWithAsymmetricPart(3000, 0.2).mesh, false);
+  for (int i = 1; i < argc; ++i)
+  {
+    std::string error;
+    vtkSmartPointer<vtkPolyData> mesh = foldingmeshes::ReadMesh(argv[i], error);
+    EXPECT(mesh, argv[i] << ": " << error);
+    if (!mesh)
+      continue;
+    double seconds = 0.0;
+    RoundTrip(std::filesystem::path(argv[i]).stem().string(), mesh, false, &seconds);
+    std::printf("  (%.1f s)\n", seconds);
+  }
+  if (Failures > 0)
+    std::printf("TestUnfoldingAccuracy: %d check(s) FAILED\n", Failures);
+  else
+    std::printf("TestUnfoldingAccuracy: all checks passed\n");
+  return Failures > 0 ? 1 : 0;
+}
