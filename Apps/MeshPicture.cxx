@@ -13,6 +13,7 @@
 #include <vtkProperty.h>
 #include <vtkRenderWindow.h>
 #include <vtkRenderer.h>
+#include <vtkRendererCollection.h>
 #include <vtkWindowToImageFilter.h>
 
 #include <vtkVariant.h>
@@ -204,6 +205,32 @@ vtkSmartPointer<vtkRenderWindow> MakeCategoryScene(vtkPolyData* mesh,
   window->SetMultiSamples(0);
   window->SetSize(width, height);
   window->AddRenderer(renderer);
+  return window;
+}
+
+vtkSmartPointer<vtkRenderWindow> MakeSideBySideScene(vtkPolyData* left,
+  const char* leftCellArrayName,
+  vtkPolyData* right,
+  const char* rightCellArrayName,
+  int width,
+  int height)
+{
+  vtkSmartPointer<vtkRenderWindow> a = MakeCategoryScene(left, leftCellArrayName, width / 2, height);
+  vtkSmartPointer<vtkRenderWindow> b =
+    MakeCategoryScene(right, rightCellArrayName, width / 2, height);
+  vtkSmartPointer<vtkRenderer> l = a->GetRenderers()->GetFirstRenderer();
+  vtkSmartPointer<vtkRenderer> r = b->GetRenderers()->GetFirstRenderer();
+  a->RemoveRenderer(l);
+  b->RemoveRenderer(r);
+  l->SetViewport(0.0, 0.0, 0.5, 1.0);
+  r->SetViewport(0.5, 0.0, 1.0, 1.0);
+  r->SetActiveCamera(l->GetActiveCamera());
+  vtkSmartPointer<vtkRenderWindow> window = vtkSmartPointer<vtkRenderWindow>::New();
+  window->SetOffScreenRendering(1);
+  window->SetMultiSamples(0);
+  window->SetSize(width, height);
+  window->AddRenderer(l);
+  window->AddRenderer(r);
   return window;
 }
 

@@ -37,6 +37,19 @@ vtkSmartPointer<vtkRenderWindow> MakeCategoryScene(vtkPolyData* mesh,
   int width,
   int height);
 
+/**
+ * Two meshes side by side (left and right half of one off-screen window, one shared camera
+ * placed for the left mesh as MakeCategoryScene places it), each coloured as
+ * MakeCategoryScene does (a null array name: plain grey). For "this is unfold(fold(M)) next to
+ * M" pictures.
+ */
+vtkSmartPointer<vtkRenderWindow> MakeSideBySideScene(vtkPolyData* left,
+  const char* leftCellArrayName,
+  vtkPolyData* right,
+  const char* rightCellArrayName,
+  int width,
+  int height);
+
 /// Renders the scene to a PNG file. Returns false and sets error on failure.
 bool WritePicture(vtkRenderWindow* window, const std::string& path, std::string& error);
 }

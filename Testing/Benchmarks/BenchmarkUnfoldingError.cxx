@@ -112,6 +112,24 @@ void Report(const char* label,
     std::printf("  %-10s elsewhere by crack width: <0.05eps %d, <0.25eps %d, <eps %d, more %d\n",
       label, bins[0], bins[1], bins[2], bins[3]);
   }
+  {
+    std::map<std::pair<int, int>, std::vector<int>> directed;
+    for (int f = 0; f < m.NumberOfFaces(); ++f)
+      for (int k = 0; k < 3; ++k)
+        directed[{ m.triangles[f][k], m.triangles[f][(k + 1) % 3] }].push_back(f);
+    for (const auto& e : directed)
+      if (e.second.size() == 2 && !directed.count({ e.first.second, e.first.first }))
+      {
+        std::printf("  %-10s misoriented edge %d-%d: faces", label, e.first.first, e.first.second);
+        for (int f : e.second)
+          std::printf(" %d(filled %d mirrored %d leaf %d)",
+            f,
+            int(m.faceFilled[f]),
+            int(m.faceMirrored[f]),
+            m.faceLeaf[f]);
+        std::printf("\n");
+      }
+  }
   std::printf("  %-10s open on fold planes %d elsewhere %d; unmatched tears %d gap edges %d\n",
     label,
     onPlane,

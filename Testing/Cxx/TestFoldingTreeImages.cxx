@@ -1,6 +1,7 @@
 // Baseline-image regression tests of what a person sees of a folding tree, on the bundled
 // dinosaur: the segmentation view (the input coloured by FoldingLeafId, faces mirrored away in
-// grey, as in the paper's Figures 1 and 4) and the mesh unfolded from the tree.
+// grey, as in the paper's Figures 1 and 4), the mesh unfolded from the tree, and the unfolded
+// mesh next to the input.
 //
 //   TestFoldingTreeImages MESH BASELINE_DIR TEMP_DIR
 #include "MeshPicture.h"
@@ -62,6 +63,12 @@ int main(int argc, char* argv[])
     temp);
   ok = Compare(foldingmeshes::MakeCategoryScene(unfolded, "FoldingLeafId", 400, 300),
          baselines + "/TestFoldingTreeUnfolded.png",
+         temp) &&
+    ok;
+  // unfold(fold(M)) (right, coloured by leaf) next to M (left, grey), same camera.
+  vtkPolyData* original = reader->GetOutput();
+  ok = Compare(foldingmeshes::MakeSideBySideScene(original, nullptr, unfolded, "FoldingLeafId", 600, 300),
+         baselines + "/TestFoldingTreeUnfoldedNextToOriginal.png",
          temp) &&
     ok;
   return ok ? 0 : 1;
