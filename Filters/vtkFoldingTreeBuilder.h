@@ -25,7 +25,9 @@
  *   and cell array of the triangulated input (values copied by original id, active
  *   attributes kept), point arrays "OriginalPointId" (vtkIdType), "TearMask" and
  *   "PlaneMask" (vtkTypeUInt64Array, bit d = tree level d, see Core/FoldingTree.h),
- *   "Projected" (unsigned char 0/1), cell array "OriginalCellId" (vtkIdType), and field data
+ *   "Projected" (unsigned char 0/1), "ErrorBudget" (double: how far the unfolder may still
+ *   move the point without breaking the root epsilon bound; optional on reading), cell array
+ *   "OriginalCellId" (vtkIdType), and field data
  *   FoldingNodeKind = 0, FoldingNodeIndex, FoldingNodeDepth, FoldingEpsilon,
  *   FoldingFoldsAbove, FoldingRegionFaces, FoldingRegionArea, FoldingRegionOriginalFaces,
  *   SymmetricAreaFraction, DetectionRun, LeafReason (int, Core's LeafReason enum),

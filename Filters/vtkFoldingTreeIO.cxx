@@ -293,6 +293,15 @@ struct Writer
     leaf->GetPointData()->AddArray(tear);
     leaf->GetPointData()->AddArray(plane);
     leaf->GetPointData()->AddArray(projected);
+    if (!m.errorBudget.empty())
+    {
+      vtkNew<vtkDoubleArray> budget;
+      budget->SetName("ErrorBudget");
+      budget->SetNumberOfTuples(m.NumberOfPoints());
+      for (int i = 0; i < m.NumberOfPoints(); ++i)
+        budget->SetValue(i, m.errorBudget[i]);
+      leaf->GetPointData()->AddArray(budget);
+    }
     vtkNew<vtkIdTypeArray> cellIds;
     cellIds->SetName("OriginalCellId");
     cellIds->SetNumberOfTuples(m.NumberOfFaces());
@@ -650,6 +659,15 @@ struct Reader
         return this->Fail(where, "invalid per-point tree values (ids, masks or Projected)");
       m.originalPointIds[i] = static_cast<int>(id);
       m.projected[i] = pr ? 1 : 0;
+    }
+    // Optional (older files have none).
+    if (vtkDataArray* budget = vtkDataArray::SafeDownCast(pd->GetAbstractArray("ErrorBudget")))
+    {
+      if (budget->GetNumberOfTuples() != np || budget->GetNumberOfComponents() != 1)
+        return this->Fail(where, "ErrorBudget does not have one value per point");
+      m.errorBudget.resize(np);
+      for (vtkIdType i = 0; i < np; ++i)
+        m.errorBudget[i] = budget->GetTuple1(i);
     }
     m.originalFaceIds.resize(nt);
     for (vtkIdType f = 0; f < nt; ++f)

@@ -90,6 +90,10 @@ struct FoldingLeafMesh
   std::vector<uint64_t> planeMask;
   std::vector<char> projected;             ///< 1: moved from the discarded side onto a fold plane
   std::vector<MirroredFlag> mirroredFlags; ///< sorted by point, level, flag, mask
+  /// Per point (or empty: unknown): how far the unfolder may still move the point and its
+  /// copies without breaking the root epsilon bound - the root epsilon minus the errors the
+  /// folds on the way charged here (FoldingTreeOptions::errorBudget).
+  std::vector<double> errorBudget;
 
   int NumberOfPoints() const { return static_cast<int>(points.size()); }
   int NumberOfFaces() const { return static_cast<int>(triangles.size()); }

@@ -291,6 +291,8 @@ private:
     m.tearMask = std::move(w.tear);
     m.planeMask = std::move(w.onPlane);
     m.projected = std::move(w.projected);
+    if (this->Options.errorBudget)
+      m.errorBudget = std::move(w.budget);
     for (int v = 0; v < static_cast<int>(w.mirrorFlags.size()); ++v)
     {
       auto entries = w.mirrorFlags[v];

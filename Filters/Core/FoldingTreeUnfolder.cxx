@@ -48,6 +48,7 @@ struct Piece
   std::vector<int> pointCopy;
   std::vector<TearList> tear;
   std::vector<uint64_t> onPlane;
+  std::vector<double> budget; ///< how far the point may still move (infinite: unknown)
   std::vector<int> faceOrig;
   std::vector<int> faceCopy;
   std::vector<char> faceFilled;
@@ -63,6 +64,7 @@ struct Piece
     pointCopy.insert(pointCopy.end(), o.pointCopy.begin(), o.pointCopy.end());
     tear.insert(tear.end(), o.tear.begin(), o.tear.end());
     onPlane.insert(onPlane.end(), o.onPlane.begin(), o.onPlane.end());
+    budget.insert(budget.end(), o.budget.begin(), o.budget.end());
     for (const Triangle& t : o.triangles)
       triangles.push_back({ t[0] + offset, t[1] + offset, t[2] + offset });
     faceOrig.insert(faceOrig.end(), o.faceOrig.begin(), o.faceOrig.end());
@@ -172,6 +174,10 @@ private:
     for (TearList& t : piece.tear)
       Normalize(t);
     piece.onPlane = m.planeMask;
+    if (m.errorBudget.empty() || !this->Options.respectErrorBudget)
+      piece.budget.assign(m.points.size(), std::numeric_limits<double>::infinity());
+    else
+      piece.budget = m.errorBudget;
     piece.faceOrig = m.originalFaceIds;
     piece.faceCopy.assign(m.triangles.size(), id);
     piece.faceFilled.assign(m.triangles.size(), 0);
@@ -226,10 +232,11 @@ private:
     {
       const double s = p.SignedDistance(piece.points[v]);
       if ((piece.onPlane[v] & bit) || IsOnPlane(piece.tear[v], node.depth) ||
-        std::abs(s) <= tolerance || inSlab[v])
+        std::abs(s) <= tolerance || (inSlab[v] && std::abs(s) <= piece.budget[v]))
       {
         // Both copies: the reflection at this fold does not matter.
         piece.points[v] -= s * p.normal;
+        piece.budget[v] = std::max(0.0, piece.budget[v] - std::abs(s));
         piece.onPlane[v] |= bit;
         for (auto& e : piece.tear[v])
           e.second &= ~bit;
@@ -251,6 +258,7 @@ private:
       piece.pointCopy.push_back(mirrorCopy[piece.pointCopy[v]]);
       piece.tear.push_back(std::move(reflected));
       piece.onPlane.push_back(0); // the copy's own fold-line flags come from `reflected`
+      piece.budget.push_back(piece.budget[v]);
     }
     const int nf = piece.NumberOfFaces();
     for (int f = 0; f < nf; ++f)
@@ -401,9 +409,13 @@ private:
         out.faceFilled.push_back(out.faceFilled[bestFace]);
         faceChild.push_back(faceChild[bestFace]);
         addFace(out.NumberOfFaces() - 1);
-        out.points[u] = 0.5 * (x + bestPoint);
+        // Half way to the edge, or as far as u's error budget allows.
+        const double move = std::min(0.5 * bestDistance, out.budget[u]);
+        if (bestDistance > 0.0)
+          out.points[u] = x + (move / bestDistance) * (bestPoint - x);
+        out.budget[u] = std::max(0.0, out.budget[u] - move);
         matched[u] = 1;
-        rough[u] = 0.5 * bestDistance;
+        rough[u] = move;
         children[u].push_back(faceChild[bestFace]);
         std::sort(children[u].begin(), children[u].end());
         ++zipped;
@@ -605,9 +617,61 @@ private:
     const int level = node.depth;
     const double tol = std::max(this->Options.stitchToleranceScale * node.epsilon,
       1e-12 * std::max(this->Tree.diagonal, 1e-300));
+    std::vector<char> isTear(piece.points.size());
+    for (int v = 0; v < piece.NumberOfPoints(); ++v)
+      isTear[v] = IsTear(piece.tear[v], level);
+    this->StitchVertices(piece, isTear, childOf, tol, node.epsilon, seam);
+    {
+      std::vector<char> tear(piece.points.size());
+      for (int v = 0; v < piece.NumberOfPoints(); ++v)
+        tear[v] = IsTear(piece.tear[v], level);
+      this->CountGaps(piece, tear, seam);
+      Consume(piece, 2 * level);
+    }
+    this->Result.stitchedVertices += seam.stitchedVertices;
+    this->Result.unmatchedTearVertices += seam.unmatchedTearVertices;
+    this->Result.gapEdges += seam.gapEdges;
+    this->Result.gapLength += seam.gapLength;
+  }
+
+public:
+  /**
+   * The final seam pass (UnfoldOptions::weldBoundaries): every vertex on an open edge is a
+   * candidate, copies play the part of children (a copy's own vertices are never merged),
+   * tolerance weldToleranceScale * root epsilon; moves are bounded by the error budgets.
+   */
+  void WeldBoundaries(Piece& piece, SeamReport& seam)
+  {
+    std::map<std::pair<int, int>, int> edges;
+    for (const Triangle& t : piece.triangles)
+      for (int k = 0; k < 3; ++k)
+        ++edges[{ std::min(t[k], t[(k + 1) % 3]), std::max(t[k], t[(k + 1) % 3]) }];
+    std::vector<char> open(piece.points.size(), 0);
+    for (const auto& e : edges)
+      if (e.second == 1)
+        open[e.first.first] = open[e.first.second] = 1;
+    const double tol = std::max(this->Options.weldToleranceScale * this->Tree.rootEpsilon,
+      1e-12 * std::max(this->Tree.diagonal, 1e-300));
+    this->StitchVertices(piece, open, piece.pointCopy, tol, this->Tree.rootEpsilon, seam);
+  }
+
+private:
+  /**
+   * Stitching of the candidate vertices `isTear` (see UnfoldFoldingTree): pairing by
+   * union-find within `tol` (never two vertices of one child), merged clusters placed where
+   * every member's move stays within its error budget, zipper, gap filling, constrained
+   * smoothing. Fills seam's stitch statistics (not the gaps).
+   */
+  void StitchVertices(Piece& piece,
+    const std::vector<char>& candidate,
+    const std::vector<int>& childOf,
+    double tol,
+    double epsilon,
+    SeamReport& seam)
+  {
     std::vector<int> tears;
     for (int v = 0; v < piece.NumberOfPoints(); ++v)
-      if (IsTear(piece.tear[v], level))
+      if (candidate[v])
         tears.push_back(v);
     seam.tearVertices = static_cast<int>(tears.size());
 
@@ -707,21 +771,63 @@ private:
       sum[rep[v]] += piece.points[v];
       ++count[rep[v]];
     }
-    std::vector<double> spread(n, 0.0);
+    // Where a cluster goes: its mean, else the position of one of its members (lowest id
+    // first), whichever moves no member farther than its error budget; none: not merged.
+    std::vector<std::vector<int>> members(n);
     for (int v = 0; v < n; ++v)
+      if (count[rep[v]] >= 2)
+        members[rep[v]].push_back(v);
+    std::vector<Vec3> target(n);
+    for (int r = 0; r < n; ++r)
     {
-      const int r = rep[v];
-      if (count[r] < 2)
+      if (members[r].empty())
         continue;
-      const Vec3 mean = sum[r] / count[r];
-      spread[r] = std::max(spread[r], (piece.points[v] - mean).norm());
-      ++seam.stitchedVertices;
-    }
-    for (int v = 0; v < n; ++v)
-      if (count[v] >= 2 && rep[v] == v)
+      std::vector<Vec3> candidates{ sum[r] / count[r] };
+      for (int v : members[r])
+        candidates.push_back(piece.points[v]);
+      bool placed = false;
+      for (const Vec3& c : candidates)
       {
-        piece.points[v] = sum[v] / count[v];
-        seam.maximumStitchDistance = std::max(seam.maximumStitchDistance, spread[v]);
+        bool fits = true;
+        for (int v : members[r])
+          fits = fits && (piece.points[v] - c).norm() <= piece.budget[v] * (1.0 + 1e-12);
+        if (fits)
+        {
+          target[r] = c;
+          placed = true;
+          break;
+        }
+      }
+      if (!placed)
+      {
+        ++seam.budgetRejectedClusters;
+        for (int v : members[r])
+        {
+          rep[v] = v;
+          count[v] = 1;
+        }
+        childrenOfRoot.erase(r);
+        members[r].clear();
+      }
+    }
+    std::vector<double> spread(n, 0.0);
+    for (int r = 0; r < n; ++r)
+      for (int v : members[r])
+      {
+        const double moved = (piece.points[v] - target[r]).norm();
+        spread[r] = std::max(spread[r], moved);
+        piece.budget[v] = std::max(0.0, piece.budget[v] - moved);
+        ++seam.stitchedVertices;
+      }
+    for (int r = 0; r < n; ++r)
+      if (!members[r].empty())
+      {
+        double least = std::numeric_limits<double>::infinity();
+        for (int v : members[r])
+          least = std::min(least, piece.budget[v]);
+        piece.points[r] = target[r];
+        piece.budget[r] = least;
+        seam.maximumStitchDistance = std::max(seam.maximumStitchDistance, spread[r]);
       }
     for (int v = 0; v < n; ++v)
       if (rep[v] != v)
@@ -737,7 +843,7 @@ private:
     Piece out;
     std::vector<int> newId(n, -1);
     std::vector<std::vector<int>> outChildren; // children a point belongs to (sorted)
-    std::vector<char> outMatched;
+    std::vector<char> outMatched, outCandidate;
     for (int v = 0; v < n; ++v)
       if (rep[v] == v)
       {
@@ -747,6 +853,8 @@ private:
         out.pointCopy.push_back(piece.pointCopy[v]);
         out.tear.push_back(piece.tear[v]);
         out.onPlane.push_back(piece.onPlane[v]);
+        out.budget.push_back(piece.budget[v]);
+        outCandidate.push_back(candidate[v]);
         auto it = childrenOfRoot.find(v);
         outChildren.push_back(
           it != childrenOfRoot.end() ? it->second : std::vector<int>{ childOf[v] });
@@ -757,7 +865,7 @@ private:
     std::vector<double> rough(out.points.size(), 0.0);
     for (int v = 0; v < n; ++v)
       if (rep[v] == v && count[v] >= 2 &&
-        spread[v] > this->Options.exactStitchFraction * node.epsilon)
+        spread[v] > this->Options.exactStitchFraction * epsilon)
         rough[newId[v]] = spread[v];
     std::map<std::array<int, 3>, int> seen;
     for (int f = 0; f < piece.NumberOfFaces(); ++f)
@@ -791,7 +899,7 @@ private:
       Piece compact;
       std::vector<int> id(out.points.size(), -1);
       std::vector<double> compactRough;
-      std::vector<char> compactMatched;
+      std::vector<char> compactMatched, compactCandidate;
       std::vector<std::vector<int>> compactChildren;
       for (int v = 0; v < out.NumberOfPoints(); ++v)
         if (used[v])
@@ -802,6 +910,8 @@ private:
           compact.pointCopy.push_back(out.pointCopy[v]);
           compact.tear.push_back(out.tear[v]);
           compact.onPlane.push_back(out.onPlane[v]);
+          compact.budget.push_back(out.budget[v]);
+          compactCandidate.push_back(outCandidate[v]);
           compactRough.push_back(rough[v]);
           compactMatched.push_back(outMatched[v]);
           compactChildren.push_back(outChildren[v]);
@@ -815,6 +925,7 @@ private:
       rough = std::move(compactRough);
       outMatched = std::move(compactMatched);
       outChildren = std::move(compactChildren);
+      outCandidate = std::move(compactCandidate);
     }
 
     // Zipper: tear vertices left without a partner vertex are inserted into the nearest open
@@ -822,21 +933,13 @@ private:
     // tessellated differently close too.
     if (this->Options.zipper)
     {
-      std::vector<char> isTear(out.points.size());
-      for (int v = 0; v < out.NumberOfPoints(); ++v)
-        isTear[v] = IsTear(out.tear[v], level);
-      const int zipped = Zip(out, faceChild, outChildren, outMatched, isTear, tol, rough);
+      const int zipped = Zip(out, faceChild, outChildren, outMatched, outCandidate, tol, rough);
       seam.zippedVertices = zipped;
       seam.stitchedVertices += zipped;
       seam.unmatchedTearVertices -= zipped;
     }
     if (this->Options.fillSeamGaps)
-    {
-      std::vector<char> isTear(out.points.size());
-      for (int v = 0; v < out.NumberOfPoints(); ++v)
-        isTear[v] = IsTear(out.tear[v], level);
-      FillSeamGaps(out, faceChild, outChildren, isTear, tol, seam);
-    }
+      FillSeamGaps(out, faceChild, outChildren, outCandidate, tol, seam);
 
     // Constrained Laplacian smoothing of the rough seam vertices: the others are fixed, and
     // each moves at most by its budget (the distance its stitch already moved it), so
@@ -863,6 +966,8 @@ private:
       }
       const double lambda = this->Options.smoothingWeight;
       const std::vector<Vec3> start = out.points;
+      for (size_t v = 0; v < rough.size(); ++v)
+        rough[v] = std::min(rough[v], out.budget[v]);
       for (int iteration = 0; iteration < this->Options.smoothingIterations; ++iteration)
       {
         std::vector<Vec3> next = out.points;
@@ -880,20 +985,11 @@ private:
           }
         out.points.swap(next);
       }
+      for (int v = 0; v < out.NumberOfPoints(); ++v)
+        out.budget[v] = std::max(0.0, out.budget[v] - (out.points[v] - start[v]).norm());
     }
     seam.smoothedVertices = smoothed;
-    {
-      std::vector<char> isTear(out.points.size());
-      for (int v = 0; v < out.NumberOfPoints(); ++v)
-        isTear[v] = IsTear(out.tear[v], level);
-      this->CountGaps(out, isTear, seam);
-      Consume(out, 2 * level);
-    }
     piece = std::move(out);
-    this->Result.stitchedVertices += seam.stitchedVertices;
-    this->Result.unmatchedTearVertices += seam.unmatchedTearVertices;
-    this->Result.gapEdges += seam.gapEdges;
-    this->Result.gapLength += seam.gapLength;
   }
 
   const FoldingTree& Tree;
@@ -917,6 +1013,11 @@ bool UnfoldFoldingTree(const FoldingTree& tree,
   }
   Unfolder unfolder(tree, options, result);
   Piece piece = unfolder.Unfold(0);
+  if (!unfolder.Aborted && options.stitch && options.weldBoundaries)
+  {
+    result.weld.node = -1;
+    unfolder.WeldBoundaries(piece, result.weld);
+  }
   result.aborted = unfolder.Aborted;
   result.points = std::move(piece.points);
   result.triangles = std::move(piece.triangles);

@@ -45,6 +45,23 @@ struct UnfoldOptions
   /// vertices made by approximate symmetries deeper in the tree (not flagged: the builder
   /// only flags copies within its snap distance). 0 turns this off.
   double foldLineToleranceScale = 0.5;
+  /**
+   * Bound every vertex move (fold-line merges, stitching, zipper, smoothing, boundary weld)
+   * by the leaf point's error budget (FoldingLeafMesh::errorBudget, written by the builder):
+   * what the folds above left of the root epsilon there, so unfold(fold(M)) stays within it.
+   * A stitch cluster goes to its mean, else to one of its members, whichever moves no member
+   * beyond its budget; if none does, it is not merged (SeamReport::budgetRejectedClusters).
+   * Leaves without budgets (older files) are not bounded.
+   */
+  bool respectErrorBudget = true;
+  /**
+   * After the traversal, stitch the whole result once more: every vertex on an open edge may
+   * merge with (or be zipped into) one of another copy within weldToleranceScale * the root
+   * epsilon - closing seams whose vertices carry no tear flag (e.g. copies of seams across
+   * approximate folds). Moves are bounded by the error budgets. See UnfoldedMesh::weld.
+   */
+  bool weldBoundaries = true;
+  double weldToleranceScale = 0.5;
   /// Called with progress in [0,1]; return false to abort.
   std::function<bool(double)> progress;
 };
@@ -84,6 +101,7 @@ struct SeamReport
   int smoothedVertices = 0;
   int droppedFaces = 0;               ///< faces collapsed or duplicated by the merge
   double maximumStitchDistance = 0.0; ///< largest distance of a merged vertex to its cluster mean
+  int budgetRejectedClusters = 0; ///< clusters left unmerged: no place within the budgets
 };
 
 struct UnfoldedMesh
@@ -111,6 +129,8 @@ struct UnfoldedMesh
   int planeMergedVertices = 0;   ///< vertices shared by a copy and its mirror image (fold lines)
   int droppedMirrorFaces = 0;    ///< faces lying in a fold plane, not duplicated
   std::vector<SeamReport> seams; ///< one per segmentation node (postorder)
+  /// The final boundary weld (weldBoundaries): tearVertices = vertices on open edges before.
+  SeamReport weld;
   int stitchedVertices = 0;      ///< sums over the seams
   int unmatchedTearVertices = 0;
   int gapEdges = 0;
