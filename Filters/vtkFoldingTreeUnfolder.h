@@ -25,8 +25,11 @@
  *   neighbouring face).
  * - field data: "UnfoldedFaces", "UnfoldedPoints", "NumberOfCopies", "PlaneMergedVertices",
  *   "StitchedVertices", "UnmatchedTearVertices", "OpenGapCount" (boundary edges left between
- *   tear vertices), "OpenGapLength", "FilledFaces", "OpenEdges", "NonManifoldEdges" and the
- *   tree's "RootEpsilon" and "Diagonal".
+ *   tear vertices), "OpenGapLength", "FilledFaces", "OpenEdges", "NonManifoldEdges",
+ *   "MisorientedEdges" (edges whose two faces traverse them in the same direction),
+ *   "WeldedVertices" (merged or zipped by the final boundary weld), "BudgetRejectedClusters"
+ *   (stitches not made: no position within the error budgets) and the tree's "RootEpsilon"
+ *   and "Diagonal".
  *
  * Optional input port 1, "Original" (vtkPolyData: the mesh the tree was built from; polygons
  * and strips are triangulated, other cells ignored): when connected, the output also gets
@@ -91,6 +94,29 @@ public:
   ///@}
 
   ///@{
+  /**
+   * Bound every vertex move by the error budgets the builder stored in the leaves
+   * ("ErrorBudget"), so the output stays within the root epsilon of the input (default on).
+   */
+  vtkSetMacro(RespectErrorBudget, bool);
+  vtkGetMacro(RespectErrorBudget, bool);
+  vtkBooleanMacro(RespectErrorBudget, bool);
+  ///@}
+
+  ///@{
+  /**
+   * Finally stitch the open boundaries of different copies once more (default on), within
+   * WeldToleranceScale times the root epsilon (default 0.5, range 0..10): closes seams whose
+   * vertices carry no tear flag, e.g. copies of seams across approximate folds.
+   */
+  vtkSetMacro(WeldBoundaries, bool);
+  vtkGetMacro(WeldBoundaries, bool);
+  vtkBooleanMacro(WeldBoundaries, bool);
+  vtkSetClampMacro(WeldToleranceScale, double, 0.0, 10.0);
+  vtkGetMacro(WeldToleranceScale, double);
+  ///@}
+
+  ///@{
   /** Constrained Laplacian smoothing of the seams: iterations (default 3, range 0..1000). */
   vtkSetClampMacro(SmoothingIterations, int, 0, 1000);
   vtkGetMacro(SmoothingIterations, int);
@@ -133,6 +159,9 @@ protected:
   bool FillSeamGaps = true;
   int SmoothingIterations = 3;
   double SmoothingWeight = 0.5;
+  bool RespectErrorBudget = true;
+  bool WeldBoundaries = true;
+  double WeldToleranceScale = 0.5;
 
   int OpenGapCount = 0;
   double OpenGapLength = 0.0;

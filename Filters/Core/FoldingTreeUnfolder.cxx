@@ -1030,15 +1030,27 @@ bool UnfoldFoldingTree(const FoldingTree& tree,
   for (size_t v = 0; v < result.points.size(); ++v)
     result.pointMirrored[v] = result.copies[result.pointCopy[v]].mirrored;
   {
-    std::map<std::pair<int, int>, int> edges;
+    // Per undirected edge: uses in increasing and in decreasing vertex order.
+    std::map<std::pair<int, int>, std::array<int, 2>> edges;
     for (const Triangle& t : result.triangles)
       for (int k = 0; k < 3; ++k)
-        ++edges[{ std::min(t[k], t[(k + 1) % 3]), std::max(t[k], t[(k + 1) % 3]) }];
+      {
+        const int a = t[k], b = t[(k + 1) % 3];
+        auto it = edges.emplace(std::make_pair(std::min(a, b), std::max(a, b)),
+                         std::array<int, 2>{ 0, 0 })
+                    .first;
+        ++it->second[a < b ? 0 : 1];
+      }
     for (const auto& e : edges)
     {
-      result.openEdges += e.second == 1;
-      result.nonManifoldEdges += e.second > 2;
+      const int uses = e.second[0] + e.second[1];
+      result.openEdges += uses == 1;
+      result.nonManifoldEdges += uses > 2;
+      result.misorientedEdges += uses == 2 && e.second[0] != 1;
     }
+    for (const SeamReport& seam : result.seams)
+      result.budgetRejectedClusters += seam.budgetRejectedClusters;
+    result.budgetRejectedClusters += result.weld.budgetRejectedClusters;
   }
   result.filledFaces =
     static_cast<int>(std::count(result.faceFilled.begin(), result.faceFilled.end(), char(1)));

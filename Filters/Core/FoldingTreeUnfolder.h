@@ -139,6 +139,10 @@ struct UnfoldedMesh
   /// The final mesh: edges used by one triangle, and by more than two.
   int openEdges = 0;
   int nonManifoldEdges = 0;
+  /// Edges of two faces that traverse them in the same direction (orientation flips at a
+  /// stitched seam).
+  int misorientedEdges = 0;
+  int budgetRejectedClusters = 0; ///< over all seams and the weld
   bool aborted = false;
 
   int NumberOfPoints() const { return static_cast<int>(points.size()); }

@@ -216,7 +216,15 @@ int main(int argc, char* argv[])
     Report("+zip", tree, original, o);
     o.fillSeamGaps = true;
     Report("+fill", tree, original, o);
+    o = UnfoldOptions();
+    o.weldBoundaries = false;
+    Report("noweld", tree, original, o);
     Report("default", tree, original, UnfoldOptions());
+    o.weldBoundaries = true;
+    o.weldToleranceScale = 1.0;
+    Report("weld1", tree, original, o);
+    o.respectErrorBudget = false;
+    Report("weld1free", tree, original, o);
     std::fflush(stdout);
   }
   return 0;

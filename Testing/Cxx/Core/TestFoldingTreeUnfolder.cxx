@@ -24,6 +24,9 @@
 //   plane), in the same vertex order for direct copies and reversed for mirrored ones
 //   (so normal = linear * leaf normal); mirrored flags are the parity of the mirror mask and
 //   det(linear); the input's vertex normals mapped by `linear` match the unfolded mesh's;
+// - error budgets: no output point moves farther from the affine image of its leaf point
+//   than the leaf point's errorBudget (zero budgets: nothing moves); without the bound some
+//   point does;
 // - malformed trees give an error; determinism; abort.
 #include "CoreTestUtilities.h"
 #include "FoldingTreeBuilder.h"
@@ -36,6 +39,7 @@
 #include <cmath>
 #include <cstdio>
 #include <functional>
+#include <limits>
 #include <map>
 
 using namespace foldingmeshes;
@@ -541,6 +545,63 @@ void TestStitching()
     "attachment: unmatched count inconsistent");
 }
 
+/**
+ * Error budgets: every output point is the affine image of a leaf point of its copy moved by
+ * at most that point's budget (FoldingLeafMesh::errorBudget). With all budgets 0 nothing
+ * moves (so the seams of the attachment stay partly open); with the builder's budgets the
+ * moves stay within them, and with the bound off (respectErrorBudget false) some point moves
+ * farther than its budget would allow - the bound is what keeps it there.
+ */
+void TestErrorBudgets()
+{
+  const Shape s = MakeShape(pm::MakeBlobWithAsymmetricPart(4000, 0.1));
+  const FoldingTree tree = Fold(s.mesh, 0.02 * s.diagonal);
+  int withBudget = 0;
+  for (const FoldingNode& n : tree.nodes)
+    withBudget += n.kind == FoldingNodeKind::Leaf &&
+      n.mesh.errorBudget.size() == n.mesh.points.size();
+  EXPECT(withBudget == tree.NumberOfLeaves(), "not every leaf has error budgets");
+  // Largest move beyond the budget, over the output points.
+  auto excess = [&](const FoldingTree& t, const UnfoldedMesh& u)
+  {
+    double worst = 0.0;
+    for (int v = 0; v < u.NumberOfPoints(); ++v)
+    {
+      const UnfoldCopy& c = u.copies[u.pointCopy[v]];
+      const FoldingLeafMesh& m = t.nodes[c.leaf].mesh;
+      double best = std::numeric_limits<double>::infinity();
+      for (int i = 0; i < m.NumberOfPoints(); ++i)
+        if (m.originalPointIds[i] == u.pointOriginalIds[v])
+          best = std::min(best,
+            (u.points[v] - (c.linear * m.points[i] + c.translation)).norm() - m.errorBudget[i]);
+      worst = std::max(worst, best);
+    }
+    return worst;
+  };
+  const UnfoldedMesh bounded = Unfold(tree);
+  EXPECT(excess(tree, bounded) <= 1e-9 * s.diagonal,
+    "a point moved beyond its error budget by " << excess(tree, bounded));
+  UnfoldOptions free;
+  free.respectErrorBudget = false;
+  const UnfoldedMesh unbounded = Unfold(tree, free);
+  EXPECT(excess(tree, unbounded) > 1e-9 * s.diagonal,
+    "without the bound no point moves beyond its budget: the test cannot tell");
+  FoldingTree frozen = tree;
+  for (FoldingNode& n : frozen.nodes)
+    std::fill(n.mesh.errorBudget.begin(), n.mesh.errorBudget.end(), 0.0);
+  const UnfoldedMesh still = Unfold(frozen);
+  EXPECT(excess(frozen, still) <= 1e-9 * s.diagonal, "zero budgets: a point moved");
+  std::printf("error budgets: open edges %d (zero budgets %d, unbounded %d), Hausdorff/diag %.4f "
+              "(unbounded %.4f), rejected clusters %d\n",
+    bounded.openEdges,
+    still.openEdges,
+    unbounded.openEdges,
+    Hausdorff(s.mesh, bounded) / s.diagonal,
+    Hausdorff(s.mesh, unbounded) / s.diagonal,
+    bounded.budgetRejectedClusters);
+  EXPECT(still.openEdges >= bounded.openEdges, "zero budgets close more than the budgets");
+}
+
 void TestMalformedTrees()
 {
   const Shape blob = MakeShape(pm::MakeBilateralBlob(2000));
@@ -599,6 +660,7 @@ int main()
   TestExactRoundTrips();
   TestBoundedRoundTrips();
   TestStitching();
+  TestErrorBudgets();
   TestMalformedTrees();
   TestDeterminismAbort();
   return coretest::Finish("TestFoldingTreeUnfolder");
