@@ -358,6 +358,25 @@ private:
     for (int pass = 0; pass < 3; ++pass)
     {
       bool changed = false;
+      // The open edges between two candidates at the start of the pass (edges split during
+      // the pass are skipped, the new ones wait for the next pass), bucketed on a grid of
+      // cell `tol` by the box of the edge grown by tol.
+      std::vector<Edge> open;
+      for (const auto& e : edgeFaces)
+        if (e.second.size() == 1 && isTear[e.first.first] && isTear[e.first.second])
+          open.push_back(e.first);
+      const double cell = std::max(tol, 1e-300);
+      auto cellOf = [cell](double x) { return static_cast<long long>(std::floor(x / cell)); };
+      std::unordered_map<CellKey, std::vector<int>, CellHash> buckets;
+      for (int i = 0; i < static_cast<int>(open.size()); ++i)
+      {
+        const Vec3 lo = out.points[open[i].first].cwiseMin(out.points[open[i].second]);
+        const Vec3 hi = out.points[open[i].first].cwiseMax(out.points[open[i].second]);
+        for (long long x = cellOf(lo.x() - tol); x <= cellOf(hi.x() + tol); ++x)
+          for (long long y = cellOf(lo.y() - tol); y <= cellOf(hi.y() + tol); ++y)
+            for (long long z = cellOf(lo.z() - tol); z <= cellOf(hi.z() + tol); ++z)
+              buckets[CellKey{ x, y, z }].push_back(i);
+      }
       for (int u = 0; u < out.NumberOfPoints(); ++u)
       {
         if (!isTear[u] || matched[u])
@@ -367,11 +386,15 @@ private:
         Edge bestEdge;
         double bestDistance = tol;
         Vec3 bestPoint = x;
-        for (const auto& e : edgeFaces)
+        auto bucket = buckets.find(CellKey{ cellOf(x.x()), cellOf(x.y()), cellOf(x.z()) });
+        if (bucket == buckets.end())
+          continue;
+        for (int i : bucket->second) // increasing i: the map order of the edges
         {
-          if (e.second.size() != 1)
+          const auto e = edgeFaces.find(open[i]);
+          if (e == edgeFaces.end() || e->second.size() != 1)
             continue;
-          const int a = e.first.first, b = e.first.second, f = e.second[0];
+          const int a = e->first.first, b = e->first.second, f = e->second[0];
           if (a == u || b == u || !isTear[a] || !isTear[b] ||
             std::binary_search(children[u].begin(), children[u].end(), faceChild[f]))
             continue;
@@ -388,7 +411,7 @@ private:
           {
             bestDistance = d;
             bestFace = f;
-            bestEdge = e.first;
+            bestEdge = e->first;
             bestPoint = q;
           }
         }
@@ -620,7 +643,8 @@ private:
     std::vector<char> isTear(piece.points.size());
     for (int v = 0; v < piece.NumberOfPoints(); ++v)
       isTear[v] = IsTear(piece.tear[v], level);
-    this->StitchVertices(piece, isTear, childOf, tol, node.epsilon, seam);
+    this->StitchVertices(
+      piece, isTear, childOf, tol, node.epsilon, this->Options.fillSeamGaps, seam);
     {
       std::vector<char> tear(piece.points.size());
       for (int v = 0; v < piece.NumberOfPoints(); ++v)
@@ -652,7 +676,10 @@ public:
         open[e.first.first] = open[e.first.second] = 1;
     const double tol = std::max(this->Options.weldToleranceScale * this->Tree.rootEpsilon,
       1e-12 * std::max(this->Tree.diagonal, 1e-300));
-    this->StitchVertices(piece, open, piece.pointCopy, tol, this->Tree.rootEpsilon, seam);
+    // No gap filling here: loops of open edges between copies may be the input's own
+    // borders (new faces there would leave the input surface).
+    const std::vector<int> copyOf = piece.pointCopy;
+    this->StitchVertices(piece, open, copyOf, tol, this->Tree.rootEpsilon, false, seam);
   }
 
 private:
@@ -667,6 +694,7 @@ private:
     const std::vector<int>& childOf,
     double tol,
     double epsilon,
+    bool fill,
     SeamReport& seam)
   {
     std::vector<int> tears;
@@ -938,7 +966,7 @@ private:
       seam.stitchedVertices += zipped;
       seam.unmatchedTearVertices -= zipped;
     }
-    if (this->Options.fillSeamGaps)
+    if (fill)
       FillSeamGaps(out, faceChild, outChildren, outCandidate, tol, seam);
 
     // Constrained Laplacian smoothing of the rough seam vertices: the others are fixed, and

@@ -58,7 +58,8 @@ struct UnfoldOptions
    * After the traversal, stitch the whole result once more: every vertex on an open edge may
    * merge with (or be zipped into) one of another copy within weldToleranceScale * the root
    * epsilon - closing seams whose vertices carry no tear flag (e.g. copies of seams across
-   * approximate folds). Moves are bounded by the error budgets. See UnfoldedMesh::weld.
+   * approximate folds). Moves are bounded by the error budgets; no gaps are filled (an open
+   * loop there may be the input's own border). See UnfoldedMesh::weld.
    */
   bool weldBoundaries = true;
   double weldToleranceScale = 0.5;
