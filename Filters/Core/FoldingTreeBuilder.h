@@ -78,11 +78,17 @@ struct FoldingTreeOptions
    * Keep unfold(tree) within epsilon of the input (the paper's bound). Halving epsilon
    * below folds alone does not: the copies made by k nested folds can each be off by the
    * fold's tolerance, epsilon (1 + 1/2 + ...) < 2 epsilon in all. With errorBudget on, every
-   * root-to-leaf path has a budget of epsilon: each fold measures what it adds - the largest
-   * distance of a mirrored vertex of its region to the region, plus the largest distance of
-   * a vertex it projects onto the plane to the region - and passes the rest to its kept half;
-   * S is trimmed (trimToMirrorConsistent) with min(node epsilon, remaining budget), so a
-   * fold never adds more than the budget left (exact symmetries cost nothing).
+   * point carries a budget, epsilon at the root. A fold charges each kept point what its
+   * copies add there - the distance of its mirror image to the input; for a discarded point,
+   * the distance of its mirror image to the region, charged to the kept point nearest to
+   * that image - plus how far projecting it onto the plane moved it off the region (the
+   * moved faces' centroids included), and limits it by the budget of the point its mirror
+   * image lands on; the kept point keeps the rest. Trimming (trimToMirrorConsistent) keeps a
+   * face of S only if every vertex's mirror distance is below min(epsilon, those budgets),
+   * so exact symmetries cost nothing and approximate ones stop where the budget is used up.
+   * The budgets left are stored in the leaves (FoldingLeafMesh::errorBudget) and bound the
+   * unfolder's vertex moves. Budgets are per point: a bound at the vertices (and at the
+   * centroids of projected faces), not a proof for every point of every face.
    */
   bool errorBudget = true;
   /**

@@ -158,18 +158,25 @@ struct UnfoldedMesh
  *   the mirrored triangles use them, and they are projected exactly onto p, so the fold
  *   line is closed. "On p": flagged (planeMask bit of the node's depth, or a MirroredFlag
  *   whose reflections have all been applied to this copy), within planeTolerance, or an end
- *   point of an open edge lying within foldLineToleranceScale * epsilon of p. Triangles
+ *   point of an open edge lying within foldLineToleranceScale * epsilon of p (and within
+ *   its error budget, respectErrorBudget). Triangles
  *   whose three vertices are on p are not duplicated. Per-vertex flags follow the copies
  *   exactly (MirroredFlag): a mirrored copy does not inherit its original's flags.
  * - segmentation node: the union of the children; then (stitch on) each vertex carrying the
  *   node's tear bit proposes the nearest tear vertex of another child within the tolerance;
  *   proposals are accepted by increasing distance (union-find) unless they would merge two
- *   vertices of the same child; each cluster becomes one vertex at its mean; collapsed and
+ *   vertices of the same child; each cluster becomes one vertex at its mean (or at a member,
+ *   or stays unmerged, whichever keeps every move within the error budgets); collapsed and
  *   duplicate triangles are dropped; tear vertices still alone are zipped into open seam
  *   edges of other children (UnfoldOptions::zipper); small seam loops are filled
  *   (fillSeamGaps); the seam is smoothed. Tear vertices
  *   left unmatched and the boundary edges between tear vertices are reported per node
  *   (SeamReport) and in total - never hidden.
+ * - finally (weldBoundaries) the open boundaries of different copies are stitched once more
+ *   (UnfoldedMesh::weld).
+ * With the builder's error budgets (FoldingTreeOptions::errorBudget) and respectErrorBudget,
+ * no point ends farther from the affine image of its leaf point than that point's budget, so
+ * the result stays within the root epsilon of the input the tree was built from.
  * Returns false with `error` set when the tree is invalid (FoldingTree::Validate).
  * Deterministic.
  */
