@@ -59,8 +59,8 @@ TriangleMesh ToTriangles(vtkPolyData* mesh)
   const vtkIdType* pts = nullptr;
   for (polys->InitTraversal(); polys->GetNextCell(n, pts);)
     for (vtkIdType k = 1; k + 1 < n; ++k)
-      out.triangles.push_back({ static_cast<int>(pts[0]), static_cast<int>(pts[k]),
-        static_cast<int>(pts[k + 1]) });
+      out.triangles.push_back(
+        { static_cast<int>(pts[0]), static_cast<int>(pts[k]), static_cast<int>(pts[k + 1]) });
   return out;
 }
 }

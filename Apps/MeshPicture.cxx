@@ -215,7 +215,8 @@ vtkSmartPointer<vtkRenderWindow> MakeSideBySideScene(vtkPolyData* left,
   int width,
   int height)
 {
-  vtkSmartPointer<vtkRenderWindow> a = MakeCategoryScene(left, leftCellArrayName, width / 2, height);
+  vtkSmartPointer<vtkRenderWindow> a =
+    MakeCategoryScene(left, leftCellArrayName, width / 2, height);
   vtkSmartPointer<vtkRenderWindow> b =
     MakeCategoryScene(right, rightCellArrayName, width / 2, height);
   vtkSmartPointer<vtkRenderer> l = a->GetRenderers()->GetFirstRenderer();

@@ -892,8 +892,7 @@ private:
     // Smoothing budget: how far a merged vertex may move (its cluster's spread); 0: fixed.
     std::vector<double> rough(out.points.size(), 0.0);
     for (int v = 0; v < n; ++v)
-      if (rep[v] == v && count[v] >= 2 &&
-        spread[v] > this->Options.exactStitchFraction * epsilon)
+      if (rep[v] == v && count[v] >= 2 && spread[v] > this->Options.exactStitchFraction * epsilon)
         rough[newId[v]] = spread[v];
     std::map<std::array<int, 3>, int> seen;
     for (int f = 0; f < piece.NumberOfFaces(); ++f)
@@ -1064,9 +1063,9 @@ bool UnfoldFoldingTree(const FoldingTree& tree,
       for (int k = 0; k < 3; ++k)
       {
         const int a = t[k], b = t[(k + 1) % 3];
-        auto it = edges.emplace(std::make_pair(std::min(a, b), std::max(a, b)),
-                         std::array<int, 2>{ 0, 0 })
-                    .first;
+        auto it =
+          edges.emplace(std::make_pair(std::min(a, b), std::max(a, b)), std::array<int, 2>{ 0, 0 })
+            .first;
         ++it->second[a < b ? 0 : 1];
       }
     for (const auto& e : edges)

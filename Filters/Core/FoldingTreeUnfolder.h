@@ -102,7 +102,7 @@ struct SeamReport
   int smoothedVertices = 0;
   int droppedFaces = 0;               ///< faces collapsed or duplicated by the merge
   double maximumStitchDistance = 0.0; ///< largest distance of a merged vertex to its cluster mean
-  int budgetRejectedClusters = 0; ///< clusters left unmerged: no place within the budgets
+  int budgetRejectedClusters = 0;     ///< clusters left unmerged: no place within the budgets
 };
 
 struct UnfoldedMesh
@@ -132,7 +132,7 @@ struct UnfoldedMesh
   std::vector<SeamReport> seams; ///< one per segmentation node (postorder)
   /// The final boundary weld (weldBoundaries): tearVertices = vertices on open edges before.
   SeamReport weld;
-  int stitchedVertices = 0;      ///< sums over the seams
+  int stitchedVertices = 0; ///< sums over the seams
   int unmatchedTearVertices = 0;
   int gapEdges = 0;
   double gapLength = 0.0;

@@ -110,7 +110,11 @@ void Report(const char* label,
       bins[best < 0.05 * eps ? 0 : best < 0.25 * eps ? 1 : best < eps ? 2 : 3]++;
     }
     std::printf("  %-10s elsewhere by crack width: <0.05eps %d, <0.25eps %d, <eps %d, more %d\n",
-      label, bins[0], bins[1], bins[2], bins[3]);
+      label,
+      bins[0],
+      bins[1],
+      bins[2],
+      bins[3]);
   }
   {
     std::map<std::pair<int, int>, std::vector<int>> directed;

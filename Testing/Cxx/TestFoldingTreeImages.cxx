@@ -67,7 +67,8 @@ int main(int argc, char* argv[])
     ok;
   // unfold(fold(M)) (right, coloured by leaf) next to M (left, grey), same camera.
   vtkPolyData* original = reader->GetOutput();
-  ok = Compare(foldingmeshes::MakeSideBySideScene(original, nullptr, unfolded, "FoldingLeafId", 600, 300),
+  ok = Compare(
+         foldingmeshes::MakeSideBySideScene(original, nullptr, unfolded, "FoldingLeafId", 600, 300),
          baselines + "/TestFoldingTreeUnfoldedNextToOriginal.png",
          temp) &&
     ok;

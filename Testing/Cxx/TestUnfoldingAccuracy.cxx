@@ -72,8 +72,9 @@ vtkSmartPointer<vtkPolyData> Cube(int n, double h)
   std::map<std::array<long long, 3>, vtkIdType> ids;
   auto at = [&](double x, double y, double z)
   {
-    const std::array<long long, 3> key{ std::llround(x * 1e9), std::llround(y * 1e9),
-      std::llround(z * 1e9) };
+    const std::array<long long, 3> key{
+      std::llround(x * 1e9), std::llround(y * 1e9), std::llround(z * 1e9)
+    };
     auto it = ids.find(key);
     if (it != ids.end())
       return it->second;
@@ -244,7 +245,8 @@ vtkSmartPointer<vtkPolyData> RoundTrip(const std::string& name,
   // vertices). The face count itself is 2 x the kept half's per fold, more than M's where the
   // two halves were tessellated differently (the builder keeps the half with more faces).
   const double faces = static_cast<double>(out->GetNumberOfCells());
-  const double density = points / faces, inputDensity = welded / static_cast<double>(TriangleCount(mesh));
+  const double density = points / faces,
+               inputDensity = welded / static_cast<double>(TriangleCount(mesh));
   EXPECT(std::abs(density - inputDensity) <= 0.05 * inputDensity,
     name << ": " << density << " points per face, M " << inputDensity);
   if (exact)
@@ -288,8 +290,7 @@ void KnownDistances()
     {
       double p[3];
       out->GetPoint(i, p);
-      const double expected =
-        s - std::max({ std::abs(p[0]), std::abs(p[1]), std::abs(p[2]) });
+      const double expected = s - std::max({ std::abs(p[0]), std::abs(p[1]), std::abs(p[2]) });
       worst = std::max(worst, std::abs(d->GetTuple1(i) - expected));
     }
     EXPECT(worst < 1e-12, "cube: DistanceToOriginal off by " << worst);

@@ -220,8 +220,8 @@ void CheckInvariants(const char* name, const Case& c, const FoldingTree& t, doub
       const bool slid = m.projected[v] &&
         inputSurface.Distance(m.points[v]) <=
           1e-9 * c.diagonal + 0.01 * rootEpsilon * static_cast<double>(planes.size());
-      movedPoints += !slid &&
-        (m.points[v] - ProjectOntoIntersection(input, planes)).norm() > 1e-9 * c.diagonal;
+      movedPoints +=
+        !slid && (m.points[v] - ProjectOntoIntersection(input, planes)).norm() > 1e-9 * c.diagonal;
     }
     EXPECT(badTriangles == 0,
       name << ": leaf " << i << ": " << badTriangles

@@ -558,8 +558,8 @@ void TestErrorBudgets()
   const FoldingTree tree = Fold(s.mesh, 0.02 * s.diagonal);
   int withBudget = 0;
   for (const FoldingNode& n : tree.nodes)
-    withBudget += n.kind == FoldingNodeKind::Leaf &&
-      n.mesh.errorBudget.size() == n.mesh.points.size();
+    withBudget +=
+      n.kind == FoldingNodeKind::Leaf && n.mesh.errorBudget.size() == n.mesh.points.size();
   EXPECT(withBudget == tree.NumberOfLeaves(), "not every leaf has error budgets");
   // Largest move beyond the budget, over the output points.
   auto excess = [&](const FoldingTree& t, const UnfoldedMesh& u)
