@@ -36,7 +36,7 @@ connected region that has it (Folding meshes, SGP 2006, section 3).
 fold: folds the mesh into a folding tree (section 4.1-4.2) and writes, in --outdir,
 STEM_tree.vtm (the tree, XML multiblock; its pieces go to the folder STEM_tree/),
 STEM_segmentation.vtp (the mesh with cell arrays FoldingLeafId, FoldingDepth, FoldingRole)
-and STEM_segmentation.png (coloured by FoldingLeafId; grey: faces mirrored away); prints
+and STEM_segmentation.png (coloured by FoldingLeafId: a mirrored face like its leaf); prints
 original and stored faces, compression, tree height, folds, leaves and time.
   --tolerance F            root epsilon as a fraction of the diagonal (default 0.02), halved
                            below every fold

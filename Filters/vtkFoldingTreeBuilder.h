@@ -47,12 +47,14 @@
  *   come from FoldingNodeIndex (see vtkFoldingTreeIO.h).
  *
  * Output 1 (vtkPolyData): the triangulated input with cell arrays "FoldingLeafId" (node index
- * of the leaf storing the face; -1 for faces removed by a fold or not stored: the tree does
- * not record which leaf face mirrors onto a removed face), "FoldingDepth" (depth of that
- * leaf, or of the folding node that removed the face), "FoldingRole" (0 kept in a leaf,
- * 1 removed by a fold - mirrored away, or collapsed by the projection onto the plane -,
- * 2 kept and touching a segmentation boundary (a vertex with a tear bit), -1 not stored:
- * an input triangle with a repeated vertex). Active scalars: FoldingLeafId.
+ * of the leaf that reproduces the face: the leaf storing it, or, for a face removed by a fold,
+ * the leaf holding the face whose mirror image it is - matched by the nearest mirrored
+ * centroid and followed through nested folds, see Core/FoldingSegmentation.h - so a mirrored
+ * half is coloured like the half it mirrors, as in the paper's Figures 1 and 4),
+ * "FoldingDepth" (depth of that leaf, or of the folding node that removed the face),
+ * "FoldingRole" (0 kept in a leaf, 1 removed by a fold - mirrored away, or collapsed by the
+ * projection onto the plane -, 2 kept and touching a segmentation boundary (a vertex with a
+ * tear bit), -1 not stored: an input triangle with a repeated vertex). Active scalars: FoldingLeafId.
  *
  * Bad input (no points, no polygons, invalid mesh) is reported with vtkErrorMacro and the
  * request fails. An abort (AbortExecute) keeps the tree built so far (Aborted = 1).
