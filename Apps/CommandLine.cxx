@@ -45,6 +45,8 @@ original and stored faces, compression, tree height, folds, leaves and time.
                            fewer (less storage)
   --min-area-fraction F    leaf when a region's area is below F of the mesh's (default 0.05)
   --max-folds N            leaf when N folds lie above a region (default 8, at most 63)
+  --tight-symmetry         fold only clear symmetries (RMS mirror distance <= 0.35 epsilon);
+                           default: every epsilon-symmetric region of >= 10% area, as the paper
   --outdir DIR             folder for the outputs (default: current folder)
   --json                   print the result as JSON
   --quiet                  no progress on stderr

@@ -131,6 +131,7 @@ int vtkFoldingTreeBuilder::RequestData(vtkInformation*,
   options.useMaximumFolds = this->UseMaximumFolds;
   options.maximumFolds = this->MaximumFolds;
   options.requireMeaningfulSymmetry = this->RequireMeaningfulSymmetry;
+  options.requireTightSymmetry = this->RequireTightSymmetry;
   options.keepSide = this->KeepSide == FEWER_FACES ? foldingmeshes::KeepSide::FewerFaces
                                                    : foldingmeshes::KeepSide::MoreFaces;
   options.connectNearbyParts = this->ConnectNearbyParts;
@@ -205,6 +206,7 @@ void vtkFoldingTreeBuilder::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "UseMaximumFolds: " << this->UseMaximumFolds << "\n";
   os << indent << "MaximumFolds: " << this->MaximumFolds << "\n";
   os << indent << "RequireMeaningfulSymmetry: " << this->RequireMeaningfulSymmetry << "\n";
+  os << indent << "RequireTightSymmetry: " << this->RequireTightSymmetry << "\n";
   os << indent << "ConnectNearbyParts: " << this->ConnectNearbyParts << "\n";
   os << indent << "Method: " << (this->Method == PAPER ? "Paper" : "Robust") << "\n";
   os << indent << "RandomSeed: " << this->RandomSeed << "\n";

@@ -139,12 +139,26 @@ public:
   ///@{
   /**
    * Leaf when no meaningful symmetric region is found (default on; the rule is documented in
-   * Core/FoldingTreeBuilder.h: detection's SymmetryFound, S of at least MinimumFaces faces,
-   * a plane not already used on the path). Off: any non-empty S is folded.
+   * Core/FoldingTreeBuilder.h: S covers at least 10% of the region's area and has at least
+   * MinimumFaces faces, and its plane is not already used on the path). Off: any non-empty S
+   * is folded.
    */
   vtkSetMacro(RequireMeaningfulSymmetry, bool);
   vtkGetMacro(RequireMeaningfulSymmetry, bool);
   vtkBooleanMacro(RequireMeaningfulSymmetry, bool);
+  ///@}
+
+  ///@{
+  /**
+   * With RequireMeaningfulSymmetry, also require the detector's residual rule (the RMS of
+   * the mirror distances over S at most 0.35 epsilon, as vtkSymmetryPlaneDetector's
+   * SymmetryFound), so that only clear symmetries are folded (default off, as in the paper:
+   * every epsilon-symmetric region large enough is folded, which compresses more and stays
+   * within the error bound).
+   */
+  vtkSetMacro(RequireTightSymmetry, bool);
+  vtkGetMacro(RequireTightSymmetry, bool);
+  vtkBooleanMacro(RequireTightSymmetry, bool);
   ///@}
 
   ///@{
@@ -193,6 +207,7 @@ protected:
   bool UseMaximumFolds = true;
   int MaximumFolds = 8;
   bool RequireMeaningfulSymmetry = true;
+  bool RequireTightSymmetry = false;
   bool ConnectNearbyParts = true;
   int Method = ROBUST;
   int RandomSeed = 1;

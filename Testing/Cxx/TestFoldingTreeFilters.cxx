@@ -959,7 +959,8 @@ int TestFoldingTreeFilters(int argc, char* argv[])
   EXPECT(defaults->GetTolerance() == 0.02 && defaults->GetToleranceMode() == 0 &&
       defaults->GetKeepSide() == 0 && defaults->GetMinimumFaces() == 50 &&
       defaults->GetMinimumAreaFraction() == 0.05 && defaults->GetMaximumFolds() == 8 &&
-      defaults->GetRequireMeaningfulSymmetry() && defaults->GetConnectNearbyParts() &&
+      defaults->GetRequireMeaningfulSymmetry() && !defaults->GetRequireTightSymmetry() &&
+      defaults->GetConnectNearbyParts() &&
       defaults->GetMethod() == 0 && defaults->GetRandomSeed() == 1,
     "builder defaults differ from FoldingTreeOptions");
 
