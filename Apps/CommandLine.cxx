@@ -11,6 +11,9 @@ const char* const Usage = R"(usage: foldingmeshes detect MESH [options]
        foldingmeshes fold MESH [fold options]
        foldingmeshes unfold TREE.vtm [unfold options]
        foldingmeshes roundtrip MESH [fold options]
+       foldingmeshes --help | --version
+
+COMMAND --help prints this text too.
 
 MESH is a .vtp .vtk .ply .obj .stl or .off file; outputs are named after its stem.
 

@@ -218,6 +218,12 @@ vtkSmartPointer<vtkMultiBlockDataSet> ReadTree(const std::string& path, std::str
     return nullptr;
   }
   vtkNew<vtkXMLMultiBlockDataReader> reader;
+  if (!reader->CanReadFile(path.c_str()))
+  {
+    error = "cannot read '" + path +
+      "': not a VTK XML multiblock (.vtm) file (write a tree with 'foldingmeshes fold')";
+    return nullptr;
+  }
   reader->SetFileName(path.c_str());
   if (!RunFilter(reader, "reading tree", true, error))
   {
