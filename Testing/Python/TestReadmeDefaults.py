@@ -43,6 +43,9 @@ def parse_default(text):
         return True
     if text == "off":
         return False
+    vector = re.match(r"^\(([^)]*)\)$", text)
+    if vector:
+        return tuple(float(x) for x in vector.group(1).split())
     number = re.match(r"^(-?[0-9.eE+-]+)", text)
     if not number:
         raise ValueError("cannot read default '%s'" % text)
@@ -61,6 +64,18 @@ def main():
             failures += 1
             continue
         instance = getattr(foldingmeshes, class_name)()
+        # Every property the class adds to vtkPolyDataAlgorithm must be documented.
+        from vtkmodules.vtkCommonExecutionModel import vtkPolyDataAlgorithm
+        inherited = set(dir(vtkPolyDataAlgorithm))
+        members = set(dir(instance))
+        settable = sorted(m[3:] for m in members
+                          if m.startswith("Set") and m not in inherited and "Get" + m[3:] in members
+                          and not m.endswith("Connection") and not m.endswith("Data"))
+        documented = {name for name, _ in rows}
+        for name in settable:
+            if name not in documented:
+                print("FAILED: %s.%s is not documented in the README" % (class_name, name))
+                failures += 1
         for name, default in rows:
             getter = getattr(instance, "Get" + name, None)
             if getter is None:
@@ -68,7 +83,12 @@ def main():
                 failures += 1
                 continue
             actual, documented = getter(), parse_default(default)
-            ok = abs(float(actual) - float(documented)) <= 1e-12 * max(1.0, abs(documented))
+            if isinstance(documented, tuple) or isinstance(actual, tuple):
+                ok = (isinstance(documented, tuple) and isinstance(actual, tuple) and
+                      len(actual) == len(documented) and
+                      all(abs(a - d) <= 1e-12 for a, d in zip(actual, documented)))
+            else:
+                ok = abs(float(actual) - float(documented)) <= 1e-12 * max(1.0, abs(documented))
             print("%s %s.%s: README %s, C++ %s" % ("ok    " if ok else "FAILED", class_name,
                                                    name, default, actual))
             failures += 0 if ok else 1
