@@ -1,5 +1,6 @@
 #include "vtkFoldingTreeBuilder.h"
 
+#include "Core/FoldingSegmentation.h"
 #include "Core/FoldingTreeBuilder.h"
 #include "vtkFoldingTreeIO.h"
 #include "vtkTriangleMeshAdapter.h"
@@ -131,6 +132,7 @@ int vtkFoldingTreeBuilder::RequestData(vtkInformation*,
   options.useMaximumFolds = this->UseMaximumFolds;
   options.maximumFolds = this->MaximumFolds;
   options.requireMeaningfulSymmetry = this->RequireMeaningfulSymmetry;
+  options.requireTightSymmetry = this->RequireTightSymmetry;
   options.keepSide = this->KeepSide == FEWER_FACES ? foldingmeshes::KeepSide::FewerFaces
                                                    : foldingmeshes::KeepSide::MoreFaces;
   options.connectNearbyParts = this->ConnectNearbyParts;
@@ -172,33 +174,13 @@ int vtkFoldingTreeBuilder::RequestData(vtkInformation*,
     a->SetNumberOfTuples(nf);
     a->FillValue(-1);
   }
-  for (int i = 0; i < folding.NumberOfNodes(); ++i)
+  const foldingmeshes::FoldingSegmentation labels =
+    foldingmeshes::LabelFacesByLeaf(folding, soup.points, soup.triangles);
+  for (vtkIdType f = 0; f < nf && f < static_cast<vtkIdType>(labels.leaf.size()); ++f)
   {
-    const foldingmeshes::FoldingNode& node = folding.nodes[i];
-    if (node.kind == foldingmeshes::FoldingNodeKind::Folding)
-    {
-      for (int f : node.discardedOriginalFaces)
-        if (f >= 0 && f < nf && role->GetValue(f) == -1)
-        {
-          role->SetValue(f, 1);
-          depth->SetValue(f, node.depth);
-        }
-    }
-    else if (node.kind == foldingmeshes::FoldingNodeKind::Leaf)
-    {
-      const foldingmeshes::FoldingLeafMesh& m = node.mesh;
-      for (int t = 0; t < m.NumberOfFaces(); ++t)
-      {
-        const int f = m.originalFaceIds[t];
-        if (f < 0 || f >= nf)
-          continue;
-        const auto& tri = m.triangles[t];
-        const bool tear = m.tearMask[tri[0]] || m.tearMask[tri[1]] || m.tearMask[tri[2]];
-        leafId->SetValue(f, i);
-        depth->SetValue(f, node.depth);
-        role->SetValue(f, tear ? 2 : 0);
-      }
-    }
+    leafId->SetValue(f, labels.leaf[f]);
+    depth->SetValue(f, labels.depth[f]);
+    role->SetValue(f, labels.role[f]);
   }
   segmentation->GetCellData()->AddArray(leafId);
   segmentation->GetCellData()->AddArray(depth);
@@ -228,6 +210,7 @@ void vtkFoldingTreeBuilder::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "UseMaximumFolds: " << this->UseMaximumFolds << "\n";
   os << indent << "MaximumFolds: " << this->MaximumFolds << "\n";
   os << indent << "RequireMeaningfulSymmetry: " << this->RequireMeaningfulSymmetry << "\n";
+  os << indent << "RequireTightSymmetry: " << this->RequireTightSymmetry << "\n";
   os << indent << "ConnectNearbyParts: " << this->ConnectNearbyParts << "\n";
   os << indent << "Method: " << (this->Method == PAPER ? "Paper" : "Robust") << "\n";
   os << indent << "RandomSeed: " << this->RandomSeed << "\n";

@@ -47,13 +47,15 @@
  *   come from FoldingNodeIndex (see vtkFoldingTreeIO.h).
  *
  * Output 1 (vtkPolyData): the triangulated input with cell arrays "FoldingLeafId" (node index
- * of the leaf storing the face; -1 for faces removed by a fold or not stored: the tree does
- * not record which leaf face mirrors onto a removed face), "FoldingDepth" (depth of that
- * leaf, or of the folding node that removed the face), "FoldingRole" (0 kept in a leaf,
- * 1 removed by a fold - mirrored away, or collapsed by the projection onto the plane -,
- * 2 kept and touching a segmentation boundary (a vertex with a tear bit), -1 not stored:
- * an input triangle with a repeated vertex). Active scalars: FoldingLeafId (the input's point
- * arrays are kept, but none is active, so viewers colour by leaf).
+ * of the leaf that reproduces the face: the leaf storing it, or, for a face removed by a fold,
+ * the leaf holding the face whose mirror image it is - matched by the nearest mirrored
+ * centroid and followed through nested folds, see Core/FoldingSegmentation.h - so a mirrored
+ * half is coloured like the half it mirrors, as in the paper's Figures 1 and 4),
+ * "FoldingDepth" (depth of that leaf, or of the folding node that removed the face),
+ * "FoldingRole" (0 kept in a leaf, 1 removed by a fold - mirrored away, or collapsed by the
+ * projection onto the plane -, 2 kept and touching a segmentation boundary (a vertex with a
+ * tear bit), -1 not stored: an input triangle with a repeated vertex). Active scalars: FoldingLeafId
+ * (the input's point arrays are kept, but none is active, so viewers colour by leaf).
  *
  * Bad input (no points, no polygons, invalid mesh) is reported with vtkErrorMacro and the
  * request fails. An abort (AbortExecute) keeps the tree built so far (Aborted = 1).
@@ -138,12 +140,26 @@ public:
   ///@{
   /**
    * Leaf when no meaningful symmetric region is found (default on; the rule is documented in
-   * Core/FoldingTreeBuilder.h: detection's SymmetryFound, S of at least MinimumFaces faces,
-   * a plane not already used on the path). Off: any non-empty S is folded.
+   * Core/FoldingTreeBuilder.h: S covers at least 10% of the region's area and has at least
+   * MinimumFaces faces, and its plane is not already used on the path). Off: any non-empty S
+   * is folded.
    */
   vtkSetMacro(RequireMeaningfulSymmetry, bool);
   vtkGetMacro(RequireMeaningfulSymmetry, bool);
   vtkBooleanMacro(RequireMeaningfulSymmetry, bool);
+  ///@}
+
+  ///@{
+  /**
+   * With RequireMeaningfulSymmetry, also require the detector's residual rule (the RMS of
+   * the mirror distances over S at most 0.35 epsilon, as vtkSymmetryPlaneDetector's
+   * SymmetryFound), so that only clear symmetries are folded (default off, as in the paper:
+   * every epsilon-symmetric region large enough is folded, which compresses more and stays
+   * within the error bound).
+   */
+  vtkSetMacro(RequireTightSymmetry, bool);
+  vtkGetMacro(RequireTightSymmetry, bool);
+  vtkBooleanMacro(RequireTightSymmetry, bool);
   ///@}
 
   ///@{
@@ -192,6 +208,7 @@ protected:
   bool UseMaximumFolds = true;
   int MaximumFolds = 8;
   bool RequireMeaningfulSymmetry = true;
+  bool RequireTightSymmetry = false;
   bool ConnectNearbyParts = true;
   int Method = ROBUST;
   int RandomSeed = 1;

@@ -1,6 +1,7 @@
 // Baseline-image regression tests of what a person sees of a folding tree, on the bundled
-// dinosaur: the segmentation view (the input coloured by FoldingLeafId, faces mirrored away in
-// grey, as in the paper's Figures 1 and 4) and the mesh unfolded from the tree.
+// dinosaur: the segmentation view (the input coloured by FoldingLeafId; a face mirrored away
+// takes the colour of the leaf it mirrors, as in the paper's Figures 1 and 4) and the mesh
+// unfolded from the tree.
 //
 //   TestFoldingTreeImages MESH BASELINE_DIR TEMP_DIR
 #include "MeshPicture.h"
