@@ -6,7 +6,7 @@
         --work-dir DIR --mesh A.off --mesh B.ply ...
 
 dino:   fold_dino.py must exit 0, report a found plane and a positive compression, and
-        write three PNG screenshots that are not blank.
+        write four PNG screenshots that are not blank.
 folder: the meshes (and a broken .off and a text file) are copied into DIR/meshes;
         fold_folder.py must exit 1 (the broken mesh), write one CSV row per mesh file in name
         order, an error only for the broken one, and sane values for the others: faces equal
@@ -102,7 +102,7 @@ def test_dino(args):
         check(0 < stored < faces and compression > 0.0, "stored %d < faces, compression %g > 0"
               % (stored, compression))
     name = os.path.splitext(os.path.basename(args.mesh[0]))[0]
-    for suffix in ("symmetry", "segmentation", "unfolded"):
+    for suffix in ("symmetry", "tree", "segmentation", "unfolded"):
         path = os.path.join(out, "%s_%s.png" % (name, suffix))
         check(png_is_picture(path), "%s is a picture" % path)
 

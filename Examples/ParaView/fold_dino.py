@@ -3,10 +3,11 @@
     pvpython fold_dino.py [--plugin FoldingMeshes.so] [--mesh dino.off] [--output-dir DIR]
 
 Without --plugin the plugin must already be loaded (PV_PLUGIN_PATH=<its folder>). Writes
-three screenshots to the output folder: <name>_symmetry.png (the mesh coloured by
-SymmetryRegion and the mirror plane), <name>_segmentation.png (faces coloured by the leaf
-that reproduces them) and <name>_unfolded.png (the mesh rebuilt from the tree), and prints
-the results. Under a headless session run it with `xvfb-run -a pvpython ...`.
+four screenshots to the output folder: <name>_symmetry.png (the mesh coloured by
+SymmetryRegion and the mirror plane), <name>_tree.png (the folding tree: leaves and fold
+planes, one colour per node), <name>_segmentation.png (faces coloured by the leaf that
+reproduces them) and <name>_unfolded.png (the mesh rebuilt from the tree), and prints the
+results. Under a headless session run it with `xvfb-run -a pvpython ...`.
 """
 
 import argparse
@@ -111,6 +112,31 @@ def main():
     plane_display.Representation = "Surface"
     plane_display.Opacity = 0.4
     save(view, bounds, os.path.join(args.output_dir, name + "_symmetry.png"))
+    # The tree: leaves and fold planes, one colour per node (the FIELD array
+    # FoldingNodeIndex holds one value per block).
+    show_only(view, [(builder, 0)], color_by=("FIELD", "FoldingNodeIndex"))
+    nodes = GetColorTransferFunction("FoldingNodeIndex")
+    nodes.ApplyPreset("Rainbow Uniform", True)
+    node_range = OutputPort(builder, 0).GetDataInformation().GetFieldDataInformation() \
+        .GetArrayInformation("FoldingNodeIndex").GetComponentRange(0)
+    nodes.RescaleTransferFunction(node_range[0], max(node_range[1], node_range[0] + 1))
+    # Look at the kept half from its own side of the root plane (the plane quads would
+    # hide it from the other side).
+    tree_bounds = OutputPort(builder, 0).GetDataInformation().GetBounds()
+    origin = list(detector.PlaneOrigin)
+    side = sum(n * ((tree_bounds[2 * i] + tree_bounds[2 * i + 1]) / 2 - origin[i])
+               for i, n in enumerate(normal))
+    side = 1.0 if side >= 0 else -1.0
+    Render(view)
+    centre = [(bounds[2 * i] + bounds[2 * i + 1]) / 2 for i in range(3)]
+    size = max(bounds[1] - bounds[0], bounds[3] - bounds[2], bounds[5] - bounds[4])
+    view.CameraFocalPoint = centre
+    view.CameraPosition = [c + 2.2 * size * side * n - (0.8 * size if i == 1 else 0.0)
+                           for i, (c, n) in enumerate(zip(centre, normal))]
+    view.CameraViewUp = [0.0, 0.0, 1.0]
+    path = os.path.join(args.output_dir, name + "_tree.png")
+    SaveScreenshot(path, view, ImageResolution=[600, 450])
+    print("wrote %s" % path)
     show_only(view, [(builder, 1)], color_by=("CELLS", "FoldingLeafId"))
     save(view, bounds, os.path.join(args.output_dir, name + "_segmentation.png"))
     show_only(view, [(unfolder, 0)], color_by=("CELLS", "FoldingLeafId"))
