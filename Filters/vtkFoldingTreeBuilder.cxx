@@ -12,6 +12,7 @@
 #include <vtkMultiBlockDataSet.h>
 #include <vtkNew.h>
 #include <vtkObjectFactory.h>
+#include <vtkPointData.h>
 #include <vtkPolyData.h>
 
 #include <algorithm>
@@ -185,6 +186,9 @@ int vtkFoldingTreeBuilder::RequestData(vtkInformation*,
   segmentation->GetCellData()->AddArray(depth);
   segmentation->GetCellData()->AddArray(role);
   segmentation->GetCellData()->SetActiveScalars("FoldingLeafId");
+  // Viewers colour by active point scalars before cell scalars: keep the input's point
+  // scalars (e.g. COFF Colors) as plain arrays so the leaves are what is shown.
+  segmentation->GetPointData()->SetActiveScalars(nullptr);
   this->UpdateProgress(1.0);
   return 1;
 }
