@@ -13,6 +13,7 @@
 #include <vtkMultiProcessController.h>
 #include <vtkNew.h>
 #include <vtkObjectFactory.h>
+#include <vtkPointData.h>
 #include <vtkPolyData.h>
 
 #include <algorithm>
@@ -245,6 +246,9 @@ int vtkFoldingTreeBuilder::RequestWholeData(vtkInformation*,
   segmentation->GetCellData()->AddArray(depth);
   segmentation->GetCellData()->AddArray(role);
   segmentation->GetCellData()->SetActiveScalars("FoldingLeafId");
+  // Viewers colour by active point scalars before cell scalars: keep the input's point
+  // scalars (e.g. COFF Colors) as plain arrays so the leaves are what is shown.
+  segmentation->GetPointData()->SetActiveScalars(nullptr);
   this->UpdateProgress(1.0);
   return 1;
 }

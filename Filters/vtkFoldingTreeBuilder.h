@@ -52,7 +52,8 @@
  * leaf, or of the folding node that removed the face), "FoldingRole" (0 kept in a leaf,
  * 1 removed by a fold - mirrored away, or collapsed by the projection onto the plane -,
  * 2 kept and touching a segmentation boundary (a vertex with a tear bit), -1 not stored:
- * an input triangle with a repeated vertex). Active scalars: FoldingLeafId.
+ * an input triangle with a repeated vertex). Active scalars: FoldingLeafId (the input's point
+ * arrays are kept, but none is active, so viewers colour by leaf).
  *
  * Bad input (no points, no polygons, invalid mesh) is reported with vtkErrorMacro and the
  * request fails. An abort (AbortExecute) keeps the tree built so far (Aborted = 1).
