@@ -1,5 +1,6 @@
 #include "vtkFoldingMeshesParallel.h"
 
+#include <vtkAlgorithm.h>
 #include <vtkAppendPolyData.h>
 #include <vtkCommunicator.h>
 #include <vtkDataObject.h>
@@ -103,8 +104,9 @@ vtkSmartPointer<vtkMultiBlockDataSet> MergeTreePieces(
 }
 
 //------------------------------------------------------------------------------
-ParallelRun::ParallelRun(vtkMultiProcessController* controller)
+ParallelRun::ParallelRun(vtkAlgorithm* algorithm, vtkMultiProcessController* controller)
   : Controller(controller)
+  , NumberOfPorts(algorithm->GetNumberOfInputPorts())
 {
   this->Parallel = controller && controller->GetNumberOfProcesses() > 1;
   this->Root = !this->Parallel || controller->GetLocalProcessId() == 0;
@@ -113,20 +115,8 @@ ParallelRun::ParallelRun(vtkMultiProcessController* controller)
 ParallelRun::~ParallelRun() = default;
 
 //------------------------------------------------------------------------------
-vtkInformationVector** ParallelRun::WholeInput(vtkSmartPointer<vtkDataObject> whole)
+vtkSmartPointer<vtkDataObject> ParallelRun::GatherPort(vtkDataObject* piece)
 {
-  this->Whole = vtkSmartPointer<vtkInformationVector>::New();
-  vtkNew<vtkInformation> info;
-  info->Set(vtkDataObject::DATA_OBJECT(), whole);
-  this->Whole->Append(info);
-  this->WholeVector[0] = this->Whole;
-  return this->WholeVector;
-}
-
-//------------------------------------------------------------------------------
-vtkInformationVector** ParallelRun::GatherPolyData(vtkInformationVector** inputVector)
-{
-  vtkPolyData* piece = vtkPolyData::GetData(inputVector[0], 0);
   std::vector<vtkSmartPointer<vtkDataObject>> received;
   if (!this->Controller->Gather(piece, received, 0))
   {
@@ -135,30 +125,52 @@ vtkInformationVector** ParallelRun::GatherPolyData(vtkInformationVector** inputV
   }
   if (!this->Root)
     return nullptr;
-  std::vector<vtkSmartPointer<vtkPolyData>> pieces;
+  if (received.size() > 0)
+    received[0] = piece; // rank 0's own data, as it is (e.g. block names)
+  vtkDataObject* first = nullptr;
   for (const auto& object : received)
-    pieces.push_back(vtkPolyData::SafeDownCast(object));
-  return this->WholeInput(AppendPieces(pieces));
+    if (object && !first)
+      first = object;
+  if (vtkPolyData::SafeDownCast(first))
+  {
+    std::vector<vtkSmartPointer<vtkPolyData>> pieces;
+    for (const auto& object : received)
+      pieces.push_back(vtkPolyData::SafeDownCast(object));
+    return AppendPieces(pieces);
+  }
+  if (vtkMultiBlockDataSet::SafeDownCast(first))
+  {
+    std::vector<vtkSmartPointer<vtkMultiBlockDataSet>> pieces;
+    for (const auto& object : received)
+      pieces.push_back(vtkMultiBlockDataSet::SafeDownCast(object));
+    return MergeTreePieces(pieces);
+  }
+  return piece;
 }
 
 //------------------------------------------------------------------------------
-vtkInformationVector** ParallelRun::GatherTree(vtkInformationVector** inputVector)
+vtkInformationVector** ParallelRun::Gather(vtkInformationVector** inputVector)
 {
-  vtkMultiBlockDataSet* piece = vtkMultiBlockDataSet::GetData(inputVector[0], 0);
-  std::vector<vtkSmartPointer<vtkDataObject>> received;
-  if (!this->Controller->Gather(piece, received, 0))
+  this->Whole.clear();
+  this->WholeVectors.clear();
+  for (int port = 0; port < this->NumberOfPorts; ++port)
   {
-    this->GatherFailed = true;
-    return nullptr;
+    auto vector = vtkSmartPointer<vtkInformationVector>::New();
+    // Optional ports without a connection have none on every rank: nothing to gather.
+    if (inputVector[port]->GetNumberOfInformationObjects() > 0)
+    {
+      vtkSmartPointer<vtkDataObject> whole =
+        this->GatherPort(vtkDataObject::GetData(inputVector[port], 0));
+      vtkNew<vtkInformation> info;
+      info->Set(vtkDataObject::DATA_OBJECT(), whole);
+      vector->Append(info);
+    }
+    this->Whole.push_back(vector);
+    this->WholeVectors.push_back(vector);
   }
-  if (!this->Root)
+  if (!this->Root || this->GatherFailed)
     return nullptr;
-  // Rank 0's own piece keeps its block names even if marshalling were to lose them.
-  std::vector<vtkSmartPointer<vtkMultiBlockDataSet>> pieces;
-  pieces.push_back(piece);
-  for (size_t rank = 1; rank < received.size(); ++rank)
-    pieces.push_back(vtkMultiBlockDataSet::SafeDownCast(received[rank]));
-  return this->WholeInput(MergeTreePieces(pieces));
+  return this->WholeVectors.data();
 }
 
 //------------------------------------------------------------------------------

@@ -5,11 +5,13 @@
 // broadcast so every rank's getters agree; rank 0 holds the outputs, the other ranks have
 // empty outputs. The filters use it at the start and end of RequestData only:
 //
-//   foldingmeshes::ParallelRun parallel(this->Controller);
+//   foldingmeshes::ParallelRun parallel(this, this->Controller);
 //   if (!parallel.IsParallel())
-//     return this->Execute(request, inputVector, outputVector);  // serial: unchanged
-//   vtkInformationVector** whole = parallel.GatherPolyData(inputVector);  // collective
-//   int status = parallel.IsRoot() ? this->Execute(request, whole, outputVector) : 1;
+//     return this->RequestWholeData(request, inputVector, outputVector);  // serial: unchanged
+//   vtkInformationVector** whole = parallel.Gather(inputVector);  // collective
+//   int status = 1;
+//   if (parallel.IsRoot())
+//     status = whole ? this->RequestWholeData(request, whole, outputVector) : 0;
 //   std::vector<double> results = ...;  // packed on rank 0
 //   parallel.Broadcast(status, results, outputVector);  // collective
 #ifndef vtkFoldingMeshesParallel_h
@@ -19,6 +21,7 @@
 
 #include <vector>
 
+class vtkAlgorithm;
 class vtkDataObject;
 class vtkInformationVector;
 class vtkMultiBlockDataSet;
@@ -37,8 +40,9 @@ vtkSmartPointer<vtkPolyData> AppendPieces(const std::vector<vtkSmartPointer<vtkP
 /**
  * Merges multiblock pieces of the same tree structure (as a parallel .vtm reader gives:
  * every rank has the structure and block names, each dataset lives on one rank) into one:
- * a copy of the first piece with blocks, whose dataset is missing, taken from the later
- * pieces. Pieces without blocks (a rank where the builder produced nothing) are skipped.
+ * a copy of the first piece in which every block without a dataset takes the one at the
+ * same place in a later piece. Pieces without blocks (a rank where the builder produced
+ * nothing) are skipped.
  * Never null.
  */
 vtkSmartPointer<vtkMultiBlockDataSet> MergeTreePieces(
@@ -46,13 +50,13 @@ vtkSmartPointer<vtkMultiBlockDataSet> MergeTreePieces(
 
 /**
  * One execution of a filter in a possibly parallel run. Parallel means `controller` is
- * non-null and has more than one process; then the Gather* and Broadcast calls are
- * collective (every rank must make them, in the same order).
+ * non-null and has more than one process; then Gather and Broadcast are collective (every
+ * rank must call them, in the same order).
  */
 class ParallelRun
 {
 public:
-  explicit ParallelRun(vtkMultiProcessController* controller);
+  ParallelRun(vtkAlgorithm* algorithm, vtkMultiProcessController* controller);
   ~ParallelRun();
   ParallelRun(const ParallelRun&) = delete;
   ParallelRun& operator=(const ParallelRun&) = delete;
@@ -62,15 +66,13 @@ public:
   bool IsRoot() const { return this->Root; }
 
   /**
-   * Collective: sends the poly data of every rank's input port 0 to rank 0. Returns, on
-   * rank 0, an input vector array (one port) holding the appended pieces (AppendPieces),
-   * to pass to the serial RequestData; nullptr on the other ranks, or if communication
-   * failed (the status given to Broadcast then becomes 0).
+   * Collective: sends the data of every input port (its first connection) of every rank to
+   * rank 0. Returns, on rank 0, input vectors (one per port) holding the whole data -- poly
+   * data pieces appended (AppendPieces), folding tree pieces merged (MergeTreePieces), other
+   * data as rank 0 has it -- to pass to the serial RequestData; nullptr on the other ranks,
+   * or if communication failed (the status given to Broadcast then becomes 0).
    */
-  vtkInformationVector** GatherPolyData(vtkInformationVector** inputVector);
-
-  /// The same for a folding tree (vtkMultiBlockDataSet) on input port 0 (MergeTreePieces).
-  vtkInformationVector** GatherTree(vtkInformationVector** inputVector);
+  vtkInformationVector** Gather(vtkInformationVector** inputVector);
 
   /**
    * Collective: `status` and `values` of rank 0 replace those of the other ranks, whose
@@ -80,14 +82,15 @@ public:
   void Broadcast(int& status, std::vector<double>& values, vtkInformationVector* outputVector);
 
 private:
-  vtkInformationVector** WholeInput(vtkSmartPointer<vtkDataObject> whole);
+  vtkSmartPointer<vtkDataObject> GatherPort(vtkDataObject* piece);
 
   vtkMultiProcessController* Controller = nullptr;
+  int NumberOfPorts = 0;
   bool Parallel = false;
   bool Root = true;
   bool GatherFailed = false;
-  vtkSmartPointer<vtkInformationVector> Whole;
-  vtkInformationVector* WholeVector[1] = { nullptr };
+  std::vector<vtkSmartPointer<vtkInformationVector>> Whole;
+  std::vector<vtkInformationVector*> WholeVectors;
 };
 }
 

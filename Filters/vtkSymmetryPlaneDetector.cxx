@@ -124,13 +124,13 @@ int vtkSymmetryPlaneDetector::RequestData(vtkInformation* request,
   vtkInformationVector** inputVector,
   vtkInformationVector* outputVector)
 {
-  foldingmeshes::ParallelRun parallel(this->Controller);
+  foldingmeshes::ParallelRun parallel(this, this->Controller);
   if (!parallel.IsParallel())
   {
     return this->RequestWholeData(request, inputVector, outputVector);
   }
   // Parallel: once, on rank 0, on the mesh gathered there; its results on every rank.
-  vtkInformationVector** whole = parallel.GatherPolyData(inputVector);
+  vtkInformationVector** whole = parallel.Gather(inputVector);
   int status = 1;
   std::vector<double> results;
   if (parallel.IsRoot())
