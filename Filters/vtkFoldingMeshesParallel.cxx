@@ -4,6 +4,7 @@
 #include <vtkAppendPolyData.h>
 #include <vtkCommunicator.h>
 #include <vtkDataObject.h>
+#include <vtkExecutive.h>
 #include <vtkFieldData.h>
 #include <vtkInformation.h>
 #include <vtkInformationVector.h>
@@ -11,6 +12,7 @@
 #include <vtkMultiProcessController.h>
 #include <vtkNew.h>
 #include <vtkPolyData.h>
+#include <vtkStreamingDemandDrivenPipeline.h>
 
 #include <algorithm>
 
@@ -108,7 +110,16 @@ ParallelRun::ParallelRun(vtkAlgorithm* algorithm, vtkMultiProcessController* con
   : Controller(controller)
   , NumberOfPorts(algorithm->GetNumberOfInputPorts())
 {
-  this->Parallel = controller && controller->GetNumberOfProcesses() > 1;
+  // Distributed only if the pipeline asks for pieces (as ParaView does on every rank): a
+  // plain Update() on one rank, or on each rank of an MPI script, asks for the whole data.
+  vtkInformation* request = algorithm->GetNumberOfOutputPorts() > 0
+    ? algorithm->GetExecutive()->GetOutputInformation(0)
+    : nullptr;
+  const int pieces =
+    request && request->Has(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES())
+    ? request->Get(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES())
+    : 1;
+  this->Parallel = controller && controller->GetNumberOfProcesses() > 1 && pieces > 1;
   this->Root = !this->Parallel || controller->GetLocalProcessId() == 0;
 }
 

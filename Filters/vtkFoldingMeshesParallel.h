@@ -50,8 +50,10 @@ vtkSmartPointer<vtkMultiBlockDataSet> MergeTreePieces(
 
 /**
  * One execution of a filter in a possibly parallel run. Parallel means `controller` is
- * non-null and has more than one process; then Gather and Broadcast are collective (every
- * rank must call them, in the same order).
+ * non-null and has more than one process, and the request asks `algorithm` for one of
+ * several pieces (UPDATE_NUMBER_OF_PIECES > 1: ParaView does so on every rank; a plain
+ * Update() asks for the whole data, which then needs no gathering). Then Gather and
+ * Broadcast are collective (every rank must call them, in the same order).
  */
 class ParallelRun
 {

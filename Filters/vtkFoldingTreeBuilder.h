@@ -59,10 +59,11 @@
  * request fails. An abort (AbortExecute) keeps the tree built so far (Aborted = 1).
  *
  * Parallel runs (pvbatch or pvserver under MPI): when Controller (by default the global
- * controller) has more than one process, the input pieces of all ranks are gathered on
- * rank 0 and the filter runs once there, so the tree does not depend on how the
- * data is distributed. Rank 0 holds the outputs; the outputs of the other ranks are empty
- * (an empty input piece there is not an error); the result getters give the same values
+ * controller) has more than one process and the pipeline asks for one of several pieces
+ * (ParaView does; a plain Update() asks for the whole data, so nothing is gathered), the input
+ * pieces of all ranks are gathered on rank 0 and the filter runs once there, so the tree does not
+ * depend on how the data is distributed. Rank 0 holds the outputs; the outputs of the other ranks
+ * are empty (an empty input piece there is not an error); the result getters give the same values
  * on every rank.
  */
 #ifndef vtkFoldingTreeBuilder_h

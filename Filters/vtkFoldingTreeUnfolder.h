@@ -32,11 +32,12 @@
  * wrong array sizes) is reported with vtkErrorMacro and the request fails.
  *
  * Parallel runs (pvbatch or pvserver under MPI): when Controller (by default the global
- * controller) has more than one process, the tree pieces of all ranks are merged on rank 0
- * (the builder's tree lives on rank 0; a .vtm read in parallel spreads its blocks over the
- * ranks) and the filter runs once there, so the unfolded mesh does not depend on how the
- * data is distributed. Rank 0 holds the output; the outputs of the other ranks are empty
- * (an empty tree there is not an error); the result getters give the same values on
+ * controller) has more than one process and the pipeline asks for one of several pieces
+ * (ParaView does; a plain Update() asks for the whole data, so nothing is gathered), the tree
+ * pieces of all ranks are merged on rank 0 (the builder's tree lives on rank 0; a .vtm read in
+ * parallel spreads its blocks over the ranks) and the filter runs once there, so the unfolded mesh
+ * does not depend on how the data is distributed. Rank 0 holds the output; the outputs of the other
+ * ranks are empty (an empty tree there is not an error); the result getters give the same values on
  * every rank.
  */
 #ifndef vtkFoldingTreeUnfolder_h
