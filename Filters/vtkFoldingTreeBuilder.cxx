@@ -2,6 +2,7 @@
 
 #include "Core/FoldingSegmentation.h"
 #include "Core/FoldingTreeBuilder.h"
+#include "vtkFoldingMeshesParallel.h"
 #include "vtkFoldingTreeIO.h"
 #include "vtkTriangleMeshAdapter.h"
 
@@ -10,6 +11,7 @@
 #include <vtkInformationVector.h>
 #include <vtkIntArray.h>
 #include <vtkMultiBlockDataSet.h>
+#include <vtkMultiProcessController.h>
 #include <vtkNew.h>
 #include <vtkObjectFactory.h>
 #include <vtkPointData.h>
@@ -20,15 +22,20 @@
 #include <limits>
 
 vtkStandardNewMacro(vtkFoldingTreeBuilder);
+vtkCxxSetObjectMacro(vtkFoldingTreeBuilder, Controller, vtkMultiProcessController);
 
 //------------------------------------------------------------------------------
 vtkFoldingTreeBuilder::vtkFoldingTreeBuilder()
 {
   this->SetNumberOfInputPorts(1);
   this->SetNumberOfOutputPorts(2);
+  this->SetController(vtkMultiProcessController::GetGlobalController());
 }
 
-vtkFoldingTreeBuilder::~vtkFoldingTreeBuilder() = default;
+vtkFoldingTreeBuilder::~vtkFoldingTreeBuilder()
+{
+  this->SetController(nullptr);
+}
 
 //------------------------------------------------------------------------------
 int vtkFoldingTreeBuilder::FillInputPortInformation(int, vtkInformation* info)
@@ -49,7 +56,42 @@ int vtkFoldingTreeBuilder::FillOutputPortInformation(int port, vtkInformation* i
 }
 
 //------------------------------------------------------------------------------
-int vtkFoldingTreeBuilder::RequestData(vtkInformation*,
+int vtkFoldingTreeBuilder::RequestData(vtkInformation* request,
+  vtkInformationVector** inputVector,
+  vtkInformationVector* outputVector)
+{
+  foldingmeshes::ParallelRun parallel(this, this->Controller);
+  if (!parallel.IsParallel())
+  {
+    return this->RequestWholeData(request, inputVector, outputVector);
+  }
+  // Parallel: once, on rank 0, on the mesh gathered there; its results on every rank.
+  vtkInformationVector** whole = parallel.Gather(inputVector);
+  int status = 1;
+  std::vector<double> results;
+  if (parallel.IsRoot())
+  {
+    status = whole ? this->RequestWholeData(request, whole, outputVector) : 0;
+    results = { this->ToleranceLength,
+      static_cast<double>(this->OriginalFaces),
+      static_cast<double>(this->StoredFaces),
+      this->Compression,
+      static_cast<double>(this->TreeHeight) };
+  }
+  parallel.Broadcast(status, results, outputVector);
+  if (!parallel.IsRoot() && results.size() == 5)
+  {
+    this->ToleranceLength = results[0];
+    this->OriginalFaces = static_cast<int>(results[1]);
+    this->StoredFaces = static_cast<int>(results[2]);
+    this->Compression = results[3];
+    this->TreeHeight = static_cast<int>(results[4]);
+  }
+  return status;
+}
+
+//------------------------------------------------------------------------------
+int vtkFoldingTreeBuilder::RequestWholeData(vtkInformation*,
   vtkInformationVector** inputVector,
   vtkInformationVector* outputVector)
 {
@@ -197,6 +239,7 @@ int vtkFoldingTreeBuilder::RequestData(vtkInformation*,
 void vtkFoldingTreeBuilder::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
+  os << indent << "Controller: " << this->Controller << "\n";
   os << indent << "Tolerance: " << this->Tolerance << "\n";
   os << indent
      << "ToleranceMode: " << (this->ToleranceMode == ABSOLUTE ? "Absolute" : "RelativeToDiagonal")

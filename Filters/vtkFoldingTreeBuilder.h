@@ -59,12 +59,22 @@
  *
  * Bad input (no points, no polygons, invalid mesh) is reported with vtkErrorMacro and the
  * request fails. An abort (AbortExecute) keeps the tree built so far (Aborted = 1).
+ *
+ * Parallel runs (pvbatch or pvserver under MPI): when Controller (by default the global
+ * controller) has more than one process and the pipeline asks for one of several pieces
+ * (ParaView does; a plain Update() asks for the whole data, so nothing is gathered), the input
+ * pieces of all ranks are gathered on rank 0 and the filter runs once there, so the tree does not
+ * depend on how the data is distributed. Rank 0 holds the outputs; the outputs of the other ranks
+ * are empty (an empty input piece there is not an error); the result getters give the same values
+ * on every rank.
  */
 #ifndef vtkFoldingTreeBuilder_h
 #define vtkFoldingTreeBuilder_h
 
 #include "FoldingMeshesFiltersModule.h" // for export macro
 #include "vtkPolyDataAlgorithm.h"
+
+class vtkMultiProcessController;
 
 class FOLDINGMESHESFILTERS_EXPORT vtkFoldingTreeBuilder : public vtkPolyDataAlgorithm
 {
@@ -190,6 +200,16 @@ public:
   vtkGetMacro(TreeHeight, int);
   ///@}
 
+  ///@{
+  /**
+   * Controller of a parallel run (default: the global controller, if any). With more than
+   * one process the filter gathers its input on rank 0 (see above); nullptr makes every
+   * process run on its own piece.
+   */
+  virtual void SetController(vtkMultiProcessController*);
+  vtkGetObjectMacro(Controller, vtkMultiProcessController);
+  ///@}
+
 protected:
   vtkFoldingTreeBuilder();
   ~vtkFoldingTreeBuilder() override;
@@ -197,6 +217,8 @@ protected:
   int FillInputPortInformation(int port, vtkInformation* info) override;
   int FillOutputPortInformation(int port, vtkInformation* info) override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+  /** RequestData of a serial run, or of rank 0 on the gathered input. */
+  int RequestWholeData(vtkInformation*, vtkInformationVector**, vtkInformationVector*);
 
   double Tolerance = 0.02;
   int ToleranceMode = RELATIVE_TO_DIAGONAL;
@@ -218,6 +240,8 @@ protected:
   int StoredFaces = 0;
   double Compression = 0.0;
   int TreeHeight = 0;
+
+  vtkMultiProcessController* Controller = nullptr;
 
 private:
   vtkFoldingTreeBuilder(const vtkFoldingTreeBuilder&) = delete;

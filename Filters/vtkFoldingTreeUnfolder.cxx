@@ -1,6 +1,7 @@
 #include "vtkFoldingTreeUnfolder.h"
 
 #include "Core/FoldingTreeUnfolder.h"
+#include "vtkFoldingMeshesParallel.h"
 #include "vtkFoldingTreeIO.h"
 
 #include <vtkCellArray.h>
@@ -13,6 +14,7 @@
 #include <vtkInformationVector.h>
 #include <vtkIntArray.h>
 #include <vtkMultiBlockDataSet.h>
+#include <vtkMultiProcessController.h>
 #include <vtkNew.h>
 #include <vtkObjectFactory.h>
 #include <vtkPointData.h>
@@ -28,6 +30,7 @@
 #include <vector>
 
 vtkStandardNewMacro(vtkFoldingTreeUnfolder);
+vtkCxxSetObjectMacro(vtkFoldingTreeUnfolder, Controller, vtkMultiProcessController);
 
 namespace
 {
@@ -170,9 +173,13 @@ vtkFoldingTreeUnfolder::vtkFoldingTreeUnfolder()
 {
   this->SetNumberOfInputPorts(1);
   this->SetNumberOfOutputPorts(1);
+  this->SetController(vtkMultiProcessController::GetGlobalController());
 }
 
-vtkFoldingTreeUnfolder::~vtkFoldingTreeUnfolder() = default;
+vtkFoldingTreeUnfolder::~vtkFoldingTreeUnfolder()
+{
+  this->SetController(nullptr);
+}
 
 //------------------------------------------------------------------------------
 int vtkFoldingTreeUnfolder::FillInputPortInformation(int, vtkInformation* info)
@@ -182,7 +189,40 @@ int vtkFoldingTreeUnfolder::FillInputPortInformation(int, vtkInformation* info)
 }
 
 //------------------------------------------------------------------------------
-int vtkFoldingTreeUnfolder::RequestData(vtkInformation*,
+int vtkFoldingTreeUnfolder::RequestData(vtkInformation* request,
+  vtkInformationVector** inputVector,
+  vtkInformationVector* outputVector)
+{
+  foldingmeshes::ParallelRun parallel(this, this->Controller);
+  if (!parallel.IsParallel())
+  {
+    return this->RequestWholeData(request, inputVector, outputVector);
+  }
+  // Parallel: once, on rank 0, on the tree merged there; its results on every rank.
+  vtkInformationVector** whole = parallel.Gather(inputVector);
+  int status = 1;
+  std::vector<double> results;
+  if (parallel.IsRoot())
+  {
+    status = whole ? this->RequestWholeData(request, whole, outputVector) : 0;
+    results = { static_cast<double>(this->OpenGapCount),
+      this->OpenGapLength,
+      static_cast<double>(this->StitchedVertices),
+      static_cast<double>(this->OpenEdges) };
+  }
+  parallel.Broadcast(status, results, outputVector);
+  if (!parallel.IsRoot() && results.size() == 4)
+  {
+    this->OpenGapCount = static_cast<int>(results[0]);
+    this->OpenGapLength = results[1];
+    this->StitchedVertices = static_cast<int>(results[2]);
+    this->OpenEdges = static_cast<int>(results[3]);
+  }
+  return status;
+}
+
+//------------------------------------------------------------------------------
+int vtkFoldingTreeUnfolder::RequestWholeData(vtkInformation*,
   vtkInformationVector** inputVector,
   vtkInformationVector* outputVector)
 {
@@ -388,6 +428,7 @@ int vtkFoldingTreeUnfolder::RequestData(vtkInformation*,
 void vtkFoldingTreeUnfolder::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
+  os << indent << "Controller: " << this->Controller << "\n";
   os << indent << "Stitch: " << this->Stitch << "\n";
   os << indent << "StitchToleranceScale: " << this->StitchToleranceScale << "\n";
   os << indent << "Zipper: " << this->Zipper << "\n";

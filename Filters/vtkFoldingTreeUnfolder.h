@@ -30,12 +30,23 @@
  *
  * A malformed tree (missing plane metadata, wrong node kinds, a block that is not polydata,
  * wrong array sizes) is reported with vtkErrorMacro and the request fails.
+ *
+ * Parallel runs (pvbatch or pvserver under MPI): when Controller (by default the global
+ * controller) has more than one process and the pipeline asks for one of several pieces
+ * (ParaView does; a plain Update() asks for the whole data, so nothing is gathered), the tree
+ * pieces of all ranks are merged on rank 0 (the builder's tree lives on rank 0; a .vtm read in
+ * parallel spreads its blocks over the ranks) and the filter runs once there, so the unfolded mesh
+ * does not depend on how the data is distributed. Rank 0 holds the output; the outputs of the other
+ * ranks are empty (an empty tree there is not an error); the result getters give the same values on
+ * every rank.
  */
 #ifndef vtkFoldingTreeUnfolder_h
 #define vtkFoldingTreeUnfolder_h
 
 #include "FoldingMeshesFiltersModule.h" // for export macro
 #include "vtkPolyDataAlgorithm.h"
+
+class vtkMultiProcessController;
 
 class FOLDINGMESHESFILTERS_EXPORT vtkFoldingTreeUnfolder : public vtkPolyDataAlgorithm
 {
@@ -91,12 +102,24 @@ public:
   vtkGetMacro(OpenEdges, int);
   ///@}
 
+  ///@{
+  /**
+   * Controller of a parallel run (default: the global controller, if any). With more than
+   * one process the filter gathers its input on rank 0 (see above); nullptr makes every
+   * process run on its own piece.
+   */
+  virtual void SetController(vtkMultiProcessController*);
+  vtkGetObjectMacro(Controller, vtkMultiProcessController);
+  ///@}
+
 protected:
   vtkFoldingTreeUnfolder();
   ~vtkFoldingTreeUnfolder() override;
 
   int FillInputPortInformation(int port, vtkInformation* info) override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+  /** RequestData of a serial run, or of rank 0 on the gathered input. */
+  int RequestWholeData(vtkInformation*, vtkInformationVector**, vtkInformationVector*);
 
   bool Stitch = true;
   double StitchToleranceScale = 1.0;
@@ -109,6 +132,8 @@ protected:
   double OpenGapLength = 0.0;
   int StitchedVertices = 0;
   int OpenEdges = 0;
+
+  vtkMultiProcessController* Controller = nullptr;
 
 private:
   vtkFoldingTreeUnfolder(const vtkFoldingTreeUnfolder&) = delete;
