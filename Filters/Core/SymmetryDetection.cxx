@@ -529,7 +529,14 @@ SymmetryResult DetectSymmetryOnFullMesh(const PreparedMesh& mesh, const Symmetry
         return result;
       }
       if (settled)
+      {
+        if (!report(0.7))
+        {
+          result.aborted = true;
+          return result;
+        }
         break;
+      }
     }
     // Finish the best three distinct probes that could still win.
     std::stable_sort(probes.begin(),
@@ -549,6 +556,11 @@ SymmetryResult DetectSymmetryOnFullMesh(const PreparedMesh& mesh, const Symmetry
     {
       Run& run = runs[chosen[i]];
       refiner.Fine(run, options.maximumIterations);
+      if (!report(0.7 + 0.3 * (static_cast<double>(i) + 0.5) / chosen.size()))
+      {
+        result.aborted = true;
+        return result;
+      }
       refiner.Polish(run, options.maximumIterations);
       refiner.Score(run, options.epsilon);
       trace("final", chosen[i], run);
