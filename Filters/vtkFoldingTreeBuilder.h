@@ -22,10 +22,12 @@
  * - every node block is named after its node index i (preorder, as in the core tree):
  *   "Leaf i", "Fold i (depth d)", "Segmentation i (depth d)".
  * - a leaf is a vtkPolyData (the leaf mesh: double points, triangles) carrying every point
- *   and cell array of the triangulated input (values copied by original id, active
+ *   and cell array of the triangulated input (values copied by original id, active point
  *   attributes kept), point arrays "OriginalPointId" (vtkIdType), "TearMask" and
  *   "PlaneMask" (vtkTypeUInt64Array, bit d = tree level d, see Core/FoldingTree.h),
- *   "Projected" (unsigned char 0/1), cell array "OriginalCellId" (vtkIdType), and field data
+ *   "Projected" (unsigned char 0/1), cell arrays "OriginalCellId" (vtkIdType) and
+ *   "FoldingLeafId" (int, the leaf's node index on every face, the active cell scalars, so
+ *   viewers colour the tree by leaf like the segmentation output), and field data
  *   FoldingNodeKind = 0, FoldingNodeIndex, FoldingNodeDepth, FoldingEpsilon,
  *   FoldingFoldsAbove, FoldingRegionFaces, FoldingRegionArea, FoldingRegionOriginalFaces,
  *   SymmetricAreaFraction, DetectionRun, LeafReason (int, Core's LeafReason enum),
