@@ -11,6 +11,9 @@ const char* const Usage = R"(usage: foldingmeshes detect MESH [options]
        foldingmeshes fold MESH [fold options]
        foldingmeshes unfold TREE.vtm [unfold options]
        foldingmeshes roundtrip MESH [fold options]
+       foldingmeshes --help | --version
+
+COMMAND --help prints this text too.
 
 MESH is a .vtp .vtk .ply .obj .stl or .off file; outputs are named after its stem.
 
@@ -36,7 +39,7 @@ connected region that has it (Folding meshes, SGP 2006, section 3).
 fold: folds the mesh into a folding tree (section 4.1-4.2) and writes, in --outdir,
 STEM_tree.vtm (the tree, XML multiblock; its pieces go to the folder STEM_tree/),
 STEM_segmentation.vtp (the mesh with cell arrays FoldingLeafId, FoldingDepth, FoldingRole)
-and STEM_segmentation.png (coloured by FoldingLeafId; grey: faces mirrored away); prints
+and STEM_segmentation.png (coloured by FoldingLeafId: a mirrored face like its leaf); prints
 original and stored faces, compression, tree height, folds, leaves and time.
   --tolerance F            root epsilon as a fraction of the diagonal (default 0.02), halved
                            below every fold
@@ -45,6 +48,8 @@ original and stored faces, compression, tree height, folds, leaves and time.
                            fewer (less storage)
   --min-area-fraction F    leaf when a region's area is below F of the mesh's (default 0.05)
   --max-folds N            leaf when N folds lie above a region (default 8, at most 63)
+  --tight-symmetry         fold only clear symmetries (RMS mirror distance <= 0.35 epsilon);
+                           default: every epsilon-symmetric region of >= 10% area, as the paper
   --outdir DIR             folder for the outputs (default: current folder)
   --json                   print the result as JSON
   --quiet                  no progress on stderr

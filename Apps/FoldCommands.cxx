@@ -45,6 +45,7 @@ struct FoldSettings
   int keep = vtkFoldingTreeBuilder::MORE_FACES;
   double minAreaFraction = 0.05;
   int maxFolds = 8;
+  bool tightSymmetry = false;
 };
 
 double ParseNumber(const std::string& what,
@@ -110,6 +111,8 @@ FoldSettings ParseFoldArguments(int argc, char* argv[])
         throw std::runtime_error("--max-folds needs an integer in [0, 63], got '" + v + "'");
       f.maxFolds = static_cast<int>(n);
     }
+    else if (arg == "--tight-symmetry")
+      f.tightSymmetry = true;
     else if (arg == "--outdir")
       f.outdir = value("--outdir");
     else if (arg == "--json")
@@ -169,6 +172,7 @@ void ConfigureBuilder(vtkFoldingTreeBuilder* builder, const FoldSettings& f)
   builder->SetKeepSide(f.keep);
   builder->SetMinimumAreaFraction(f.minAreaFraction);
   builder->SetMaximumFolds(f.maxFolds);
+  builder->SetRequireTightSymmetry(f.tightSymmetry);
 }
 
 /// A number of the tree's "Tree" information block (block 1), or `fallback`.
@@ -214,6 +218,12 @@ vtkSmartPointer<vtkMultiBlockDataSet> ReadTree(const std::string& path, std::str
     return nullptr;
   }
   vtkNew<vtkXMLMultiBlockDataReader> reader;
+  if (!reader->CanReadFile(path.c_str()))
+  {
+    error = "cannot read '" + path +
+      "': not a VTK XML multiblock (.vtm) file (write a tree with 'foldingmeshes fold')";
+    return nullptr;
+  }
   reader->SetFileName(path.c_str());
   if (!RunFilter(reader, "reading tree", true, error))
   {

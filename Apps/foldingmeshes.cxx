@@ -4,6 +4,7 @@
 //   foldingmeshes fold MESH [options]        folding tree (.vtm) + segmentation + summary
 //   foldingmeshes unfold TREE.vtm [options]  mesh reconstructed from a folding tree
 //   foldingmeshes roundtrip MESH [options]   fold, save, read back, unfold, Hausdorff check
+//   foldingmeshes --help | --version
 //
 // Exit codes: 0 success, 1 bad command line, 2 unreadable or invalid input, 3 cannot write,
 // 4 roundtrip: Hausdorff distance above the root epsilon.
@@ -32,6 +33,11 @@ int main(int argc, char* argv[])
   if (command == "--help" || command == "-h" || command == "help")
   {
     std::cout << Usage;
+    return 0;
+  }
+  if (command == "--version")
+  {
+    std::cout << "foldingmeshes " << FOLDINGMESHES_VERSION << "\n";
     return 0;
   }
   try

@@ -1,6 +1,8 @@
 #include "vtkFoldingTreeBuilder.h"
 
+#include "Core/FoldingSegmentation.h"
 #include "Core/FoldingTreeBuilder.h"
+#include "vtkFoldingMeshesParallel.h"
 #include "vtkFoldingTreeIO.h"
 #include "vtkTriangleMeshAdapter.h"
 
@@ -9,8 +11,10 @@
 #include <vtkInformationVector.h>
 #include <vtkIntArray.h>
 #include <vtkMultiBlockDataSet.h>
+#include <vtkMultiProcessController.h>
 #include <vtkNew.h>
 #include <vtkObjectFactory.h>
+#include <vtkPointData.h>
 #include <vtkPolyData.h>
 
 #include <algorithm>
@@ -18,15 +22,20 @@
 #include <limits>
 
 vtkStandardNewMacro(vtkFoldingTreeBuilder);
+vtkCxxSetObjectMacro(vtkFoldingTreeBuilder, Controller, vtkMultiProcessController);
 
 //------------------------------------------------------------------------------
 vtkFoldingTreeBuilder::vtkFoldingTreeBuilder()
 {
   this->SetNumberOfInputPorts(1);
   this->SetNumberOfOutputPorts(2);
+  this->SetController(vtkMultiProcessController::GetGlobalController());
 }
 
-vtkFoldingTreeBuilder::~vtkFoldingTreeBuilder() = default;
+vtkFoldingTreeBuilder::~vtkFoldingTreeBuilder()
+{
+  this->SetController(nullptr);
+}
 
 //------------------------------------------------------------------------------
 int vtkFoldingTreeBuilder::FillInputPortInformation(int, vtkInformation* info)
@@ -47,7 +56,42 @@ int vtkFoldingTreeBuilder::FillOutputPortInformation(int port, vtkInformation* i
 }
 
 //------------------------------------------------------------------------------
-int vtkFoldingTreeBuilder::RequestData(vtkInformation*,
+int vtkFoldingTreeBuilder::RequestData(vtkInformation* request,
+  vtkInformationVector** inputVector,
+  vtkInformationVector* outputVector)
+{
+  foldingmeshes::ParallelRun parallel(this, this->Controller);
+  if (!parallel.IsParallel())
+  {
+    return this->RequestWholeData(request, inputVector, outputVector);
+  }
+  // Parallel: once, on rank 0, on the mesh gathered there; its results on every rank.
+  vtkInformationVector** whole = parallel.Gather(inputVector);
+  int status = 1;
+  std::vector<double> results;
+  if (parallel.IsRoot())
+  {
+    status = whole ? this->RequestWholeData(request, whole, outputVector) : 0;
+    results = { this->ToleranceLength,
+      static_cast<double>(this->OriginalFaces),
+      static_cast<double>(this->StoredFaces),
+      this->Compression,
+      static_cast<double>(this->TreeHeight) };
+  }
+  parallel.Broadcast(status, results, outputVector);
+  if (!parallel.IsRoot() && results.size() == 5)
+  {
+    this->ToleranceLength = results[0];
+    this->OriginalFaces = static_cast<int>(results[1]);
+    this->StoredFaces = static_cast<int>(results[2]);
+    this->Compression = results[3];
+    this->TreeHeight = static_cast<int>(results[4]);
+  }
+  return status;
+}
+
+//------------------------------------------------------------------------------
+int vtkFoldingTreeBuilder::RequestWholeData(vtkInformation*,
   vtkInformationVector** inputVector,
   vtkInformationVector* outputVector)
 {
@@ -130,6 +174,7 @@ int vtkFoldingTreeBuilder::RequestData(vtkInformation*,
   options.useMaximumFolds = this->UseMaximumFolds;
   options.maximumFolds = this->MaximumFolds;
   options.requireMeaningfulSymmetry = this->RequireMeaningfulSymmetry;
+  options.requireTightSymmetry = this->RequireTightSymmetry;
   options.keepSide = this->KeepSide == FEWER_FACES ? foldingmeshes::KeepSide::FewerFaces
                                                    : foldingmeshes::KeepSide::MoreFaces;
   options.connectNearbyParts = this->ConnectNearbyParts;
@@ -171,38 +216,21 @@ int vtkFoldingTreeBuilder::RequestData(vtkInformation*,
     a->SetNumberOfTuples(nf);
     a->FillValue(-1);
   }
-  for (int i = 0; i < folding.NumberOfNodes(); ++i)
+  const foldingmeshes::FoldingSegmentation labels =
+    foldingmeshes::LabelFacesByLeaf(folding, soup.points, soup.triangles);
+  for (vtkIdType f = 0; f < nf && f < static_cast<vtkIdType>(labels.leaf.size()); ++f)
   {
-    const foldingmeshes::FoldingNode& node = folding.nodes[i];
-    if (node.kind == foldingmeshes::FoldingNodeKind::Folding)
-    {
-      for (int f : node.discardedOriginalFaces)
-        if (f >= 0 && f < nf && role->GetValue(f) == -1)
-        {
-          role->SetValue(f, 1);
-          depth->SetValue(f, node.depth);
-        }
-    }
-    else if (node.kind == foldingmeshes::FoldingNodeKind::Leaf)
-    {
-      const foldingmeshes::FoldingLeafMesh& m = node.mesh;
-      for (int t = 0; t < m.NumberOfFaces(); ++t)
-      {
-        const int f = m.originalFaceIds[t];
-        if (f < 0 || f >= nf)
-          continue;
-        const auto& tri = m.triangles[t];
-        const bool tear = m.tearMask[tri[0]] || m.tearMask[tri[1]] || m.tearMask[tri[2]];
-        leafId->SetValue(f, i);
-        depth->SetValue(f, node.depth);
-        role->SetValue(f, tear ? 2 : 0);
-      }
-    }
+    leafId->SetValue(f, labels.leaf[f]);
+    depth->SetValue(f, labels.depth[f]);
+    role->SetValue(f, labels.role[f]);
   }
   segmentation->GetCellData()->AddArray(leafId);
   segmentation->GetCellData()->AddArray(depth);
   segmentation->GetCellData()->AddArray(role);
   segmentation->GetCellData()->SetActiveScalars("FoldingLeafId");
+  // Viewers colour by active point scalars before cell scalars: keep the input's point
+  // scalars (e.g. COFF Colors) as plain arrays so the leaves are what is shown.
+  segmentation->GetPointData()->SetActiveScalars(nullptr);
   this->UpdateProgress(1.0);
   return 1;
 }
@@ -211,6 +239,7 @@ int vtkFoldingTreeBuilder::RequestData(vtkInformation*,
 void vtkFoldingTreeBuilder::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
+  os << indent << "Controller: " << this->Controller << "\n";
   os << indent << "Tolerance: " << this->Tolerance << "\n";
   os << indent
      << "ToleranceMode: " << (this->ToleranceMode == ABSOLUTE ? "Absolute" : "RelativeToDiagonal")
@@ -224,6 +253,7 @@ void vtkFoldingTreeBuilder::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "UseMaximumFolds: " << this->UseMaximumFolds << "\n";
   os << indent << "MaximumFolds: " << this->MaximumFolds << "\n";
   os << indent << "RequireMeaningfulSymmetry: " << this->RequireMeaningfulSymmetry << "\n";
+  os << indent << "RequireTightSymmetry: " << this->RequireTightSymmetry << "\n";
   os << indent << "ConnectNearbyParts: " << this->ConnectNearbyParts << "\n";
   os << indent << "Method: " << (this->Method == PAPER ? "Paper" : "Robust") << "\n";
   os << indent << "RandomSeed: " << this->RandomSeed << "\n";

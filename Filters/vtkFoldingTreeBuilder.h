@@ -22,12 +22,14 @@
  * - every node block is named after its node index i (preorder, as in the core tree):
  *   "Leaf i", "Fold i (depth d)", "Segmentation i (depth d)".
  * - a leaf is a vtkPolyData (the leaf mesh: double points, triangles) carrying every point
- *   and cell array of the triangulated input (values copied by original id, active
+ *   and cell array of the triangulated input (values copied by original id, active point
  *   attributes kept), point arrays "OriginalPointId" (vtkIdType), "TearMask" and
  *   "PlaneMask" (vtkTypeUInt64Array, bit d = tree level d, see Core/FoldingTree.h),
  *   "Projected" (unsigned char 0/1), "ErrorBudget" (double: how far the unfolder may still
- *   move the point without breaking the root epsilon bound; optional on reading), cell array
- *   "OriginalCellId" (vtkIdType), and field data
+ *   move the point without breaking the root epsilon bound; optional on reading), cell arrays
+ *   "OriginalCellId" (vtkIdType) and "FoldingLeafId" (int, the leaf's node index on every
+ *   face, the active cell scalars, so viewers colour the tree by leaf like the segmentation
+ *   output), and field data
  *   FoldingNodeKind = 0, FoldingNodeIndex, FoldingNodeDepth, FoldingEpsilon,
  *   FoldingFoldsAbove, FoldingRegionFaces, FoldingRegionArea, FoldingRegionOriginalFaces,
  *   SymmetricAreaFraction, DetectionRun, LeafReason (int, Core's LeafReason enum),
@@ -49,21 +51,34 @@
  *   come from FoldingNodeIndex (see vtkFoldingTreeIO.h).
  *
  * Output 1 (vtkPolyData): the triangulated input with cell arrays "FoldingLeafId" (node index
- * of the leaf storing the face; -1 for faces removed by a fold or not stored: the tree does
- * not record which leaf face mirrors onto a removed face), "FoldingDepth" (depth of that
- * leaf, or of the folding node that removed the face), "FoldingRole" (0 kept in a leaf,
- * 1 removed by a fold - mirrored away, or collapsed by the projection onto the plane -,
- * 2 kept and touching a segmentation boundary (a vertex with a tear bit), -1 not stored:
- * an input triangle with a repeated vertex). Active scalars: FoldingLeafId.
+ * of the leaf that reproduces the face: the leaf storing it, or, for a face removed by a fold,
+ * the leaf holding the face whose mirror image it is - matched by the nearest mirrored
+ * centroid and followed through nested folds, see Core/FoldingSegmentation.h - so a mirrored
+ * half is coloured like the half it mirrors, as in the paper's Figures 1 and 4),
+ * "FoldingDepth" (depth of that leaf, or of the folding node that removed the face),
+ * "FoldingRole" (0 kept in a leaf, 1 removed by a fold - mirrored away, or collapsed by the
+ * projection onto the plane -, 2 kept and touching a segmentation boundary (a vertex with a
+ * tear bit), -1 not stored: an input triangle with a repeated vertex). Active scalars: FoldingLeafId
+ * (the input's point arrays are kept, but none is active, so viewers colour by leaf).
  *
  * Bad input (no points, no polygons, invalid mesh) is reported with vtkErrorMacro and the
  * request fails. An abort (AbortExecute) keeps the tree built so far (Aborted = 1).
+ *
+ * Parallel runs (pvbatch or pvserver under MPI): when Controller (by default the global
+ * controller) has more than one process and the pipeline asks for one of several pieces
+ * (ParaView does; a plain Update() asks for the whole data, so nothing is gathered), the input
+ * pieces of all ranks are gathered on rank 0 and the filter runs once there, so the tree does not
+ * depend on how the data is distributed. Rank 0 holds the outputs; the outputs of the other ranks
+ * are empty (an empty input piece there is not an error); the result getters give the same values
+ * on every rank.
  */
 #ifndef vtkFoldingTreeBuilder_h
 #define vtkFoldingTreeBuilder_h
 
 #include "FoldingMeshesFiltersModule.h" // for export macro
 #include "vtkPolyDataAlgorithm.h"
+
+class vtkMultiProcessController;
 
 class FOLDINGMESHESFILTERS_EXPORT vtkFoldingTreeBuilder : public vtkPolyDataAlgorithm
 {
@@ -139,12 +154,26 @@ public:
   ///@{
   /**
    * Leaf when no meaningful symmetric region is found (default on; the rule is documented in
-   * Core/FoldingTreeBuilder.h: detection's SymmetryFound, S of at least MinimumFaces faces,
-   * a plane not already used on the path). Off: any non-empty S is folded.
+   * Core/FoldingTreeBuilder.h: S covers at least 10% of the region's area and has at least
+   * MinimumFaces faces, and its plane is not already used on the path). Off: any non-empty S
+   * is folded.
    */
   vtkSetMacro(RequireMeaningfulSymmetry, bool);
   vtkGetMacro(RequireMeaningfulSymmetry, bool);
   vtkBooleanMacro(RequireMeaningfulSymmetry, bool);
+  ///@}
+
+  ///@{
+  /**
+   * With RequireMeaningfulSymmetry, also require the detector's residual rule (the RMS of
+   * the mirror distances over S at most 0.35 epsilon, as vtkSymmetryPlaneDetector's
+   * SymmetryFound), so that only clear symmetries are folded (default off, as in the paper:
+   * every epsilon-symmetric region large enough is folded, which compresses more and stays
+   * within the error bound).
+   */
+  vtkSetMacro(RequireTightSymmetry, bool);
+  vtkGetMacro(RequireTightSymmetry, bool);
+  vtkBooleanMacro(RequireTightSymmetry, bool);
   ///@}
 
   ///@{
@@ -175,6 +204,16 @@ public:
   vtkGetMacro(TreeHeight, int);
   ///@}
 
+  ///@{
+  /**
+   * Controller of a parallel run (default: the global controller, if any). With more than
+   * one process the filter gathers its input on rank 0 (see above); nullptr makes every
+   * process run on its own piece.
+   */
+  virtual void SetController(vtkMultiProcessController*);
+  vtkGetObjectMacro(Controller, vtkMultiProcessController);
+  ///@}
+
 protected:
   vtkFoldingTreeBuilder();
   ~vtkFoldingTreeBuilder() override;
@@ -182,6 +221,8 @@ protected:
   int FillInputPortInformation(int port, vtkInformation* info) override;
   int FillOutputPortInformation(int port, vtkInformation* info) override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+  /** RequestData of a serial run, or of rank 0 on the gathered input. */
+  int RequestWholeData(vtkInformation*, vtkInformationVector**, vtkInformationVector*);
 
   double Tolerance = 0.02;
   int ToleranceMode = RELATIVE_TO_DIAGONAL;
@@ -193,6 +234,7 @@ protected:
   bool UseMaximumFolds = true;
   int MaximumFolds = 8;
   bool RequireMeaningfulSymmetry = true;
+  bool RequireTightSymmetry = false;
   bool ConnectNearbyParts = true;
   int Method = ROBUST;
   int RandomSeed = 1;
@@ -202,6 +244,8 @@ protected:
   int StoredFaces = 0;
   double Compression = 0.0;
   int TreeHeight = 0;
+
+  vtkMultiProcessController* Controller = nullptr;
 
 private:
   vtkFoldingTreeBuilder(const vtkFoldingTreeBuilder&) = delete;

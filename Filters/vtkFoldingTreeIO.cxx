@@ -308,6 +308,14 @@ struct Writer
     for (int f = 0; f < m.NumberOfFaces(); ++f)
       cellIds->SetValue(f, m.originalFaceIds[f]);
     leaf->GetCellData()->AddArray(cellIds);
+    // The leaf's node index on every face, active: viewers colour the tree by leaf, with the
+    // same numbers as the segmentation view's FoldingLeafId (the unfolder does not carry it).
+    vtkNew<vtkIntArray> leafIds;
+    leafIds->SetName("FoldingLeafId");
+    leafIds->SetNumberOfTuples(m.NumberOfFaces());
+    leafIds->FillValue(index);
+    leaf->GetCellData()->AddArray(leafIds);
+    leaf->GetCellData()->SetActiveScalars("FoldingLeafId");
 
     vtkFieldData* fd = leaf->GetFieldData();
     AddNodeMetadata(fd, node, index);

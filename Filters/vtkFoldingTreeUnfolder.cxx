@@ -2,6 +2,7 @@
 
 #include "Core/FoldingTreeUnfolder.h"
 #include "Core/SurfaceDistance.h"
+#include "vtkFoldingMeshesParallel.h"
 #include "vtkFoldingTreeIO.h"
 #include "vtkTriangleMeshAdapter.h"
 
@@ -15,6 +16,7 @@
 #include <vtkInformationVector.h>
 #include <vtkIntArray.h>
 #include <vtkMultiBlockDataSet.h>
+#include <vtkMultiProcessController.h>
 #include <vtkNew.h>
 #include <vtkObjectFactory.h>
 #include <vtkPointData.h>
@@ -31,6 +33,7 @@
 #include <vector>
 
 vtkStandardNewMacro(vtkFoldingTreeUnfolder);
+vtkCxxSetObjectMacro(vtkFoldingTreeUnfolder, Controller, vtkMultiProcessController);
 
 namespace
 {
@@ -48,7 +51,7 @@ void AddValue(vtkFieldData* fd, const char* name, double value)
 bool IsTreeArray(const char* name, bool points)
 {
   static const char* const pointNames[] = {
-    "OriginalPointId", "TearMask", "PlaneMask", "Projected", "ErrorBudget"
+    "OriginalPointId", "TearMask", "PlaneMask", "Projected"
   };
   if (points)
   {
@@ -173,9 +176,13 @@ vtkFoldingTreeUnfolder::vtkFoldingTreeUnfolder()
 {
   this->SetNumberOfInputPorts(2);
   this->SetNumberOfOutputPorts(1);
+  this->SetController(vtkMultiProcessController::GetGlobalController());
 }
 
-vtkFoldingTreeUnfolder::~vtkFoldingTreeUnfolder() = default;
+vtkFoldingTreeUnfolder::~vtkFoldingTreeUnfolder()
+{
+  this->SetController(nullptr);
+}
 
 //------------------------------------------------------------------------------
 int vtkFoldingTreeUnfolder::FillInputPortInformation(int port, vtkInformation* info)
@@ -254,15 +261,50 @@ bool vtkFoldingTreeUnfolder::MeasureToOriginal(vtkPolyData* original, vtkPolyDat
 }
 
 //------------------------------------------------------------------------------
-int vtkFoldingTreeUnfolder::RequestData(vtkInformation*,
+int vtkFoldingTreeUnfolder::RequestData(vtkInformation* request,
+  vtkInformationVector** inputVector,
+  vtkInformationVector* outputVector)
+{
+  foldingmeshes::ParallelRun parallel(this, this->Controller);
+  if (!parallel.IsParallel())
+  {
+    return this->RequestWholeData(request, inputVector, outputVector);
+  }
+  // Parallel: once, on rank 0, on the tree merged there; its results on every rank.
+  vtkInformationVector** whole = parallel.Gather(inputVector);
+  int status = 1;
+  std::vector<double> results;
+  if (parallel.IsRoot())
+  {
+    status = whole ? this->RequestWholeData(request, whole, outputVector) : 0;
+    results = { static_cast<double>(this->OpenGapCount),
+      this->OpenGapLength,
+      static_cast<double>(this->StitchedVertices),
+      static_cast<double>(this->OpenEdges),
+      this->HausdorffToOriginal };
+  }
+  parallel.Broadcast(status, results, outputVector);
+  if (!parallel.IsRoot() && results.size() == 5)
+  {
+    this->HausdorffToOriginal = results[4];
+    this->OpenGapCount = static_cast<int>(results[0]);
+    this->OpenGapLength = results[1];
+    this->StitchedVertices = static_cast<int>(results[2]);
+    this->OpenEdges = static_cast<int>(results[3]);
+  }
+  return status;
+}
+
+//------------------------------------------------------------------------------
+int vtkFoldingTreeUnfolder::RequestWholeData(vtkInformation*,
   vtkInformationVector** inputVector,
   vtkInformationVector* outputVector)
 {
   vtkMultiBlockDataSet* input = vtkMultiBlockDataSet::GetData(inputVector[0], 0);
   vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
   this->OpenGapCount = this->StitchedVertices = this->OpenEdges = 0;
-  this->HausdorffToOriginal = -1.0;
   this->OpenGapLength = 0.0;
+  this->HausdorffToOriginal = -1.0;
   if (!input || !output)
   {
     vtkErrorMacro("Missing input multiblock or output poly data.");
@@ -284,9 +326,6 @@ int vtkFoldingTreeUnfolder::RequestData(vtkInformation*,
   options.fillSeamGaps = this->FillSeamGaps;
   options.smoothingIterations = this->SmoothingIterations;
   options.smoothingWeight = this->SmoothingWeight;
-  options.respectErrorBudget = this->RespectErrorBudget;
-  options.weldBoundaries = this->WeldBoundaries;
-  options.weldToleranceScale = this->WeldToleranceScale;
   options.progress = [this](double p)
   {
     this->UpdateProgress(0.9 * p);
@@ -470,15 +509,13 @@ int vtkFoldingTreeUnfolder::RequestData(vtkInformation*,
 void vtkFoldingTreeUnfolder::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
+  os << indent << "Controller: " << this->Controller << "\n";
   os << indent << "Stitch: " << this->Stitch << "\n";
   os << indent << "StitchToleranceScale: " << this->StitchToleranceScale << "\n";
   os << indent << "Zipper: " << this->Zipper << "\n";
   os << indent << "FillSeamGaps: " << this->FillSeamGaps << "\n";
   os << indent << "SmoothingIterations: " << this->SmoothingIterations << "\n";
   os << indent << "SmoothingWeight: " << this->SmoothingWeight << "\n";
-  os << indent << "RespectErrorBudget: " << this->RespectErrorBudget << "\n";
-  os << indent << "WeldBoundaries: " << this->WeldBoundaries << "\n";
-  os << indent << "WeldToleranceScale: " << this->WeldToleranceScale << "\n";
   os << indent << "OpenGapCount: " << this->OpenGapCount << "\n";
   os << indent << "OpenGapLength: " << this->OpenGapLength << "\n";
   os << indent << "StitchedVertices: " << this->StitchedVertices << "\n";

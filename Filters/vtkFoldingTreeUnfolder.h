@@ -30,6 +30,10 @@
  *   "WeldedVertices" (merged or zipped by the final boundary weld), "BudgetRejectedClusters"
  *   (stitches not made: no position within the error budgets) and the tree's "RootEpsilon"
  *   and "Diagonal".
+ * Every vertex move (fold-line merges, stitching, zipper, smoothing and a final weld of the
+ * open boundaries of different copies within half the root epsilon) is bounded by the error
+ * budgets the builder stores in the leaves ("ErrorBudget"; UnfoldOptions in
+ * Core/FoldingTreeUnfolder.h), so the output stays within the root epsilon of the input.
  *
  * Optional input port 1, "Original" (vtkPolyData: the mesh the tree was built from; polygons
  * and strips are triangulated, other cells ignored): when connected, the output also gets
@@ -46,6 +50,15 @@
  *
  * A malformed tree (missing plane metadata, wrong node kinds, a block that is not polydata,
  * wrong array sizes) is reported with vtkErrorMacro and the request fails.
+ *
+ * Parallel runs (pvbatch or pvserver under MPI): when Controller (by default the global
+ * controller) has more than one process and the pipeline asks for one of several pieces
+ * (ParaView does; a plain Update() asks for the whole data, so nothing is gathered), the tree
+ * pieces of all ranks are merged on rank 0 (the builder's tree lives on rank 0; a .vtm read in
+ * parallel spreads its blocks over the ranks) and the filter runs once there, so the unfolded mesh
+ * does not depend on how the data is distributed. Rank 0 holds the output; the outputs of the other
+ * ranks are empty (an empty tree there is not an error); the result getters give the same values on
+ * every rank.
  */
 #ifndef vtkFoldingTreeUnfolder_h
 #define vtkFoldingTreeUnfolder_h
@@ -53,8 +66,9 @@
 #include "FoldingMeshesFiltersModule.h" // for export macro
 #include "vtkPolyDataAlgorithm.h"
 
-class vtkPolyData;
 class vtkAlgorithmOutput;
+class vtkMultiProcessController;
+class vtkPolyData;
 
 class FOLDINGMESHESFILTERS_EXPORT vtkFoldingTreeUnfolder : public vtkPolyDataAlgorithm
 {
@@ -94,29 +108,6 @@ public:
   ///@}
 
   ///@{
-  /**
-   * Bound every vertex move by the error budgets the builder stored in the leaves
-   * ("ErrorBudget"), so the output stays within the root epsilon of the input (default on).
-   */
-  vtkSetMacro(RespectErrorBudget, bool);
-  vtkGetMacro(RespectErrorBudget, bool);
-  vtkBooleanMacro(RespectErrorBudget, bool);
-  ///@}
-
-  ///@{
-  /**
-   * Finally stitch the open boundaries of different copies once more (default on), within
-   * WeldToleranceScale times the root epsilon (default 0.5, range 0..10): closes seams whose
-   * vertices carry no tear flag, e.g. copies of seams across approximate folds.
-   */
-  vtkSetMacro(WeldBoundaries, bool);
-  vtkGetMacro(WeldBoundaries, bool);
-  vtkBooleanMacro(WeldBoundaries, bool);
-  vtkSetClampMacro(WeldToleranceScale, double, 0.0, 10.0);
-  vtkGetMacro(WeldToleranceScale, double);
-  ///@}
-
-  ///@{
   /** Constrained Laplacian smoothing of the seams: iterations (default 3, range 0..1000). */
   vtkSetClampMacro(SmoothingIterations, int, 0, 1000);
   vtkGetMacro(SmoothingIterations, int);
@@ -144,12 +135,24 @@ public:
   vtkGetMacro(HausdorffToOriginal, double);
   ///@}
 
+  ///@{
+  /**
+   * Controller of a parallel run (default: the global controller, if any). With more than
+   * one process the filter gathers its input on rank 0 (see above); nullptr makes every
+   * process run on its own piece.
+   */
+  virtual void SetController(vtkMultiProcessController*);
+  vtkGetObjectMacro(Controller, vtkMultiProcessController);
+  ///@}
+
 protected:
   vtkFoldingTreeUnfolder();
   ~vtkFoldingTreeUnfolder() override;
 
   int FillInputPortInformation(int port, vtkInformation* info) override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+  /** RequestData of a serial run, or of rank 0 on the gathered input. */
+  int RequestWholeData(vtkInformation*, vtkInformationVector**, vtkInformationVector*);
   /// Adds DistanceToOriginal and the *ToOriginal field data; false on an unusable original.
   bool MeasureToOriginal(vtkPolyData* original, vtkPolyData* output);
 
@@ -159,15 +162,14 @@ protected:
   bool FillSeamGaps = true;
   int SmoothingIterations = 3;
   double SmoothingWeight = 0.5;
-  bool RespectErrorBudget = true;
-  bool WeldBoundaries = true;
-  double WeldToleranceScale = 0.5;
 
   int OpenGapCount = 0;
   double OpenGapLength = 0.0;
   int StitchedVertices = 0;
   int OpenEdges = 0;
   double HausdorffToOriginal = -1.0;
+
+  vtkMultiProcessController* Controller = nullptr;
 
 private:
   vtkFoldingTreeUnfolder(const vtkFoldingTreeUnfolder&) = delete;

@@ -2,6 +2,7 @@
 
 #include "Core/MeshPreparation.h"
 #include "Core/SymmetryDetection.h"
+#include "vtkFoldingMeshesParallel.h"
 #include "vtkTriangleMeshAdapter.h"
 
 #include <vtkCellArray.h>
@@ -11,6 +12,7 @@
 #include <vtkInformation.h>
 #include <vtkInformationVector.h>
 #include <vtkIntArray.h>
+#include <vtkMultiProcessController.h>
 #include <vtkNew.h>
 #include <vtkObjectFactory.h>
 #include <vtkPointData.h>
@@ -21,6 +23,7 @@
 #include <limits>
 
 vtkStandardNewMacro(vtkSymmetryPlaneDetector);
+vtkCxxSetObjectMacro(vtkSymmetryPlaneDetector, Controller, vtkMultiProcessController);
 
 namespace
 {
@@ -101,9 +104,13 @@ vtkSymmetryPlaneDetector::vtkSymmetryPlaneDetector()
 {
   this->SetNumberOfInputPorts(1);
   this->SetNumberOfOutputPorts(2);
+  this->SetController(vtkMultiProcessController::GetGlobalController());
 }
 
-vtkSymmetryPlaneDetector::~vtkSymmetryPlaneDetector() = default;
+vtkSymmetryPlaneDetector::~vtkSymmetryPlaneDetector()
+{
+  this->SetController(nullptr);
+}
 
 //------------------------------------------------------------------------------
 int vtkSymmetryPlaneDetector::FillInputPortInformation(int, vtkInformation* info)
@@ -113,7 +120,54 @@ int vtkSymmetryPlaneDetector::FillInputPortInformation(int, vtkInformation* info
 }
 
 //------------------------------------------------------------------------------
-int vtkSymmetryPlaneDetector::RequestData(vtkInformation*,
+int vtkSymmetryPlaneDetector::RequestData(vtkInformation* request,
+  vtkInformationVector** inputVector,
+  vtkInformationVector* outputVector)
+{
+  foldingmeshes::ParallelRun parallel(this, this->Controller);
+  if (!parallel.IsParallel())
+  {
+    return this->RequestWholeData(request, inputVector, outputVector);
+  }
+  // Parallel: once, on rank 0, on the mesh gathered there; its results on every rank.
+  vtkInformationVector** whole = parallel.Gather(inputVector);
+  int status = 1;
+  std::vector<double> results;
+  if (parallel.IsRoot())
+  {
+    status = whole ? this->RequestWholeData(request, whole, outputVector) : 0;
+    results = { this->PlaneOrigin[0],
+      this->PlaneOrigin[1],
+      this->PlaneOrigin[2],
+      this->PlaneNormal[0],
+      this->PlaneNormal[1],
+      this->PlaneNormal[2],
+      this->SymmetricAreaFraction,
+      this->SymmetryFound ? 1.0 : 0.0,
+      static_cast<double>(this->CoarseIterations),
+      static_cast<double>(this->FineIterations),
+      this->ToleranceLength };
+  }
+  parallel.Broadcast(status, results, outputVector);
+  if (!parallel.IsRoot() && results.size() == 11)
+  {
+    this->PlaneOrigin[0] = results[0];
+    this->PlaneOrigin[1] = results[1];
+    this->PlaneOrigin[2] = results[2];
+    this->PlaneNormal[0] = results[3];
+    this->PlaneNormal[1] = results[4];
+    this->PlaneNormal[2] = results[5];
+    this->SymmetricAreaFraction = results[6];
+    this->SymmetryFound = results[7] != 0.0;
+    this->CoarseIterations = static_cast<int>(results[8]);
+    this->FineIterations = static_cast<int>(results[9]);
+    this->ToleranceLength = results[10];
+  }
+  return status;
+}
+
+//------------------------------------------------------------------------------
+int vtkSymmetryPlaneDetector::RequestWholeData(vtkInformation*,
   vtkInformationVector** inputVector,
   vtkInformationVector* outputVector)
 {
@@ -289,6 +343,7 @@ int vtkSymmetryPlaneDetector::RequestData(vtkInformation*,
 void vtkSymmetryPlaneDetector::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
+  os << indent << "Controller: " << this->Controller << "\n";
   os << indent << "Tolerance: " << this->Tolerance << "\n";
   os << indent
      << "ToleranceMode: " << (this->ToleranceMode == ABSOLUTE ? "Absolute" : "RelativeToDiagonal")

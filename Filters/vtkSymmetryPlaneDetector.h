@@ -59,12 +59,22 @@
  *
  * Bad input (no points, no polygons, NaN/Inf coordinates, zero total area)
  * is reported with vtkErrorMacro and the request fails.
+ *
+ * Parallel runs (pvbatch or pvserver under MPI): when Controller (by default the global
+ * controller) has more than one process and the pipeline asks for one of several pieces
+ * (ParaView does; a plain Update() asks for the whole data, so nothing is gathered), the input
+ * pieces of all ranks are gathered on rank 0 and the filter runs once there, so the plane and the
+ * region do not depend on how the data is distributed. Rank 0 holds the outputs; the outputs of the
+ * other ranks are empty (an empty input piece there is not an error); the result getters give the
+ * same values on every rank.
  */
 #ifndef vtkSymmetryPlaneDetector_h
 #define vtkSymmetryPlaneDetector_h
 
 #include "FoldingMeshesFiltersModule.h" // for export macro
 #include "vtkPolyDataAlgorithm.h"
+
+class vtkMultiProcessController;
 
 #include <memory> // for std::unique_ptr
 
@@ -167,12 +177,24 @@ public:
   vtkGetMacro(ToleranceLength, double);
   ///@}
 
+  ///@{
+  /**
+   * Controller of a parallel run (default: the global controller, if any). With more than
+   * one process the filter gathers its input on rank 0 (see above); nullptr makes every
+   * process run on its own piece.
+   */
+  virtual void SetController(vtkMultiProcessController*);
+  vtkGetObjectMacro(Controller, vtkMultiProcessController);
+  ///@}
+
 protected:
   vtkSymmetryPlaneDetector();
   ~vtkSymmetryPlaneDetector() override;
 
   int FillInputPortInformation(int port, vtkInformation* info) override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+  /** RequestData of a serial run, or of rank 0 on the gathered input. */
+  int RequestWholeData(vtkInformation*, vtkInformationVector**, vtkInformationVector*);
 
   double Tolerance = 0.02;
   int ToleranceMode = RELATIVE_TO_DIAGONAL;
@@ -194,6 +216,8 @@ protected:
   int CoarseIterations = 0;
   int FineIterations = 0;
   double ToleranceLength = 0.0;
+
+  vtkMultiProcessController* Controller = nullptr;
 
 private:
   vtkSymmetryPlaneDetector(const vtkSymmetryPlaneDetector&) = delete;

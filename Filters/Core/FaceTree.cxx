@@ -91,10 +91,31 @@ double FaceTree::BoxDistance2(const Vec3& lo, const Vec3& hi, const Vec3& p)
   return d.squaredNorm();
 }
 
+bool FaceTree::TryFace(
+  const Vec3& p, const Vec3& normal, double cosLimit, int f, double& best2, Hit& hit) const
+{
+  const Triangle& t = Mesh.triangles[f];
+  const ClosestPointOnTriangle cp =
+    ClosestPointTriangle(p, Mesh.points[t[0]], Mesh.points[t[1]], Mesh.points[t[2]]);
+  if (cp.squaredDistance > best2 ||
+    (cp.squaredDistance == best2 && hit.face >= 0 && f > hit.face))
+    return false;
+  const Vec3 n = cp.barycentric[0] * Mesh.vertexNormals[t[0]] +
+    cp.barycentric[1] * Mesh.vertexNormals[t[1]] + cp.barycentric[2] * Mesh.vertexNormals[t[2]];
+  const double len = n.norm();
+  if (!(len > 0.0 && n.dot(normal) >= cosLimit * len))
+    return false;
+  best2 = cp.squaredDistance;
+  hit.face = f;
+  hit.point = cp.point;
+  return true;
+}
+
 FaceTree::Hit FaceTree::ClosestCompatibleFace(const Vec3& p,
   const Vec3& normal,
   double cosLimit,
-  double maxDistance) const
+  double maxDistance,
+  int hintFace) const
 {
   Hit hit;
   if (this->Nodes.empty())
@@ -105,6 +126,10 @@ FaceTree::Hit FaceTree::ClosestCompatibleFace(const Vec3& p,
   const double cosL = std::clamp(cosLimit, -1.0, 1.0);
   const double sinL = std::sqrt(1.0 - cosL * cosL);
   double best2 = maxDistance * maxDistance;
+  // A compatible hint bounds the search from the start; the minimum (lowest id on ties) is
+  // the same with or without it.
+  if (hintFace >= 0 && hintFace < Mesh.NumberOfFaces() && !Mesh.faceDegenerate[hintFace])
+    this->TryFace(p, normal, cosLimit, hintFace, best2, hit);
   int stack[128];
   int top = 0;
   stack[top++] = 0;
@@ -124,25 +149,7 @@ FaceTree::Hit FaceTree::ClosestCompatibleFace(const Vec3& p,
     if (node.count > 0)
     {
       for (int k = node.first; k < node.first + node.count; ++k)
-      {
-        const int f = this->Order[k];
-        const Triangle& t = Mesh.triangles[f];
-        const ClosestPointOnTriangle cp =
-          ClosestPointTriangle(p, Mesh.points[t[0]], Mesh.points[t[1]], Mesh.points[t[2]]);
-        if (cp.squaredDistance > best2 ||
-          (cp.squaredDistance == best2 && hit.face >= 0 && f > hit.face))
-          continue;
-        const Vec3 n = cp.barycentric[0] * Mesh.vertexNormals[t[0]] +
-          cp.barycentric[1] * Mesh.vertexNormals[t[1]] +
-          cp.barycentric[2] * Mesh.vertexNormals[t[2]];
-        const double len = n.norm();
-        if (len > 0.0 && n.dot(normal) >= cosLimit * len)
-        {
-          best2 = cp.squaredDistance;
-          hit.face = f;
-          hit.point = cp.point;
-        }
-      }
+        this->TryFace(p, normal, cosLimit, this->Order[k], best2, hit);
       continue;
     }
     // Nearer child last, so it is popped first.

@@ -39,12 +39,14 @@ public:
    * The face closest to p among the faces compatible with the unit vector `normal`: the
    * normal interpolated (barycentrically, from the vertex normals) at the face's closest
    * point makes a cosine >= cosLimit with `normal`. Only faces closer than maxDistance
-   * count; none gives face -1 and an infinite distance.
+   * count; none gives face -1 and an infinite distance. `hintFace` (e.g. the answer of a
+   * previous query for a nearby point) only speeds the search up: the result is the same.
    */
   Hit ClosestCompatibleFace(const Vec3& p,
     const Vec3& normal,
     double cosLimit,
-    double maxDistance) const;
+    double maxDistance,
+    int hintFace = -1) const;
 
   /// The face closest to p, whatever its normal (closer than maxDistance; else face -1).
   Hit ClosestFace(const Vec3& p, double maxDistance) const;
@@ -66,6 +68,10 @@ private:
     int left, right;  ///< inner node children
   };
   int Build(int first, int count);
+  /// Leaf test of ClosestCompatibleFace: takes face f when it is compatible and closer
+  /// (or as close with a lower id) than best2; true if taken.
+  bool TryFace(
+    const Vec3& p, const Vec3& normal, double cosLimit, int f, double& best2, Hit& hit) const;
   static double BoxDistance2(const Vec3& lo, const Vec3& hi, const Vec3& p);
 
   const PreparedMesh& Mesh;

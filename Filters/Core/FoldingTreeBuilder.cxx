@@ -588,7 +588,7 @@ private:
     bool meaningful = sFaces > 0;
     if (O.requireMeaningfulSymmetry)
     {
-      meaningful = meaningful && result.found &&
+      meaningful = meaningful && (result.found || !O.requireTightSymmetry) &&
         node.symmetricAreaFraction >= O.symmetry.minimumSymmetricAreaFraction &&
         sFaces >= (O.useMinimumFaces ? std::max(1, O.minimumFaces) : 1);
       Vec3 centroid = Vec3::Zero();

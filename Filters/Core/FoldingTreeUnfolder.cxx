@@ -234,9 +234,14 @@ private:
       if ((piece.onPlane[v] & bit) || IsOnPlane(piece.tear[v], node.depth) ||
         std::abs(s) <= tolerance || (inSlab[v] && std::abs(s) <= piece.budget[v]))
       {
-        // Both copies: the reflection at this fold does not matter.
-        piece.points[v] -= s * p.normal;
-        piece.budget[v] = std::max(0.0, piece.budget[v] - std::abs(s));
+        // Both copies: the reflection at this fold does not matter. Onto the plane, or as
+        // far towards it as the error budget allows (flagged copies of fold-line vertices
+        // made by approximate folds below may lie off it).
+        const double move =
+          std::abs(s) <= tolerance ? std::abs(s) : std::min(std::abs(s), piece.budget[v]);
+        if (move > 0.0)
+          piece.points[v] -= (s > 0 ? move : -move) * p.normal;
+        piece.budget[v] = std::max(0.0, piece.budget[v] - move);
         piece.onPlane[v] |= bit;
         for (auto& e : piece.tear[v])
           e.second &= ~bit;

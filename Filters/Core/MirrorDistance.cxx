@@ -16,6 +16,7 @@ MirrorDistance::MirrorDistance(const PreparedMesh& mesh, double compatibilityAng
     if (!mesh.faceDegenerate[f])
       for (int v : mesh.triangles[f])
         this->VertexUsed[v] = 1;
+  this->LastFace.assign(mesh.NumberOfPoints(), -1);
 }
 
 void MirrorDistance::Compute(const Plane& plane,
@@ -44,7 +45,12 @@ void MirrorDistance::Compute(const Plane& plane,
         const Vec3 rn = plane.ReflectDirection(Mesh.vertexNormals[i]);
         if (metric == DistanceMetric::Fine)
         {
-          const FaceTree::Hit hit = Faces.ClosestCompatibleFace(r, rn, CosLimit, maxDistance);
+          // The previous answer for this vertex (a nearby plane, usually the same face)
+          // speeds the search up without changing its result.
+          const FaceTree::Hit hit =
+            Faces.ClosestCompatibleFace(r, rn, CosLimit, maxDistance, LastFace[i]);
+          if (hit.face >= 0)
+            LastFace[i] = hit.face;
           d[i] = hit.distance;
           if (closest)
             (*closest)[i] = hit.point;

@@ -44,6 +44,10 @@ private:
   FaceTree Faces;
   double CosLimit;
   std::vector<char> VertexUsed;
+  /// Last closest compatible face per vertex: a search hint only (each vertex is written by
+  /// the one thread that handles it; results never depend on it). Not safe for concurrent
+  /// Compute calls on one object.
+  mutable std::vector<int> LastFace;
 };
 }
 

@@ -304,6 +304,9 @@ private:
   mutable double SigmaScale = 3.0; ///< fine sigma in units of epsilon (the paper: 3)
 };
 
+/// A probe whose tight region misses less than this fraction of the area ends the probing.
+constexpr double GlobalSymmetryMargin = 0.02;
+
 bool SamePlane(const Plane& a, const Plane& b, double epsilon)
 {
   return PlaneAngleDegrees(a, b) < 2.0 && PlaneOffsetAt(a, b, b.origin) < epsilon;
@@ -497,19 +500,26 @@ SymmetryResult DetectSymmetryOnFullMesh(const PreparedMesh& mesh, const Symmetry
     // Probes: two fine iterations each; probes that land on the plane of an earlier probe
     // are dropped; the rest get four more iterations and are scored by their region.
     std::vector<size_t> probes;
+    size_t tried = 0;
     for (size_t k = 0; k < distinct.size(); ++k)
     {
+      ++tried;
       Run run;
       refiner.Seed(run, distinct[k], k == 0 ? &runs[0] : nullptr);
       refiner.Fine(run, std::min(options.maximumIterations, 2));
       bool duplicate = false;
       for (size_t j : probes)
         duplicate = duplicate || SamePlane(runs[j].plane, run.plane, options.epsilon);
+      bool settled = false;
       if (!duplicate)
       {
         refiner.Fine(run, std::min(options.maximumIterations, 4));
         refiner.Score(run, options.epsilon);
         trace("probe", k, run);
+        // A tight region covering almost the whole mesh cannot be beaten by the region
+        // rule (Better: more than 2% of the area larger): no need to probe further.
+        settled = Tight(run, options, mesh.totalArea) &&
+          run.regionArea >= (1.0 - GlobalSymmetryMargin) * mesh.totalArea;
         probes.push_back(runs.size());
         runs.push_back(std::move(run));
       }
@@ -517,6 +527,15 @@ SymmetryResult DetectSymmetryOnFullMesh(const PreparedMesh& mesh, const Symmetry
       {
         result.aborted = true;
         return result;
+      }
+      if (settled)
+      {
+        if (!report(0.7))
+        {
+          result.aborted = true;
+          return result;
+        }
+        break;
       }
     }
     // Finish the best three distinct probes that could still win.
@@ -537,6 +556,11 @@ SymmetryResult DetectSymmetryOnFullMesh(const PreparedMesh& mesh, const Symmetry
     {
       Run& run = runs[chosen[i]];
       refiner.Fine(run, options.maximumIterations);
+      if (!report(0.7 + 0.3 * (static_cast<double>(i) + 0.5) / chosen.size()))
+      {
+        result.aborted = true;
+        return result;
+      }
       refiner.Polish(run, options.maximumIterations);
       refiner.Score(run, options.epsilon);
       trace("final", chosen[i], run);
@@ -547,7 +571,7 @@ SymmetryResult DetectSymmetryOnFullMesh(const PreparedMesh& mesh, const Symmetry
       }
     }
     result.fineSeconds = Seconds(t2);
-    result.startsTried = static_cast<int>(distinct.size());
+    result.startsTried = static_cast<int>(tried);
   }
   else
   {

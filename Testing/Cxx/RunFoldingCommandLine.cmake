@@ -3,7 +3,9 @@
 # 1. `foldingmeshes roundtrip MESH --outdir WORK_DIR --json --quiet` exits 0 (Hausdorff distance
 #    within the root epsilon), writes the .vtm tree and prints JSON with a hausdorff value;
 # 2. `foldingmeshes fold` on a missing file exits 2 (unreadable input);
-# 3. `foldingmeshes fold` without a mesh exits 1 (bad command line).
+# 3. `foldingmeshes fold` without a mesh exits 1 (bad command line);
+# 4. `foldingmeshes unfold` on a file that is not a .vtm tree exits 2 and says so;
+# 5. `--help` exits 0 and documents every command and the exit codes; `--version` exits 0.
 foreach (var FOLDINGMESHES MESH WORK_DIR)
   if (NOT DEFINED ${var})
     message(FATAL_ERROR "${var} not set")
@@ -48,5 +50,31 @@ execute_process(COMMAND "${FOLDINGMESHES}" fold
   RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
 if (NOT rc EQUAL 1)
   message(FATAL_ERROR "fold without a mesh exited with ${rc}, expected 1")
+endif ()
+
+file(WRITE "${WORK_DIR}/not_a_tree.vtm" "OFF\n0 0 0\n")
+execute_process(COMMAND "${FOLDINGMESHES}" unfold "${WORK_DIR}/not_a_tree.vtm" --outdir "${WORK_DIR}"
+  --quiet RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+message("unfold on a file that is not a tree: exit ${rc}: ${err}")
+if (NOT rc EQUAL 2 OR NOT err MATCHES "not a VTK XML multiblock")
+  message(FATAL_ERROR "unfold on a non-.vtm file exited with ${rc}, expected 2 and a clear message")
+endif ()
+
+execute_process(COMMAND "${FOLDINGMESHES}" --help
+  RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+if (NOT rc EQUAL 0)
+  message(FATAL_ERROR "--help exited with ${rc}, expected 0")
+endif ()
+foreach (text IN ITEMS "detect MESH" "fold MESH" "unfold TREE.vtm" "roundtrip MESH" "exit codes: 0"
+    "--tolerance" "--keep" "--max-folds" "--min-area-fraction" "--no-stitch" "--version")
+  string(FIND "${out}" "${text}" found)
+  if (found EQUAL -1)
+    message(FATAL_ERROR "--help does not mention '${text}'")
+  endif ()
+endforeach ()
+execute_process(COMMAND "${FOLDINGMESHES}" --version
+  RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+if (NOT rc EQUAL 0 OR NOT out MATCHES "^foldingmeshes [0-9]+\\.[0-9]+")
+  message(FATAL_ERROR "--version exited with ${rc}: ${out}")
 endif ()
 message("TestFoldingCommandLine passed")

@@ -1,7 +1,7 @@
 // Baseline-image regression tests of what a person sees of a folding tree, on the bundled
-// dinosaur: the segmentation view (the input coloured by FoldingLeafId, faces mirrored away in
-// grey, as in the paper's Figures 1 and 4), the mesh unfolded from the tree, and the unfolded
-// mesh next to the input.
+// dinosaur: the segmentation view (the input coloured by FoldingLeafId; a face mirrored away
+// takes the colour of the leaf it mirrors, as in the paper's Figures 1 and 4), the mesh
+// unfolded from the tree, and the unfolded mesh next to the input.
 //
 //   TestFoldingTreeImages MESH BASELINE_DIR TEMP_DIR
 #include "MeshPicture.h"

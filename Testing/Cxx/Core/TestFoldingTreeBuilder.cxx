@@ -491,6 +491,11 @@ void TestStopCriteria()
   {
     const Case blob = MakeCase(pm::MakeAsymmetricBlob(4000));
     FoldingTreeOptions o = Options(blob);
+    // By default an accidental epsilon-symmetric patch may be folded (within the bound).
+    const FoldingTree loose = Build(blob, o);
+    CheckInvariants("no symmetry, loose", blob, loose, o.epsilon);
+    // With the residual rule, the blob has no symmetry at all.
+    o.requireTightSymmetry = true;
     const FoldingTree t = Build(blob, o);
     CheckInvariants("no symmetry", blob, t, o.epsilon);
     EXPECT(t.NumberOfNodes() == 1 && t.nodes[0].leafReason == LeafReason::NoSymmetry &&

@@ -606,6 +606,12 @@ void TestMalformedTrees()
 {
   const Shape blob = MakeShape(pm::MakeBilateralBlob(2000));
   const FoldingTree good = Fold(blob.mesh, 0.02 * blob.diagonal);
+  // The root folds the blob; the first leaf is somewhere below it.
+  REQUIRE(good.nodes[0].kind == FoldingNodeKind::Folding, "bilateral blob: root is not a fold");
+  const std::vector<int> leaves = good.Leaves();
+  REQUIRE(!leaves.empty() && good.nodes[leaves[0]].mesh.NumberOfFaces() > 0,
+    "bilateral blob: no leaf with faces");
+  const int leaf = leaves[0];
   UnfoldedMesh u;
   std::string error;
   {
@@ -620,12 +626,12 @@ void TestMalformedTrees()
   }
   {
     FoldingTree t = good;
-    t.nodes[1].mesh.triangles[0][1] = t.nodes[1].mesh.NumberOfPoints();
+    t.nodes[leaf].mesh.triangles[0][1] = t.nodes[leaf].mesh.NumberOfPoints();
     EXPECT(!UnfoldFoldingTree(t, {}, u, error), "leaf index out of range accepted");
   }
   {
     FoldingTree t = good;
-    t.nodes[1].mesh.tearMask.pop_back();
+    t.nodes[leaf].mesh.tearMask.pop_back();
     EXPECT(!UnfoldFoldingTree(t, {}, u, error), "short per-point array accepted");
   }
   {

@@ -1,0 +1,211 @@
+#include "vtkFoldingMeshesParallel.h"
+
+#include <vtkAlgorithm.h>
+#include <vtkAppendPolyData.h>
+#include <vtkCommunicator.h>
+#include <vtkDataObject.h>
+#include <vtkExecutive.h>
+#include <vtkFieldData.h>
+#include <vtkInformation.h>
+#include <vtkInformationVector.h>
+#include <vtkMultiBlockDataSet.h>
+#include <vtkMultiProcessController.h>
+#include <vtkNew.h>
+#include <vtkPolyData.h>
+#include <vtkStreamingDemandDrivenPipeline.h>
+
+#include <algorithm>
+
+namespace foldingmeshes
+{
+namespace
+{
+/// The same tree of vtkMultiBlockDataSet (block metadata and field data copied), sharing
+/// the datasets: the merge below must not modify the pipeline's input.
+vtkSmartPointer<vtkMultiBlockDataSet> CopyTree(vtkMultiBlockDataSet* source)
+{
+  auto copy = vtkSmartPointer<vtkMultiBlockDataSet>::New();
+  copy->SetNumberOfBlocks(source->GetNumberOfBlocks());
+  copy->SetFieldData(source->GetFieldData());
+  for (unsigned int b = 0; b < source->GetNumberOfBlocks(); ++b)
+  {
+    vtkDataObject* block = source->GetBlock(b);
+    if (auto child = vtkMultiBlockDataSet::SafeDownCast(block))
+      copy->SetBlock(b, CopyTree(child));
+    else
+      copy->SetBlock(b, block);
+    if (source->HasMetaData(b))
+      copy->GetMetaData(b)->Copy(source->GetMetaData(b));
+  }
+  return copy;
+}
+
+/// Blocks of `target` without a dataset take the one at the same place in `source`.
+void FillMissingBlocks(vtkMultiBlockDataSet* target, vtkMultiBlockDataSet* source)
+{
+  const unsigned int n = std::min(target->GetNumberOfBlocks(), source->GetNumberOfBlocks());
+  for (unsigned int b = 0; b < n; ++b)
+  {
+    vtkDataObject* from = source->GetBlock(b);
+    if (!from)
+      continue;
+    vtkDataObject* to = target->GetBlock(b);
+    auto toTree = vtkMultiBlockDataSet::SafeDownCast(to);
+    auto fromTree = vtkMultiBlockDataSet::SafeDownCast(from);
+    if (toTree && fromTree)
+      FillMissingBlocks(toTree, fromTree);
+    else if (!to)
+      target->SetBlock(b, fromTree ? CopyTree(fromTree).GetPointer() : from);
+  }
+}
+}
+
+//------------------------------------------------------------------------------
+vtkSmartPointer<vtkPolyData> AppendPieces(const std::vector<vtkSmartPointer<vtkPolyData>>& pieces)
+{
+  std::vector<vtkSmartPointer<vtkPolyData>> nonEmpty;
+  for (const auto& piece : pieces)
+  {
+    if (!piece || piece->GetNumberOfCells() == 0)
+      continue;
+    auto copy = vtkSmartPointer<vtkPolyData>::New();
+    copy->ShallowCopy(piece);
+    if (copy->HasAnyGhostCells())
+      copy->RemoveGhostCells();
+    nonEmpty.push_back(copy);
+  }
+  if (nonEmpty.size() == 1)
+    return nonEmpty[0];
+  auto whole = vtkSmartPointer<vtkPolyData>::New();
+  if (nonEmpty.empty())
+    return whole;
+  vtkNew<vtkAppendPolyData> append;
+  for (const auto& piece : nonEmpty)
+    append->AddInputData(piece);
+  append->Update();
+  whole->ShallowCopy(append->GetOutput());
+  whole->SetFieldData(nonEmpty[0]->GetFieldData());
+  return whole;
+}
+
+//------------------------------------------------------------------------------
+vtkSmartPointer<vtkMultiBlockDataSet> MergeTreePieces(
+  const std::vector<vtkSmartPointer<vtkMultiBlockDataSet>>& pieces)
+{
+  vtkSmartPointer<vtkMultiBlockDataSet> whole;
+  for (const auto& piece : pieces)
+  {
+    if (!piece || piece->GetNumberOfBlocks() == 0)
+      continue;
+    if (!whole)
+      whole = CopyTree(piece);
+    else
+      FillMissingBlocks(whole, piece);
+  }
+  return whole ? whole : vtkSmartPointer<vtkMultiBlockDataSet>::New();
+}
+
+//------------------------------------------------------------------------------
+ParallelRun::ParallelRun(vtkAlgorithm* algorithm, vtkMultiProcessController* controller)
+  : Controller(controller)
+  , NumberOfPorts(algorithm->GetNumberOfInputPorts())
+{
+  // Distributed only if the pipeline asks for pieces (as ParaView does on every rank): a
+  // plain Update() on one rank, or on each rank of an MPI script, asks for the whole data.
+  vtkInformation* request = algorithm->GetNumberOfOutputPorts() > 0
+    ? algorithm->GetExecutive()->GetOutputInformation(0)
+    : nullptr;
+  const int pieces =
+    request && request->Has(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES())
+    ? request->Get(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES())
+    : 1;
+  this->Parallel = controller && controller->GetNumberOfProcesses() > 1 && pieces > 1;
+  this->Root = !this->Parallel || controller->GetLocalProcessId() == 0;
+}
+
+ParallelRun::~ParallelRun() = default;
+
+//------------------------------------------------------------------------------
+vtkSmartPointer<vtkDataObject> ParallelRun::GatherPort(vtkDataObject* piece)
+{
+  std::vector<vtkSmartPointer<vtkDataObject>> received;
+  if (!this->Controller->Gather(piece, received, 0))
+  {
+    this->GatherFailed = true;
+    return nullptr;
+  }
+  if (!this->Root)
+    return nullptr;
+  if (received.size() > 0)
+    received[0] = piece; // rank 0's own data, as it is (e.g. block names)
+  vtkDataObject* first = nullptr;
+  for (const auto& object : received)
+    if (object && !first)
+      first = object;
+  if (vtkPolyData::SafeDownCast(first))
+  {
+    std::vector<vtkSmartPointer<vtkPolyData>> pieces;
+    for (const auto& object : received)
+      pieces.push_back(vtkPolyData::SafeDownCast(object));
+    return AppendPieces(pieces);
+  }
+  if (vtkMultiBlockDataSet::SafeDownCast(first))
+  {
+    std::vector<vtkSmartPointer<vtkMultiBlockDataSet>> pieces;
+    for (const auto& object : received)
+      pieces.push_back(vtkMultiBlockDataSet::SafeDownCast(object));
+    return MergeTreePieces(pieces);
+  }
+  return piece;
+}
+
+//------------------------------------------------------------------------------
+vtkInformationVector** ParallelRun::Gather(vtkInformationVector** inputVector)
+{
+  this->Whole.clear();
+  this->WholeVectors.clear();
+  for (int port = 0; port < this->NumberOfPorts; ++port)
+  {
+    auto vector = vtkSmartPointer<vtkInformationVector>::New();
+    // Optional ports without a connection have none on every rank: nothing to gather.
+    if (inputVector[port]->GetNumberOfInformationObjects() > 0)
+    {
+      vtkSmartPointer<vtkDataObject> whole =
+        this->GatherPort(vtkDataObject::GetData(inputVector[port], 0));
+      vtkNew<vtkInformation> info;
+      info->Set(vtkDataObject::DATA_OBJECT(), whole);
+      vector->Append(info);
+    }
+    this->Whole.push_back(vector);
+    this->WholeVectors.push_back(vector);
+  }
+  if (!this->Root || this->GatherFailed)
+    return nullptr;
+  return this->WholeVectors.data();
+}
+
+//------------------------------------------------------------------------------
+void ParallelRun::Broadcast(int& status,
+  std::vector<double>& values,
+  vtkInformationVector* outputVector)
+{
+  // The status first, then the number of values, then the values.
+  int header[2] = { this->GatherFailed ? 0 : status, static_cast<int>(values.size()) };
+  int failures = 0;
+  const int local = this->GatherFailed ? 1 : 0;
+  this->Controller->Reduce(&local, &failures, 1, vtkCommunicator::SUM_OP, 0);
+  if (failures > 0)
+    header[0] = 0;
+  this->Controller->Broadcast(header, 2, 0);
+  status = header[0];
+  values.resize(static_cast<size_t>(header[1]));
+  if (header[1] > 0)
+    this->Controller->Broadcast(values.data(), header[1], 0);
+  if (!this->Root)
+  {
+    for (int i = 0; i < outputVector->GetNumberOfInformationObjects(); ++i)
+      if (vtkDataObject* output = vtkDataObject::GetData(outputVector, i))
+        output->Initialize();
+  }
+}
+}
