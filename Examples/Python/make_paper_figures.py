@@ -7,8 +7,8 @@
 
 Writes OUTDIR/paper_fig1_dino.png, five panels like the paper's Figure 1: the original mesh;
 the detected global symmetry plane (blue) with the symmetric region (green) and the support
-region (yellow); the mesh coloured by the tree leaf that stores each face (grey: mirrored
-away); the leaves (the non-redundant geometry) with the mirror planes; the mesh reconstructed
+region (yellow); the mesh coloured by the tree leaf that stands for each face (a face mirrored
+away takes the colour of the leaf holding its mirror image); the leaves (the non-redundant geometry) with the mirror planes; the mesh reconstructed
 from leaves and planes, coloured by the leaf each face was copied from. And
 OUTDIR/paper_fig4_horse.png, the same without the detection panel (the paper's Figure 4:
 original, segmentation, leaves, reconstruction). Default options of every filter; the

@@ -21,7 +21,6 @@
 #include <vtkPolyData.h>
 #include <vtkSMPThreadLocalObject.h>
 #include <vtkSMPTools.h>
-#include <vtkStaticCellLocator.h>
 
 #include <algorithm>
 #include <array>
