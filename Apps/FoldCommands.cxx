@@ -374,7 +374,7 @@ int Fold(int argc, char* argv[])
 
 int Unfold(int argc, char* argv[])
 {
-  std::string treePath, outdir = ".";
+  std::string treePath, outdir = ".", originalPath;
   bool json = false, quiet = false, stitch = true;
   for (int i = 0; i < argc; ++i)
   {
@@ -392,6 +392,12 @@ int Unfold(int argc, char* argv[])
     }
     else if (arg == "--no-stitch")
       stitch = false;
+    else if (arg == "--original")
+    {
+      if (i + 1 >= argc)
+        throw std::runtime_error("missing value after --original");
+      originalPath = argv[++i];
+    }
     else if (arg == "--json")
       json = true;
     else if (arg == "--quiet")
@@ -416,6 +422,17 @@ int Unfold(int argc, char* argv[])
   vtkNew<vtkFoldingTreeUnfolder> unfolder;
   unfolder->SetStitch(stitch);
   unfolder->SetInputData(tree);
+  vtkSmartPointer<vtkPolyData> original;
+  if (!originalPath.empty())
+  {
+    original = foldingmeshes::ReadMesh(originalPath, error);
+    if (!original)
+    {
+      std::cerr << "foldingmeshes: " << error << "\n";
+      return 2;
+    }
+    unfolder->SetOriginalData(original);
+  }
   const auto start = std::chrono::steady_clock::now();
   if (!RunFilter(unfolder, "unfolding", quiet, error))
   {
@@ -442,12 +459,19 @@ int Unfold(int argc, char* argv[])
   const int stitched = static_cast<int>(FieldValue(mesh, "StitchedVertices"));
   const int gaps = static_cast<int>(FieldValue(mesh, "OpenGapCount"));
   const double gapLength = FieldValue(mesh, "OpenGapLength");
+  // With --original: the symmetric Hausdorff distance to it, absolute and / its diagonal.
+  const double hausdorff = original ? FieldValue(mesh, "HausdorffToOriginal", -1.0) : -1.0;
+  const double hausdorffRelative =
+    original ? FieldValue(mesh, "HausdorffToOriginalRelative", -1.0) : -1.0;
+  const double meanRelative = original ? FieldValue(mesh, "MeanDistanceToOriginalRelative", -1.0) : -1.0;
   if (json)
   {
     std::printf("{\n  \"tree\": %s,\n  \"stitch\": %s,\n  \"faces\": %lld,\n"
                 "  \"points\": %lld,\n  \"openEdges\": %d,\n  \"nonManifoldEdges\": %d,\n"
                 "  \"stitchedVertices\": %d,\n  \"openGapCount\": %d,\n"
-                "  \"openGapLength\": %.9g,\n  \"seconds\": %.3f,\n"
+                "  \"openGapLength\": %.9g,\n  \"hausdorffToOriginal\": %.9g,\n"
+                "  \"hausdorffToOriginalRelative\": %.9g,\n"
+                "  \"meanDistanceToOriginalRelative\": %.9g,\n  \"seconds\": %.3f,\n"
                 "  \"outputs\": {\"mesh\": %s, \"picture\": %s}\n}\n",
       JsonString(treePath).c_str(),
       stitch ? "true" : "false",
@@ -458,6 +482,9 @@ int Unfold(int argc, char* argv[])
       stitched,
       gaps,
       gapLength,
+      hausdorff,
+      hausdorffRelative,
+      meanRelative,
       seconds,
       JsonString(meshPath).c_str(),
       picture.empty() ? "null" : JsonString(picture).c_str());
@@ -471,6 +498,9 @@ int Unfold(int argc, char* argv[])
     std::printf("open edges:              %d (non-manifold %d)\n", openEdges, nonManifold);
     std::printf("stitched vertices:       %d%s\n", stitched, stitch ? "" : " (stitching off)");
     std::printf("open gaps:               %d (length %.6g)\n", gaps, gapLength);
+    if (original)
+      std::printf("distance to original:    Hausdorff %.6g (%.4f of its diagonal), mean %.5f\n",
+        hausdorff, hausdorffRelative, meanRelative);
     std::printf("time:                    %.3f s\n", seconds);
     std::printf("wrote:                   %s\n", meshPath.c_str());
     if (!picture.empty())

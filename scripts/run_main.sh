@@ -15,7 +15,7 @@ mkdir -p results
 run() { xvfb-run -a "$BUILD_DIR/bin/foldingmeshes" "$@"; }
 run detect "$MESH" --outdir results --json > results/detect.json
 run fold "$MESH" --outdir results --json > results/fold.json
-run unfold "results/${STEM}_tree.vtm" --outdir results --json > results/unfold.json
+run unfold "results/${STEM}_tree.vtm" --original "$MESH" --outdir results --json > results/unfold.json
 {
   echo "{"
   echo "\"detect\": $(cat results/detect.json),"

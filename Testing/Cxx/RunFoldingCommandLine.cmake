@@ -5,6 +5,7 @@
 # 2. `foldingmeshes fold` on a missing file exits 2 (unreadable input);
 # 3. `foldingmeshes fold` without a mesh exits 1 (bad command line);
 # 4. `foldingmeshes unfold` on a file that is not a .vtm tree exits 2 and says so;
+# 4b. `foldingmeshes unfold TREE --original MESH` reports the roundtrip's Hausdorff distance;
 # 5. `--help` exits 0 and documents every command and the exit codes; `--version` exits 0.
 foreach (var FOLDINGMESHES MESH WORK_DIR)
   if (NOT DEFINED ${var})
@@ -37,6 +38,25 @@ if (CMAKE_VERSION VERSION_GREATER_EQUAL 3.19)
     message(FATAL_ERROR "roundtrip output is not valid JSON: ${jsonError} ${jsonError2}")
   endif ()
   message("hausdorff / diagonal = ${hausdorff} (root epsilon / diagonal = ${epsilon})")
+endif ()
+
+# unfold --original: the filter's distance to the original equals the roundtrip's measure.
+execute_process(COMMAND "${FOLDINGMESHES}" unfold "${WORK_DIR}/${stem}_tree.vtm" --original "${MESH}"
+  --outdir "${WORK_DIR}/unfold" --json --quiet RESULT_VARIABLE rc OUTPUT_VARIABLE uout ERROR_VARIABLE err)
+message("unfold --original output:\n${uout}${err}")
+if (NOT rc EQUAL 0)
+  message(FATAL_ERROR "unfold --original exited with ${rc}, expected 0")
+endif ()
+if (CMAKE_VERSION VERSION_GREATER_EQUAL 3.19)
+  string(JSON unfoldHausdorff ERROR_VARIABLE jsonError GET "${uout}" hausdorffToOriginalRelative)
+  if (jsonError)
+    message(FATAL_ERROR "unfold --original JSON has no hausdorffToOriginalRelative: ${jsonError}")
+  endif ()
+  string(SUBSTRING "${unfoldHausdorff}0000" 0 6 a)
+  string(SUBSTRING "${hausdorff}0000" 0 6 b)
+  if (NOT unfoldHausdorff GREATER 0 OR NOT a STREQUAL b)
+    message(FATAL_ERROR "unfold --original: Hausdorff / diagonal ${unfoldHausdorff}, roundtrip ${hausdorff}")
+  endif ()
 endif ()
 
 execute_process(COMMAND "${FOLDINGMESHES}" fold "${WORK_DIR}/no_such_mesh.off" --outdir "${WORK_DIR}"
