@@ -463,7 +463,8 @@ int Unfold(int argc, char* argv[])
   const double hausdorff = original ? FieldValue(mesh, "HausdorffToOriginal", -1.0) : -1.0;
   const double hausdorffRelative =
     original ? FieldValue(mesh, "HausdorffToOriginalRelative", -1.0) : -1.0;
-  const double meanRelative = original ? FieldValue(mesh, "MeanDistanceToOriginalRelative", -1.0) : -1.0;
+  const double meanRelative =
+    original ? FieldValue(mesh, "MeanDistanceToOriginalRelative", -1.0) : -1.0;
   if (json)
   {
     std::printf("{\n  \"tree\": %s,\n  \"stitch\": %s,\n  \"faces\": %lld,\n"
@@ -500,7 +501,9 @@ int Unfold(int argc, char* argv[])
     std::printf("open gaps:               %d (length %.6g)\n", gaps, gapLength);
     if (original)
       std::printf("distance to original:    Hausdorff %.6g (%.4f of its diagonal), mean %.5f\n",
-        hausdorff, hausdorffRelative, meanRelative);
+        hausdorff,
+        hausdorffRelative,
+        meanRelative);
     std::printf("time:                    %.3f s\n", seconds);
     std::printf("wrote:                   %s\n", meshPath.c_str());
     if (!picture.empty())

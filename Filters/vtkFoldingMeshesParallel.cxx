@@ -208,4 +208,44 @@ void ParallelRun::Broadcast(int& status,
         output->Initialize();
   }
 }
+
+int RunWholeOnRoot(vtkAlgorithm* algorithm,
+  vtkMultiProcessController* controller,
+  vtkInformationVector** inputVector,
+  vtkInformationVector* outputVector,
+  const std::function<int(vtkInformationVector**)>& whole,
+  const ParallelResults& results)
+{
+  ParallelRun parallel(algorithm, controller);
+  if (!parallel.IsParallel())
+  {
+    return whole(inputVector);
+  }
+  vtkInformationVector** gathered = parallel.Gather(inputVector);
+  int status = 1;
+  std::vector<double> values;
+  if (parallel.IsRoot())
+  {
+    status = gathered ? whole(gathered) : 0;
+    for (double* d : results.doubles)
+      values.push_back(*d);
+    for (int* i : results.ints)
+      values.push_back(static_cast<double>(*i));
+    for (bool* b : results.bools)
+      values.push_back(*b ? 1.0 : 0.0);
+  }
+  parallel.Broadcast(status, values, outputVector);
+  const size_t n = results.doubles.size() + results.ints.size() + results.bools.size();
+  if (!parallel.IsRoot() && values.size() == n)
+  {
+    size_t k = 0;
+    for (double* d : results.doubles)
+      *d = values[k++];
+    for (int* i : results.ints)
+      *i = static_cast<int>(values[k++]);
+    for (bool* b : results.bools)
+      *b = values[k++] != 0.0;
+  }
+  return status;
+}
 }

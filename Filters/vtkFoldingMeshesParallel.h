@@ -3,22 +3,19 @@
 // Symmetry detection and folding look at the whole mesh at once, so a distributed run
 // computes once, on rank 0, on the data of all ranks gathered there; the scalar results are
 // broadcast so every rank's getters agree; rank 0 holds the outputs, the other ranks have
-// empty outputs. The filters use it at the start and end of RequestData only:
+// empty outputs. A filter's RequestData is one call:
 //
-//   foldingmeshes::ParallelRun parallel(this, this->Controller);
-//   if (!parallel.IsParallel())
-//     return this->RequestWholeData(request, inputVector, outputVector);  // serial: unchanged
-//   vtkInformationVector** whole = parallel.Gather(inputVector);  // collective
-//   int status = 1;
-//   if (parallel.IsRoot())
-//     status = whole ? this->RequestWholeData(request, whole, outputVector) : 0;
-//   std::vector<double> results = ...;  // packed on rank 0
-//   parallel.Broadcast(status, results, outputVector);  // collective
+//   return foldingmeshes::RunWholeOnRoot(this, this->Controller, inputVector, outputVector,
+//     [&](vtkInformationVector** in) { return this->RequestWholeData(request, in, outputVector); },
+//     { { &this->Result1 }, { &this->Count }, { &this->Found } });  // doubles, ints, bools
+//
+// (serial runs call RequestWholeData unchanged; ParallelRun is the collective machinery).
 #ifndef vtkFoldingMeshesParallel_h
 #define vtkFoldingMeshesParallel_h
 
 #include <vtkSmartPointer.h>
 
+#include <functional>
 #include <vector>
 
 class vtkAlgorithm;
@@ -94,6 +91,26 @@ private:
   std::vector<vtkSmartPointer<vtkInformationVector>> Whole;
   std::vector<vtkInformationVector*> WholeVectors;
 };
+
+/// A filter's result members, sent from rank 0 to the other ranks after a parallel run.
+struct ParallelResults
+{
+  std::vector<double*> doubles;
+  std::vector<int*> ints;
+  std::vector<bool*> bools;
+};
+
+/**
+ * A filter's whole RequestData. Serial (see ParallelRun): `whole(inputVector)`. Parallel:
+ * gathers the input on rank 0, runs `whole` there, and gives every rank rank 0's status and
+ * `results`; the other ranks' outputs are empty.
+ */
+int RunWholeOnRoot(vtkAlgorithm* algorithm,
+  vtkMultiProcessController* controller,
+  vtkInformationVector** inputVector,
+  vtkInformationVector* outputVector,
+  const std::function<int(vtkInformationVector**)>& whole,
+  const ParallelResults& results);
 }
 
 #endif

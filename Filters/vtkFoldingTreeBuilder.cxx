@@ -60,34 +60,14 @@ int vtkFoldingTreeBuilder::RequestData(vtkInformation* request,
   vtkInformationVector** inputVector,
   vtkInformationVector* outputVector)
 {
-  foldingmeshes::ParallelRun parallel(this, this->Controller);
-  if (!parallel.IsParallel())
-  {
-    return this->RequestWholeData(request, inputVector, outputVector);
-  }
-  // Parallel: once, on rank 0, on the mesh gathered there; its results on every rank.
-  vtkInformationVector** whole = parallel.Gather(inputVector);
-  int status = 1;
-  std::vector<double> results;
-  if (parallel.IsRoot())
-  {
-    status = whole ? this->RequestWholeData(request, whole, outputVector) : 0;
-    results = { this->ToleranceLength,
-      static_cast<double>(this->OriginalFaces),
-      static_cast<double>(this->StoredFaces),
-      this->Compression,
-      static_cast<double>(this->TreeHeight) };
-  }
-  parallel.Broadcast(status, results, outputVector);
-  if (!parallel.IsRoot() && results.size() == 5)
-  {
-    this->ToleranceLength = results[0];
-    this->OriginalFaces = static_cast<int>(results[1]);
-    this->StoredFaces = static_cast<int>(results[2]);
-    this->Compression = results[3];
-    this->TreeHeight = static_cast<int>(results[4]);
-  }
-  return status;
+  return foldingmeshes::RunWholeOnRoot(this,
+    this->Controller,
+    inputVector,
+    outputVector,
+    [&](vtkInformationVector** in) { return this->RequestWholeData(request, in, outputVector); },
+    { { &this->ToleranceLength, &this->Compression },
+      { &this->OriginalFaces, &this->StoredFaces, &this->TreeHeight },
+      {} });
 }
 
 //------------------------------------------------------------------------------

@@ -265,34 +265,14 @@ int vtkFoldingTreeUnfolder::RequestData(vtkInformation* request,
   vtkInformationVector** inputVector,
   vtkInformationVector* outputVector)
 {
-  foldingmeshes::ParallelRun parallel(this, this->Controller);
-  if (!parallel.IsParallel())
-  {
-    return this->RequestWholeData(request, inputVector, outputVector);
-  }
-  // Parallel: once, on rank 0, on the tree merged there; its results on every rank.
-  vtkInformationVector** whole = parallel.Gather(inputVector);
-  int status = 1;
-  std::vector<double> results;
-  if (parallel.IsRoot())
-  {
-    status = whole ? this->RequestWholeData(request, whole, outputVector) : 0;
-    results = { static_cast<double>(this->OpenGapCount),
-      this->OpenGapLength,
-      static_cast<double>(this->StitchedVertices),
-      static_cast<double>(this->OpenEdges),
-      this->HausdorffToOriginal };
-  }
-  parallel.Broadcast(status, results, outputVector);
-  if (!parallel.IsRoot() && results.size() == 5)
-  {
-    this->HausdorffToOriginal = results[4];
-    this->OpenGapCount = static_cast<int>(results[0]);
-    this->OpenGapLength = results[1];
-    this->StitchedVertices = static_cast<int>(results[2]);
-    this->OpenEdges = static_cast<int>(results[3]);
-  }
-  return status;
+  return foldingmeshes::RunWholeOnRoot(this,
+    this->Controller,
+    inputVector,
+    outputVector,
+    [&](vtkInformationVector** in) { return this->RequestWholeData(request, in, outputVector); },
+    { { &this->OpenGapLength, &this->HausdorffToOriginal },
+      { &this->OpenGapCount, &this->StitchedVertices, &this->OpenEdges },
+      {} });
 }
 
 //------------------------------------------------------------------------------

@@ -124,46 +124,21 @@ int vtkSymmetryPlaneDetector::RequestData(vtkInformation* request,
   vtkInformationVector** inputVector,
   vtkInformationVector* outputVector)
 {
-  foldingmeshes::ParallelRun parallel(this, this->Controller);
-  if (!parallel.IsParallel())
-  {
-    return this->RequestWholeData(request, inputVector, outputVector);
-  }
-  // Parallel: once, on rank 0, on the mesh gathered there; its results on every rank.
-  vtkInformationVector** whole = parallel.Gather(inputVector);
-  int status = 1;
-  std::vector<double> results;
-  if (parallel.IsRoot())
-  {
-    status = whole ? this->RequestWholeData(request, whole, outputVector) : 0;
-    results = { this->PlaneOrigin[0],
-      this->PlaneOrigin[1],
-      this->PlaneOrigin[2],
-      this->PlaneNormal[0],
-      this->PlaneNormal[1],
-      this->PlaneNormal[2],
-      this->SymmetricAreaFraction,
-      this->SymmetryFound ? 1.0 : 0.0,
-      static_cast<double>(this->CoarseIterations),
-      static_cast<double>(this->FineIterations),
-      this->ToleranceLength };
-  }
-  parallel.Broadcast(status, results, outputVector);
-  if (!parallel.IsRoot() && results.size() == 11)
-  {
-    this->PlaneOrigin[0] = results[0];
-    this->PlaneOrigin[1] = results[1];
-    this->PlaneOrigin[2] = results[2];
-    this->PlaneNormal[0] = results[3];
-    this->PlaneNormal[1] = results[4];
-    this->PlaneNormal[2] = results[5];
-    this->SymmetricAreaFraction = results[6];
-    this->SymmetryFound = results[7] != 0.0;
-    this->CoarseIterations = static_cast<int>(results[8]);
-    this->FineIterations = static_cast<int>(results[9]);
-    this->ToleranceLength = results[10];
-  }
-  return status;
+  return foldingmeshes::RunWholeOnRoot(this,
+    this->Controller,
+    inputVector,
+    outputVector,
+    [&](vtkInformationVector** in) { return this->RequestWholeData(request, in, outputVector); },
+    { { &this->PlaneOrigin[0],
+        &this->PlaneOrigin[1],
+        &this->PlaneOrigin[2],
+        &this->PlaneNormal[0],
+        &this->PlaneNormal[1],
+        &this->PlaneNormal[2],
+        &this->SymmetricAreaFraction,
+        &this->ToleranceLength },
+      { &this->CoarseIterations, &this->FineIterations },
+      { &this->SymmetryFound } });
 }
 
 //------------------------------------------------------------------------------

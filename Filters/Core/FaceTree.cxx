@@ -91,14 +91,50 @@ double FaceTree::BoxDistance2(const Vec3& lo, const Vec3& hi, const Vec3& p)
   return d.squaredNorm();
 }
 
-bool FaceTree::TryFace(
-  const Vec3& p, const Vec3& normal, double cosLimit, int f, double& best2, Hit& hit) const
+template <typename Prune, typename Visit>
+void FaceTree::Traverse(const Vec3& p, const double& best2, Prune prune, Visit visit) const
+{
+  // Depth-first, nearer child first; `best2` shrinks as `visit` finds closer faces.
+  int stack[128];
+  int top = 0;
+  stack[top++] = 0;
+  while (top > 0)
+  {
+    const Node& node = this->Nodes[stack[--top]];
+    if (BoxDistance2(node.lo, node.hi, p) > best2 || prune(node))
+      continue;
+    if (node.count > 0)
+    {
+      for (int k = node.first; k < node.first + node.count; ++k)
+        visit(this->Order[k]);
+      continue;
+    }
+    const double dl = BoxDistance2(this->Nodes[node.left].lo, this->Nodes[node.left].hi, p);
+    const double dr = BoxDistance2(this->Nodes[node.right].lo, this->Nodes[node.right].hi, p);
+    if (dl <= dr)
+    {
+      stack[top++] = node.right;
+      stack[top++] = node.left;
+    }
+    else
+    {
+      stack[top++] = node.left;
+      stack[top++] = node.right;
+    }
+  }
+}
+
+bool FaceTree::TryFace(const Vec3& p,
+  const Vec3& normal,
+  double cosLimit,
+  int f,
+  double& best2,
+  Hit& hit) const
 {
   const Triangle& t = Mesh.triangles[f];
   const ClosestPointOnTriangle cp =
     ClosestPointTriangle(p, Mesh.points[t[0]], Mesh.points[t[1]], Mesh.points[t[2]]);
-  if (cp.squaredDistance > best2 ||
-    (cp.squaredDistance == best2 && hit.face >= 0 && f > hit.face))
+  if (cp.squaredDistance > best2 || (cp.squaredDistance == best2 && hit.face >= 0 && f > hit.face))
     return false;
   const Vec3 n = cp.barycentric[0] * Mesh.vertexNormals[t[0]] +
     cp.barycentric[1] * Mesh.vertexNormals[t[1]] + cp.barycentric[2] * Mesh.vertexNormals[t[2]];
@@ -130,42 +166,19 @@ FaceTree::Hit FaceTree::ClosestCompatibleFace(const Vec3& p,
   // the same with or without it.
   if (hintFace >= 0 && hintFace < Mesh.NumberOfFaces() && !Mesh.faceDegenerate[hintFace])
     this->TryFace(p, normal, cosLimit, hintFace, best2, hit);
-  int stack[128];
-  int top = 0;
-  stack[top++] = 0;
-  while (top > 0)
-  {
-    const Node& node = this->Nodes[stack[--top]];
-    if (BoxDistance2(node.lo, node.hi, p) > best2)
-      continue;
-    if (node.coneCos > -1.0)
+  this->Traverse(
+    p,
+    best2,
+    [&](const Node& node)
     {
       // Skip when angle(normal, axis) > h + l, i.e. cos < cos(h + l); only meaningful
       // while h + l < 180 degrees, i.e. cos l > -cos h.
+      if (node.coneCos <= -1.0)
+        return false;
       const double cosSum = node.coneCos * cosL - node.coneSin * sinL;
-      if (cosL > -node.coneCos && normal.dot(node.coneAxis) < cosSum - 1e-12)
-        continue;
-    }
-    if (node.count > 0)
-    {
-      for (int k = node.first; k < node.first + node.count; ++k)
-        this->TryFace(p, normal, cosLimit, this->Order[k], best2, hit);
-      continue;
-    }
-    // Nearer child last, so it is popped first.
-    const double dl = BoxDistance2(this->Nodes[node.left].lo, this->Nodes[node.left].hi, p);
-    const double dr = BoxDistance2(this->Nodes[node.right].lo, this->Nodes[node.right].hi, p);
-    if (dl <= dr)
-    {
-      stack[top++] = node.right;
-      stack[top++] = node.left;
-    }
-    else
-    {
-      stack[top++] = node.left;
-      stack[top++] = node.right;
-    }
-  }
+      return cosL > -node.coneCos && normal.dot(node.coneAxis) < cosSum - 1e-12;
+    },
+    [&](int f) { this->TryFace(p, normal, cosLimit, f, best2, hit); });
   if (hit.face >= 0)
     hit.distance = std::sqrt(best2);
   return hit;
@@ -177,45 +190,23 @@ FaceTree::Hit FaceTree::ClosestFace(const Vec3& p, double maxDistance) const
   if (this->Nodes.empty())
     return hit;
   double best2 = maxDistance * maxDistance;
-  int stack[128];
-  int top = 0;
-  stack[top++] = 0;
-  while (top > 0)
-  {
-    const Node& node = this->Nodes[stack[--top]];
-    if (BoxDistance2(node.lo, node.hi, p) > best2)
-      continue;
-    if (node.count > 0)
+  this->Traverse(
+    p,
+    best2,
+    [](const Node&) { return false; },
+    [&](int f)
     {
-      for (int k = node.first; k < node.first + node.count; ++k)
+      const Triangle& t = Mesh.triangles[f];
+      const ClosestPointOnTriangle cp =
+        ClosestPointTriangle(p, Mesh.points[t[0]], Mesh.points[t[1]], Mesh.points[t[2]]);
+      if (cp.squaredDistance < best2 ||
+        (cp.squaredDistance == best2 && (hit.face < 0 || f < hit.face)))
       {
-        const int f = this->Order[k];
-        const Triangle& t = Mesh.triangles[f];
-        const ClosestPointOnTriangle cp =
-          ClosestPointTriangle(p, Mesh.points[t[0]], Mesh.points[t[1]], Mesh.points[t[2]]);
-        if (cp.squaredDistance < best2 ||
-          (cp.squaredDistance == best2 && (hit.face < 0 || f < hit.face)))
-        {
-          best2 = cp.squaredDistance;
-          hit.face = f;
-          hit.point = cp.point;
-        }
+        best2 = cp.squaredDistance;
+        hit.face = f;
+        hit.point = cp.point;
       }
-      continue;
-    }
-    const double dl = BoxDistance2(this->Nodes[node.left].lo, this->Nodes[node.left].hi, p);
-    const double dr = BoxDistance2(this->Nodes[node.right].lo, this->Nodes[node.right].hi, p);
-    if (dl <= dr)
-    {
-      stack[top++] = node.right;
-      stack[top++] = node.left;
-    }
-    else
-    {
-      stack[top++] = node.left;
-      stack[top++] = node.right;
-    }
-  }
+    });
   if (hit.face >= 0)
     hit.distance = std::sqrt(best2);
   return hit;

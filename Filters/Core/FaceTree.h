@@ -68,10 +68,14 @@ private:
     int left, right;  ///< inner node children
   };
   int Build(int first, int count);
+  /// Visits the faces of the leaves not farther than sqrt(best2) from p (best2 may shrink
+  /// during the visit) and not pruned by prune(node).
+  template <typename Prune, typename Visit>
+  void Traverse(const Vec3& p, const double& best2, Prune prune, Visit visit) const;
   /// Leaf test of ClosestCompatibleFace: takes face f when it is compatible and closer
   /// (or as close with a lower id) than best2; true if taken.
-  bool TryFace(
-    const Vec3& p, const Vec3& normal, double cosLimit, int f, double& best2, Hit& hit) const;
+  bool TryFace(const Vec3& p, const Vec3& normal, double cosLimit, int f, double& best2, Hit& hit)
+    const;
   static double BoxDistance2(const Vec3& lo, const Vec3& hi, const Vec3& p);
 
   const PreparedMesh& Mesh;

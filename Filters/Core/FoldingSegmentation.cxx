@@ -17,7 +17,8 @@ bool ValidFace(int f, int numberOfFaces)
 }
 }
 
-FoldingSegmentation LabelFacesByLeaf(const FoldingTree& tree, const std::vector<Vec3>& points,
+FoldingSegmentation LabelFacesByLeaf(const FoldingTree& tree,
+  const std::vector<Vec3>& points,
   const std::vector<Triangle>& triangles)
 {
   const int nf = static_cast<int>(triangles.size());

@@ -12,9 +12,9 @@ namespace foldingmeshes
 {
 enum class FoldingFaceRole
 {
-  Kept = 0,        ///< stored in a leaf
+  Kept = 0,         ///< stored in a leaf
   MirroredAway = 1, ///< removed by a fold; a mirror copy of a stored face stands for it
-  Boundary = 2     ///< stored in a leaf, with a vertex on a segmentation boundary (tear)
+  Boundary = 2      ///< stored in a leaf, with a vertex on a segmentation boundary (tear)
 };
 
 struct FoldingSegmentation
@@ -37,7 +37,8 @@ struct FoldingSegmentation
  * centroid is nearest to the mirror image of its centroid; folds are resolved from the
  * deepest up, so a partner removed by a deeper fold already has its leaf. Deterministic.
  */
-FoldingSegmentation LabelFacesByLeaf(const FoldingTree& tree, const std::vector<Vec3>& points,
+FoldingSegmentation LabelFacesByLeaf(const FoldingTree& tree,
+  const std::vector<Vec3>& points,
   const std::vector<Triangle>& triangles);
 }
 

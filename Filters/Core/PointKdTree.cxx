@@ -21,8 +21,11 @@ int PointKdTree::Build(std::vector<int>& order, int first, int last, int depth)
     return -1;
   const int axis = depth % 3;
   const int middle = first + (last - first) / 2;
-  std::nth_element(order.begin() + first, order.begin() + middle, order.begin() + last,
-    [&](int a, int b) {
+  std::nth_element(order.begin() + first,
+    order.begin() + middle,
+    order.begin() + last,
+    [&](int a, int b)
+    {
       const double pa = this->Points[a][axis], pb = this->Points[b][axis];
       return pa < pb || (pa == pb && a < b);
     });

@@ -27,7 +27,7 @@ private:
   {
     int point = -1; ///< index into Points of the splitting point
     int axis = 0;
-    int left = -1;  ///< node indices, -1 for none
+    int left = -1; ///< node indices, -1 for none
     int right = -1;
   };
   int Build(std::vector<int>& order, int first, int last, int depth);

@@ -43,9 +43,8 @@ bool FirstFoldPlane(vtkMultiBlockDataSet* node, double normal[3])
 {
   for (unsigned b = 0; b < node->GetNumberOfBlocks(); ++b)
   {
-    const char* name = node->HasMetaData(b)
-      ? node->GetMetaData(b)->Get(vtkMultiBlockDataSet::NAME())
-      : nullptr;
+    const char* name =
+      node->HasMetaData(b) ? node->GetMetaData(b)->Get(vtkMultiBlockDataSet::NAME()) : nullptr;
     vtkDataObject* child = node->GetBlock(b);
     if (name && std::string(name) == "Plane" && child)
     {
@@ -129,7 +128,9 @@ Folded Fold(vtkPolyData* mesh, const std::string& name, double firstPlane[3], bo
   return r;
 }
 
-void TestMesh(const std::string& dir, const std::string& file, double minimumCompression,
+void TestMesh(const std::string& dir,
+  const std::string& file,
+  double minimumCompression,
   bool globalPlane)
 {
   std::printf("%s\n", file.c_str());
@@ -147,8 +148,13 @@ void TestMesh(const std::string& dir, const std::string& file, double minimumCom
   if (!a.ok)
     return;
   char text[256];
-  std::snprintf(text, sizeof(text), "%s: compression %.1f%% (at least %.1f%%), height %d",
-    file.c_str(), 100.0 * a.compression, 100.0 * minimumCompression, a.height);
+  std::snprintf(text,
+    sizeof(text),
+    "%s: compression %.1f%% (at least %.1f%%), height %d",
+    file.c_str(),
+    100.0 * a.compression,
+    100.0 * minimumCompression,
+    a.height);
   Check(a.compression >= minimumCompression && a.stored < a.original, text);
 
   if (globalPlane)
@@ -157,8 +163,11 @@ void TestMesh(const std::string& dir, const std::string& file, double minimumCom
     detector->SetInputData(mesh);
     detector->Update();
     const double angle = hasPlane ? AngleDegrees(plane, detector->GetPlaneNormal()) : 180.0;
-    std::snprintf(text, sizeof(text), "%s: first fold %.3f degrees from the detector's plane",
-      file.c_str(), angle);
+    std::snprintf(text,
+      sizeof(text),
+      "%s: first fold %.3f degrees from the detector's plane",
+      file.c_str(),
+      angle);
     Check(hasPlane && angle < 1.0, text);
   }
 
@@ -185,6 +194,7 @@ int main(int argc, char* argv[])
   TestMesh(dir, "table_psb152.off", 0.737, true);
   TestMesh(dir, "triceratops_cgal.off", 0.45, true);
   TestMesh(dir, "anchor_cgal.off", 0.40, true);
-  std::printf("%s\n", Failures ? "TestFoldingTreeRealMeshes FAILED" : "TestFoldingTreeRealMeshes passed");
+  std::printf(
+    "%s\n", Failures ? "TestFoldingTreeRealMeshes FAILED" : "TestFoldingTreeRealMeshes passed");
   return Failures ? 1 : 0;
 }
