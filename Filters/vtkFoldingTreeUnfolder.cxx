@@ -306,6 +306,9 @@ int vtkFoldingTreeUnfolder::RequestWholeData(vtkInformation*,
   options.fillSeamGaps = this->FillSeamGaps;
   options.smoothingIterations = this->SmoothingIterations;
   options.smoothingWeight = this->SmoothingWeight;
+  options.respectErrorBudget = this->RespectErrorBudget;
+  options.weldBoundaries = this->WeldBoundaries;
+  options.weldToleranceScale = this->WeldToleranceScale;
   options.progress = [this](double p)
   {
     this->UpdateProgress(0.9 * p);
@@ -496,6 +499,9 @@ void vtkFoldingTreeUnfolder::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "FillSeamGaps: " << this->FillSeamGaps << "\n";
   os << indent << "SmoothingIterations: " << this->SmoothingIterations << "\n";
   os << indent << "SmoothingWeight: " << this->SmoothingWeight << "\n";
+  os << indent << "RespectErrorBudget: " << this->RespectErrorBudget << "\n";
+  os << indent << "WeldBoundaries: " << this->WeldBoundaries << "\n";
+  os << indent << "WeldToleranceScale: " << this->WeldToleranceScale << "\n";
   os << indent << "OpenGapCount: " << this->OpenGapCount << "\n";
   os << indent << "OpenGapLength: " << this->OpenGapLength << "\n";
   os << indent << "StitchedVertices: " << this->StitchedVertices << "\n";

@@ -118,6 +118,30 @@ public:
 
   ///@{
   /**
+   * Bound every vertex move (fold-line merges, stitches, zipper, smoothing, the final weld)
+   * by the leaf point's ErrorBudget, what the folds above left of the root tolerance, so the
+   * result stays within it (default on). Off: seams close more, the bound may break.
+   */
+  vtkSetMacro(RespectErrorBudget, bool);
+  vtkGetMacro(RespectErrorBudget, bool);
+  vtkBooleanMacro(RespectErrorBudget, bool);
+  ///@}
+
+  ///@{
+  /**
+   * Finally weld the open boundaries of different copies once more (default on): a vertex on
+   * an open edge may merge with, or be zipped into, one of another copy within
+   * WeldToleranceScale x the root tolerance (default 0.5, range 0..10). No gaps are filled.
+   */
+  vtkSetMacro(WeldBoundaries, bool);
+  vtkGetMacro(WeldBoundaries, bool);
+  vtkBooleanMacro(WeldBoundaries, bool);
+  vtkSetClampMacro(WeldToleranceScale, double, 0.0, 10.0);
+  vtkGetMacro(WeldToleranceScale, double);
+  ///@}
+
+  ///@{
+  /**
    * The optional original mesh (input port 1) to measure the output against; see above.
    * SetOriginalData(nullptr) disconnects it.
    */
@@ -162,6 +186,9 @@ protected:
   bool FillSeamGaps = true;
   int SmoothingIterations = 3;
   double SmoothingWeight = 0.5;
+  bool RespectErrorBudget = true;
+  bool WeldBoundaries = true;
+  double WeldToleranceScale = 0.5;
 
   int OpenGapCount = 0;
   double OpenGapLength = 0.0;
