@@ -1,0 +1,176 @@
+// Builder, the class behind BuildFoldingTree (members in FoldingTree*.cxx); not installed.
+#ifndef foldingmeshes_FoldingTreeBuilderInternal_h
+#define foldingmeshes_FoldingTreeBuilderInternal_h
+
+#include "FoldingTreeBuilder.h"
+#include "FoldingWorkMesh.h"
+#include "MeshPreparation.h"
+#include "SurfaceDistance.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <map>
+#include <memory>
+#include <vector>
+
+namespace foldingmeshes
+{
+namespace treebuilder
+{
+class Builder
+{
+public:
+  Builder(const FoldingTreeOptions& options,
+    const std::vector<Vec3>& inputNormals,
+    FoldingTree& tree)
+    : Options(options)
+    , InputNormals(inputNormals)
+    , Tree(tree)
+  {
+    this->MaximumDepth = std::max(1, std::min(options.maximumDepth, MaximumFoldingTreeLevels - 1));
+  }
+
+  void Run(WorkMesh root);
+
+  bool Aborted = false;
+
+private:
+  /// Reports monotonic progress; false once the callback asked to stop.
+  bool Report(double value);
+
+  double Fraction(double faces) const;
+
+  int NewNode(int parent, int depth, double eps, int folds, const WorkMesh& w);
+
+  void MakeLeaf(int index, WorkMesh& w, LeafReason reason);
+
+  bool Prepare(const WorkMesh& w, double eps, PreparedMesh& pm) const;
+
+  /// S minus the faces whose mirrored vertices are not within eps of S (see the header).
+  /// The faces of S as a prepared mesh (face order kept) with the region's vertex normals.
+  static bool PrepareSubset(const WorkMesh& w,
+    const PreparedMesh& pm,
+    const std::vector<char>& S,
+    PreparedMesh& spm);
+
+  /**
+   * Polishes the plane on S alone: Gauss-Newton steps of the point-to-tangent-plane fit
+   * (RefinePlaneFromCorrespondences) with every vertex of S weighted by its area, partners =
+   * closest compatible points of S itself. Detection weighs vertices near the remaining
+   * faces down and can stop a fraction of a degree off; on the trimmed S there are no
+   * outliers. The plane with the lowest area-weighted residual is returned (the input plane
+   * unless a step improves it).
+   */
+  Plane Polish(const WorkMesh& w,
+    const PreparedMesh& pm,
+    const std::vector<char>& S,
+    const Plane& plane,
+    double eps) const;
+
+  /**
+   * For the points `ids` of w: the error a fold through `plane` may add there, the least of
+   * eps and the budgets of the point and of the point of `ids` nearest to its mirror image
+   * (within eps; else the least budget of all): a copy made by the fold lands there.
+   */
+  std::vector<double> MirrorBudget(const WorkMesh& w,
+    const std::vector<int>& ids,
+    const Plane& plane,
+    double eps) const;
+
+  std::vector<char> Trim(const WorkMesh& w,
+    const PreparedMesh& pm,
+    std::vector<char> S,
+    const Plane& plane,
+    double eps) const;
+
+  bool IsAncestorPlane(const Plane& p, uint64_t pathFolds, const Vec3& at, double eps) const;
+
+  /// Builds the subtree of region w; returns its node index.
+  int Build(WorkMesh w, int parent, int depth, double eps, int folds, uint64_t pathFolds);
+
+  /// Nearest of `points` (indices into w.points, bucketed in `cells`) to x within `radius`.
+  struct Buckets
+  {
+    double cell = 1.0;
+    std::map<std::array<long long, 3>, std::vector<int>> cells;
+    std::array<long long, 3> Key(const Vec3& x) const
+    {
+      return { static_cast<long long>(std::floor(x.x() / cell)),
+        static_cast<long long>(std::floor(x.y() / cell)),
+        static_cast<long long>(std::floor(x.z() / cell)) };
+    }
+    void Add(const Vec3& x, int id) { cells[Key(x)].push_back(id); }
+    int Nearest(const std::vector<Vec3>& points, const Vec3& x, double radius) const
+    {
+      const auto c = Key(x);
+      int best = -1;
+      double bestDistance = radius;
+      for (long long dx = -1; dx <= 1; ++dx)
+        for (long long dy = -1; dy <= 1; ++dy)
+          for (long long dz = -1; dz <= 1; ++dz)
+          {
+            auto it = cells.find({ c[0] + dx, c[1] + dy, c[2] + dz });
+            if (it == cells.end())
+              continue;
+            for (int v : it->second)
+            {
+              const double d = (points[v] - x).norm();
+              if (d <= bestDistance && (best < 0 || d < bestDistance || v < best))
+              {
+                bestDistance = d;
+                best = v;
+              }
+            }
+          }
+      return best;
+    }
+  };
+
+  /**
+   * Tear vertices that the fold at `depth` removes (not used by a kept face) are recorded on
+   * kept vertices of the region's boundary (see MirroredFlag): each removed tear vertex t on
+   * the nearest one to reflect(t), and each kept boundary vertex v whose mirror image lies
+   * within eps of a removed tear vertex gets that vertex's flags. Both directions, because
+   * with approximately symmetric tessellations the two sides of the seam need not have the
+   * same number of vertices; the zipper of the unfolder then closes the seam.
+   */
+  void TransferDiscardedTears(WorkMesh& w,
+    const std::vector<char>& used,
+    const Plane& plane,
+    int depth,
+    double eps) const;
+
+  /**
+   * Fold lines of ancestor folds in the mirror copies: a boundary vertex v of the kept half
+   * whose copy R_M(R_f(v)) (reflected by this fold f, then by the ancestor folds M between
+   * an ancestor fold a and f, deepest first) lies within a's snap distance of a's plane gets
+   * the plane flag (a, M + f). Only boundary vertices can lie on a fold line; M ranges over
+   * all subsets (at most 2^(maximumFolds - 1)). Copies without this fold were flagged by
+   * earlier folds. Plane flags of removed vertices are not transferred: this computes the
+   * flags from the geometry the unfolder will produce.
+   */
+  void FlagMirroredFoldLines(WorkMesh& w,
+    const std::vector<char>& keep,
+    const Plane& plane,
+    int depth,
+    uint64_t pathFolds) const;
+
+  /// Turns node `index` (region w) into a folding node and builds the kept half below it.
+  void
+  Fold(int index, WorkMesh w, Plane plane, int depth, double eps, int folds, uint64_t pathFolds);
+
+  const FoldingTreeOptions& Options;
+  const std::vector<Vec3>& InputNormals;
+  FoldingTree& Tree;
+  std::unique_ptr<SurfaceDistanceQuery> ToInput; ///< distances to the input surface
+  std::vector<Plane> PlaneAtDepth;
+  std::vector<double> EpsilonAtDepth;
+  int MaximumDepth = 48;
+  double DoneFaces = 0.0;
+  double LastProgress = 0.0;
+};
+}
+}
+
+#endif

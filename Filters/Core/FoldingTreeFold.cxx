@@ -1,0 +1,418 @@
+// Builder::Fold: projection/sliding onto the plane, error-budget charging, tear flags.
+#include "FoldingTreeBuilderInternal.h"
+
+#include "CandidatePlanes.h"
+#include "MeshPreparation.h"
+#include "MirrorDistance.h"
+#include "RegionGrowing.h"
+#include "SurfaceDistance.h"
+
+#include <Eigen/Dense>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <limits>
+#include <map>
+#include <memory>
+#include <numeric>
+
+namespace foldingmeshes
+{
+namespace treebuilder
+{
+namespace
+{
+/**
+ * The point of the intersection of the planes closest to x (planes[0] is the new fold plane,
+ * the others ancestors' planes x already lies on). Planes nearly dependent on the others
+ * (e.g. three planes through almost the same line) are treated as redundant (relative
+ * singular-value threshold 1e-3); if the result is inconsistent - it misses a plane by more
+ * than `tolerance`, or moves x much farther than the distances to the planes - x is only
+ * projected onto planes[0] and false is returned (the caller then drops the ancestors'
+ * flags the point no longer satisfies).
+ */
+bool ProjectOntoPlanes(Vec3& x, const std::vector<Plane>& planes, double tolerance)
+{
+  if (planes.size() == 1)
+  {
+    x = planes[0].Project(x);
+    return true;
+  }
+  Eigen::MatrixXd A(planes.size(), 3);
+  Eigen::VectorXd r(planes.size());
+  double largest = 0.0;
+  for (size_t k = 0; k < planes.size(); ++k)
+  {
+    A.row(k) = planes[k].normal.transpose();
+    r[k] = -planes[k].SignedDistance(x);
+    largest = std::max(largest, std::abs(r[k]));
+  }
+  Eigen::CompleteOrthogonalDecomposition<Eigen::MatrixXd> cod(A);
+  cod.setThreshold(1e-3);
+  const Eigen::Vector3d delta = cod.solve(r);
+  const Vec3 y = x + delta;
+  bool consistent = delta.allFinite() && delta.norm() <= 4.0 * largest + tolerance;
+  for (const Plane& p : planes)
+    consistent = consistent && std::abs(p.SignedDistance(y)) <= tolerance;
+  x = consistent ? y : planes[0].Project(x);
+  return consistent;
+}
+}
+
+void Builder::TransferDiscardedTears(WorkMesh& w,
+  const std::vector<char>& used,
+  const Plane& plane,
+  int depth,
+  double eps) const
+{
+  const uint64_t bit = uint64_t(1) << depth;
+  std::vector<int> lost;
+  for (int v = 0; v < w.NumberOfPoints(); ++v)
+    if (!used[v] && (w.tear[v] != 0 || !w.mirrorFlags[v].empty()))
+      lost.push_back(v);
+  if (lost.empty())
+    return;
+  // Boundary vertices of the region (all its faces, before the fold).
+  std::map<std::pair<int, int>, int> edges;
+  for (const Triangle& t : w.triangles)
+    for (int k = 0; k < 3; ++k)
+      ++edges[{ std::min(t[k], t[(k + 1) % 3]), std::max(t[k], t[(k + 1) % 3]) }];
+  std::vector<char> boundary(w.points.size(), 0);
+  for (const auto& e : edges)
+    if (e.second == 1)
+      boundary[e.first.first] = boundary[e.first.second] = 1;
+  Buckets kept, removed;
+  kept.cell = removed.cell = std::max(eps, 1e-12 * this->Tree.diagonal);
+  for (int v = 0; v < w.NumberOfPoints(); ++v)
+    if (used[v] && boundary[v])
+      kept.Add(w.points[v], v);
+  for (int t : lost)
+    removed.Add(w.points[t], t);
+  auto transfer = [&](int t, int v)
+  {
+    auto& into = w.mirrorFlags[v];
+    for (int level = 0; level < depth; ++level)
+      if (w.tear[t] & (uint64_t(1) << level))
+        into.push_back({ 2 * level, bit });
+    for (const auto& e : w.mirrorFlags[t])
+      if (e.first % 2 == 0) // plane flags are recomputed by FlagMirroredFoldLines
+        into.push_back({ e.first, e.second | bit });
+  };
+  std::vector<std::pair<int, int>> pairs; // (kept, removed)
+  for (int t : lost)
+  {
+    const int v = kept.Nearest(w.points, plane.Reflect(w.points[t]), eps);
+    if (v >= 0)
+      pairs.push_back({ v, t });
+  }
+  for (int v = 0; v < w.NumberOfPoints(); ++v)
+    if (used[v] && boundary[v])
+    {
+      const int t = removed.Nearest(w.points, plane.Reflect(w.points[v]), eps);
+      if (t >= 0)
+        pairs.push_back({ v, t });
+    }
+  for (const auto& pr : pairs)
+    transfer(pr.second, pr.first);
+  for (const auto& pr : pairs)
+  {
+    auto& into = w.mirrorFlags[pr.first];
+    std::sort(into.begin(), into.end());
+    into.erase(std::unique(into.begin(), into.end()), into.end());
+  }
+}
+
+void Builder::FlagMirroredFoldLines(WorkMesh& w,
+  const std::vector<char>& keep,
+  const Plane& plane,
+  int depth,
+  uint64_t pathFolds) const
+{
+  std::vector<int> ancestors; // increasing depth
+  for (int d = 0; d < depth; ++d)
+    if (pathFolds & (uint64_t(1) << d))
+      ancestors.push_back(d);
+  if (ancestors.empty())
+    return;
+  std::map<std::pair<int, int>, int> edges;
+  for (int f = 0; f < w.NumberOfFaces(); ++f)
+    if (keep[f])
+      for (int k = 0; k < 3; ++k)
+      {
+        const int a = w.triangles[f][k], b = w.triangles[f][(k + 1) % 3];
+        ++edges[{ std::min(a, b), std::max(a, b) }];
+      }
+  std::vector<char> boundary(w.points.size(), 0);
+  for (const auto& e : edges)
+    if (e.second == 1)
+      boundary[e.first.first] = boundary[e.first.second] = 1;
+  const uint64_t bit = uint64_t(1) << depth;
+  for (int v = 0; v < w.NumberOfPoints(); ++v)
+  {
+    if (!boundary[v])
+      continue;
+    const Vec3 x = plane.Reflect(w.points[v]);
+    for (size_t i = 0; i < ancestors.size(); ++i)
+    {
+      const int a = ancestors[i];
+      const Plane& pa = this->PlaneAtDepth[a];
+      const double tolerance = std::max(
+        this->Options.planeSnapFraction * this->EpsilonAtDepth[a], 1e-12 * this->Tree.diagonal);
+      // Folds between a and this fold, deepest first.
+      std::vector<int> between(ancestors.begin() + i + 1, ancestors.end());
+      std::reverse(between.begin(), between.end());
+      const size_t combinations = size_t(1) << between.size();
+      for (size_t m = 0; m < combinations; ++m)
+      {
+        Vec3 y = x;
+        uint64_t mask = bit;
+        for (size_t k = 0; k < between.size(); ++k)
+          if (m & (size_t(1) << k))
+          {
+            y = this->PlaneAtDepth[between[k]].Reflect(y);
+            mask |= uint64_t(1) << between[k];
+          }
+        if (std::abs(pa.SignedDistance(y)) <= tolerance)
+          w.mirrorFlags[v].push_back({ 2 * a + 1, mask });
+      }
+    }
+    std::sort(w.mirrorFlags[v].begin(), w.mirrorFlags[v].end());
+    w.mirrorFlags[v].erase(
+      std::unique(w.mirrorFlags[v].begin(), w.mirrorFlags[v].end()), w.mirrorFlags[v].end());
+  }
+}
+
+void Builder::Fold(int index,
+  WorkMesh w,
+  Plane plane,
+  int depth,
+  double eps,
+  int folds,
+  uint64_t pathFolds)
+{
+  const FoldingTreeOptions& O = this->Options;
+  const int nf = w.NumberOfFaces();
+  int positive = 0, negative = 0;
+  for (const Triangle& t : w.triangles)
+  {
+    const Vec3 c = (w.points[t[0]] + w.points[t[1]] + w.points[t[2]]) / 3.0;
+    const double s = plane.SignedDistance(c);
+    positive += s > 0;
+    negative += s < 0;
+  }
+  const bool keepPositive =
+    O.keepSide == KeepSide::MoreFaces ? positive >= negative : positive <= negative;
+  if (!keepPositive)
+    plane.normal = -plane.normal;
+
+  const double snap = std::max(O.planeSnapFraction * eps, 1e-12 * this->Tree.diagonal);
+  std::vector<int> side(w.points.size());
+  for (int v = 0; v < w.NumberOfPoints(); ++v)
+  {
+    const double s = plane.SignedDistance(w.points[v]);
+    side[v] = s > snap ? 1 : (s < -snap ? -1 : 0);
+  }
+  std::vector<char> keep(nf, 0);
+  std::vector<int> discarded;
+  for (int f = 0; f < nf; ++f)
+  {
+    const Triangle& t = w.triangles[f];
+    const int hi = std::max({ side[t[0]], side[t[1]], side[t[2]] });
+    const int lo = std::min({ side[t[0]], side[t[1]], side[t[2]] });
+    keep[f] = hi == 1 || (hi == 0 && lo == 0);
+    if (!keep[f])
+      discarded.push_back(w.faceOrig[f]);
+  }
+  std::vector<char> used(w.points.size(), 0);
+  for (int f = 0; f < nf; ++f)
+    if (keep[f])
+      for (int v : w.triangles[f])
+        used[v] = 1;
+  // The error this fold adds to unfold(): the largest distance of a mirrored vertex of the
+  // region to the region (both halves: either may be the one reproduced), before projection.
+  TriangleMesh region;
+  region.points = w.points;
+  region.triangles = w.triangles;
+  const SurfaceDistanceQuery toRegion(region);
+  // Per kept point: what the copies made by this fold add there. A kept point's mirror
+  // copy must lie near the input (error: its distance to the input); a discarded point must
+  // be reproduced by the mirror copy of the kept half (error: the distance of its mirror
+  // image to the region), charged to the kept point nearest to that image. Either lands
+  // where the budget of the partner point applies too.
+  std::vector<double> charge(w.points.size(), 0.0),
+    limit(w.points.size(), std::numeric_limits<double>::infinity());
+  double mirrorError = 0.0;
+  if (O.errorBudget)
+  {
+    std::vector<Vec3> mirrored(w.points.size());
+    for (int v = 0; v < w.NumberOfPoints(); ++v)
+      mirrored[v] = plane.Reflect(w.points[v]);
+    const std::vector<double> toS = toRegion.Distances(mirrored);
+    const std::vector<double> toM = this->ToInput->Distances(mirrored);
+    Buckets all, kept;
+    all.cell = kept.cell = std::max(eps, 1e-12 * this->Tree.diagonal);
+    double least = std::numeric_limits<double>::infinity();
+    for (int v = 0; v < w.NumberOfPoints(); ++v)
+    {
+      all.Add(w.points[v], v);
+      if (used[v])
+        kept.Add(w.points[v], v);
+      least = std::min(least, w.budget[v]);
+    }
+    for (int v = 0; v < w.NumberOfPoints(); ++v)
+    {
+      const double e = used[v] ? toM[v] : toS[v];
+      mirrorError = std::max(mirrorError, e);
+      const int k = used[v] ? v : kept.Nearest(w.points, mirrored[v], eps);
+      if (k < 0)
+        continue; // no kept point there: its copy reproduces nothing of v
+      const int p = all.Nearest(w.points, mirrored[v], eps);
+      charge[k] = std::max(charge[k], e);
+      limit[k] = std::min({ limit[k], w.budget[v], p >= 0 ? w.budget[p] : least });
+    }
+    for (int v = 0; v < w.NumberOfPoints(); ++v)
+      limit[v] = std::min(limit[v], w.budget[v]);
+  }
+  this->TransferDiscardedTears(w, used, plane, depth, eps);
+  int projected = 0;
+  const uint64_t bit = uint64_t(1) << depth;
+  // Sliding (see FoldingTreeOptions::slideOntoPlane): per discarded-side vertex, the point
+  // where one of its edges to a kept-side vertex of a kept face crosses the plane, nearest
+  // to its orthogonal projection. That point lies on the input surface.
+  std::vector<Vec3> slide(w.points.size());
+  std::vector<char> slides(w.points.size(), 0);
+  if (O.slideOntoPlane || O.errorBudget)
+  {
+    std::vector<double> slideMove(w.points.size(), std::numeric_limits<double>::infinity());
+    for (int f = 0; f < nf; ++f)
+      if (keep[f])
+        for (int k = 0; k < 3; ++k)
+          for (int j = 1; j <= 2; ++j)
+          {
+            const int v = w.triangles[f][k], a = w.triangles[f][(k + j) % 3];
+            if (side[v] >= 0 || side[a] <= 0)
+              continue;
+            const double sv = plane.SignedDistance(w.points[v]);
+            const double sa = plane.SignedDistance(w.points[a]);
+            const Vec3 q = w.points[v] + (sv / (sv - sa)) * (w.points[a] - w.points[v]);
+            const double move = (q - plane.Project(w.points[v])).norm();
+            if (move < slideMove[v])
+            {
+              slideMove[v] = move;
+              slide[v] = plane.Project(q); // exactly on the plane
+              slides[v] = 1;
+            }
+          }
+  }
+  for (int v = 0; v < w.NumberOfPoints(); ++v)
+  {
+    if (!used[v] || side[v] > 0)
+      continue;
+    bool onAncestorPlane = false;
+    for (int d = 0; d < depth; ++d)
+      onAncestorPlane = onAncestorPlane ||
+        ((w.onPlane[v] & (uint64_t(1) << d)) && (pathFolds & (uint64_t(1) << d)));
+    // Projecting is the default; sliding when asked for, or when the projected point
+    // would be farther from the region than the error budget left there.
+    bool slideIt = slides[v] && !onAncestorPlane && side[v] < 0;
+    if (slideIt && !O.slideOntoPlane)
+      slideIt = charge[v] + toRegion.Distance(plane.Project(w.points[v])) > limit[v];
+    if (slideIt)
+    {
+      w.points[v] = slide[v];
+      w.onPlane[v] |= bit;
+      w.projected[v] = 1;
+      ++projected;
+      continue;
+    }
+    std::vector<Plane> constraints{ plane };
+    for (int d = 0; d < depth; ++d)
+      if ((w.onPlane[v] & (uint64_t(1) << d)) && (pathFolds & (uint64_t(1) << d)))
+        constraints.push_back(this->PlaneAtDepth[d]);
+    const double tolerance = 1e-9 * this->Tree.diagonal;
+    if (!ProjectOntoPlanes(w.points[v], constraints, tolerance))
+      for (int d = 0; d < depth; ++d)
+        if ((w.onPlane[v] & (uint64_t(1) << d)) &&
+          std::abs(this->PlaneAtDepth[d].SignedDistance(w.points[v])) > tolerance)
+          w.onPlane[v] &= ~(uint64_t(1) << d);
+    w.onPlane[v] |= bit;
+    if (side[v] < 0)
+    {
+      w.projected[v] = 1;
+      ++projected;
+    }
+  }
+
+  // ... plus the largest distance of a point projected (or snapped) onto the plane(s) to
+  // the region as it was.
+  double projectionError = 0.0;
+  if (O.errorBudget)
+  {
+    std::vector<Vec3> moved;
+    std::vector<int> movedPoint, movedFace;
+    for (int v = 0; v < w.NumberOfPoints(); ++v)
+      if (used[v] && side[v] <= 0)
+      {
+        moved.push_back(w.points[v]);
+        movedPoint.push_back(v);
+      }
+    // Faces changed by a move: their centroids too (a slid vertex is on the surface, its
+    // faces need not be).
+    for (int f = 0; f < nf; ++f)
+    {
+      const Triangle& t = w.triangles[f];
+      if (keep[f] && (side[t[0]] < 0 || side[t[1]] < 0 || side[t[2]] < 0))
+      {
+        moved.push_back((w.points[t[0]] + w.points[t[1]] + w.points[t[2]]) / 3.0);
+        movedFace.push_back(f);
+      }
+    }
+    const std::vector<double> d = toRegion.Distances(moved);
+    std::vector<double> displacement(w.points.size(), 0.0);
+    for (size_t k = 0; k < movedPoint.size(); ++k)
+      displacement[movedPoint[k]] = std::max(displacement[movedPoint[k]], d[k]);
+    for (size_t k = 0; k < movedFace.size(); ++k)
+      for (int v : w.triangles[movedFace[k]])
+        displacement[v] = std::max(displacement[v], d[movedPoint.size() + k]);
+    for (int v = 0; v < w.NumberOfPoints(); ++v)
+    {
+      projectionError = std::max(projectionError, displacement[v]);
+      w.budget[v] = std::max(0.0, limit[v] - charge[v] - displacement[v]);
+    }
+  }
+  double childBudget = eps;
+  for (int v = 0; v < w.NumberOfPoints(); ++v)
+    if (used[v])
+      childBudget = std::min(childBudget, w.budget[v]);
+  if (std::getenv("FOLDINGMESHES_DEBUG"))
+    std::printf("[fold] node %d depth %d eps %.3g: mirror error %.3g, projection "
+                "error %.3g, least child budget %.3g\n",
+      index,
+      depth,
+      eps,
+      mirrorError,
+      projectionError,
+      childBudget);
+
+  this->FlagMirroredFoldLines(w, keep, plane, depth, pathFolds);
+
+  FoldingNode& node = this->Tree.nodes[index];
+  node.kind = FoldingNodeKind::Folding;
+  node.plane = plane;
+  node.discardedFaces = static_cast<int>(discarded.size());
+  node.projectedPoints = projected;
+  std::sort(discarded.begin(), discarded.end());
+  node.discardedOriginalFaces = std::move(discarded);
+  this->DoneFaces += node.discardedFaces;
+  this->Report(this->Fraction(this->DoneFaces));
+
+  this->PlaneAtDepth[depth] = plane;
+  this->EpsilonAtDepth[depth] = eps;
+  WorkMesh half = Extract(w, keep);
+  this->Build(std::move(half), index, depth + 1, 0.5 * eps, folds + 1, pathFolds | bit);
+}
+}
+}

@@ -1,0 +1,173 @@
+// Builder: trimming S to its mirror-consistent part and polishing the fold plane on S.
+#include "FoldingTreeBuilderInternal.h"
+
+#include "CandidatePlanes.h"
+#include "MeshPreparation.h"
+#include "MirrorDistance.h"
+#include "RegionGrowing.h"
+#include "SurfaceDistance.h"
+
+#include <Eigen/Dense>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <limits>
+#include <map>
+#include <memory>
+#include <numeric>
+
+namespace foldingmeshes
+{
+namespace treebuilder
+{
+bool Builder::PrepareSubset(const WorkMesh& w,
+  const PreparedMesh& pm,
+  const std::vector<char>& S,
+  PreparedMesh& spm)
+{
+  WorkMesh sub = Extract(w, S);
+  if (sub.NumberOfFaces() == 0)
+    return false;
+  TriangleMesh soup;
+  soup.points = sub.points;
+  soup.triangles = sub.triangles;
+  // The region's vertex normals (not the sub-mesh's), as detection used them.
+  std::vector<Vec3> normals(sub.NumberOfPoints());
+  int next = 0;
+  std::vector<char> used(w.points.size(), 0);
+  for (int f = 0; f < w.NumberOfFaces(); ++f)
+    if (S[f])
+      for (int v : w.triangles[f])
+        used[v] = 1;
+  for (int v = 0; v < w.NumberOfPoints(); ++v)
+    if (used[v])
+      normals[next++] = pm.vertexNormals[v];
+  std::string error;
+  return PrepareMesh(soup, normals, spm, error);
+}
+
+Plane Builder::Polish(const WorkMesh& w,
+  const PreparedMesh& pm,
+  const std::vector<char>& S,
+  const Plane& plane,
+  double eps) const
+{
+  PreparedMesh spm;
+  if (!PrepareSubset(w, pm, S, spm))
+    return plane;
+  MirrorDistance distances(spm, this->Options.symmetry.compatibilityAngle);
+  std::vector<double> d;
+  std::vector<Vec3> closest, closestNormals;
+  Plane current = plane, best = plane;
+  double bestCost = std::numeric_limits<double>::infinity();
+  for (int iteration = 0; iteration < 12; ++iteration)
+  {
+    distances.Compute(current, DistanceMetric::Fine, eps, d, &closest, &closestNormals);
+    double cost = 0.0;
+    std::vector<double> weights(d.size(), 0.0);
+    for (size_t v = 0; v < d.size(); ++v)
+    {
+      const double dv = std::isfinite(d[v]) ? d[v] : eps;
+      cost += spm.vertexAreas[v] * dv * dv;
+      if (std::isfinite(d[v]))
+        weights[v] = spm.vertexAreas[v];
+    }
+    if (!(cost < bestCost))
+      break;
+    bestCost = cost;
+    best = current;
+    Plane next;
+    if (!RefinePlaneFromCorrespondences(
+          spm.points, closest, closestNormals, weights, current, next))
+      break;
+    const bool small = PlaneAngleDegrees(next, current) < 1e-7 &&
+      PlaneOffsetAt(current, next, next.origin) < 1e-12 * this->Tree.diagonal;
+    current = next;
+    if (small)
+      break;
+  }
+  return CanonicalPlane(best, plane.origin);
+}
+
+std::vector<double> Builder::MirrorBudget(const WorkMesh& w,
+  const std::vector<int>& ids,
+  const Plane& plane,
+  double eps) const
+{
+  Buckets buckets;
+  buckets.cell = std::max(eps, 1e-12 * this->Tree.diagonal);
+  double least = eps;
+  for (int v : ids)
+  {
+    buckets.Add(w.points[v], v);
+    least = std::min(least, w.budget[v]);
+  }
+  std::vector<double> limit(ids.size());
+  for (size_t k = 0; k < ids.size(); ++k)
+  {
+    const int v = ids[k];
+    const int p = buckets.Nearest(w.points, plane.Reflect(w.points[v]), eps);
+    limit[k] = std::min({ eps, w.budget[v], p >= 0 ? w.budget[p] : least });
+  }
+  return limit;
+}
+
+std::vector<char> Builder::Trim(const WorkMesh& w,
+  const PreparedMesh& pm,
+  std::vector<char> S,
+  const Plane& plane,
+  double eps) const
+{
+  for (int iteration = 0; iteration < 8; ++iteration)
+  {
+    PreparedMesh spm;
+    if (!PrepareSubset(w, pm, S, spm))
+      break;
+    MirrorDistance distances(spm, this->Options.symmetry.compatibilityAngle);
+    std::vector<double> d;
+    distances.Compute(plane, DistanceMetric::Fine, eps, d);
+    if (this->Options.errorBudget)
+    {
+      // The vertices of S are spm's points, in increasing order of their ids in w.
+      std::vector<int> ids;
+      {
+        std::vector<char> inS(w.points.size(), 0);
+        for (int f = 0; f < w.NumberOfFaces(); ++f)
+          if (S[f])
+            for (int v : w.triangles[f])
+              inS[v] = 1;
+        for (int v = 0; v < w.NumberOfPoints(); ++v)
+          if (inS[v])
+            ids.push_back(v);
+      }
+      const std::vector<double> limit = this->MirrorBudget(w, ids, plane, eps);
+      for (size_t k = 0; k < d.size() && k < ids.size(); ++k)
+        if (!(d[k] < limit[k]))
+          d[k] = std::numeric_limits<double>::infinity();
+    }
+    const std::vector<char> ok = FacesWithVerticesWithin(spm, d, eps, true);
+    std::vector<char> next = S;
+    bool changed = false;
+    int k = 0;
+    for (int f = 0; f < w.NumberOfFaces(); ++f)
+      if (S[f])
+      {
+        // Degenerate faces have no distance of their own: judged with their neighbours.
+        if (!ok[k] && !spm.faceDegenerate[k])
+        {
+          next[f] = 0;
+          changed = true;
+        }
+        ++k;
+      }
+    if (!changed)
+      break;
+    S = LargestConnectedRegion(pm, next);
+  }
+  return S;
+}
+}
+}

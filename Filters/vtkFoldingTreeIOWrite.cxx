@@ -1,0 +1,429 @@
+// FoldingTreeToMultiBlock: core FoldingTree -> vtkMultiBlockDataSet (vtkFoldingTreeIO.h).
+#include "vtkFoldingTreeIO.h"
+
+#include <vtkCellArray.h>
+#include <vtkCellArrayIterator.h>
+#include <vtkCellData.h>
+#include <vtkCompositeDataSet.h>
+#include <vtkDataArray.h>
+#include <vtkDoubleArray.h>
+#include <vtkFieldData.h>
+#include <vtkIdTypeArray.h>
+#include <vtkInformation.h>
+#include <vtkIntArray.h>
+#include <vtkMultiBlockDataSet.h>
+#include <vtkNew.h>
+#include <vtkPointData.h>
+#include <vtkPoints.h>
+#include <vtkPolyData.h>
+#include <vtkSmartPointer.h>
+#include <vtkStringArray.h>
+#include <vtkTypeUInt64Array.h>
+#include <vtkUnsignedCharArray.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <limits>
+#include <sstream>
+
+namespace foldingmeshes
+{
+namespace
+{
+// ---------------------------------------------------------------- writing helpers
+void AddInt(vtkFieldData* fd, const char* name, long long value)
+{
+  vtkNew<vtkIntArray> a;
+  a->SetName(name);
+  a->SetNumberOfTuples(1);
+  a->SetValue(0, static_cast<int>(value));
+  fd->AddArray(a);
+}
+
+void AddDouble(vtkFieldData* fd, const char* name, const double* values, int n = 1)
+{
+  vtkNew<vtkDoubleArray> a;
+  a->SetName(name);
+  a->SetNumberOfComponents(n);
+  a->SetNumberOfTuples(1);
+  for (int k = 0; k < n; ++k)
+    a->SetComponent(0, k, values[k]);
+  fd->AddArray(a);
+}
+
+void AddIntList(vtkFieldData* fd, const char* name, const std::vector<int>& values)
+{
+  vtkNew<vtkIntArray> a;
+  a->SetName(name);
+  a->SetNumberOfTuples(static_cast<vtkIdType>(values.size()));
+  for (size_t k = 0; k < values.size(); ++k)
+    a->SetValue(static_cast<vtkIdType>(k), values[k]);
+  fd->AddArray(a);
+}
+
+void AddString(vtkFieldData* fd, const char* name, const char* value)
+{
+  vtkNew<vtkStringArray> a;
+  a->SetName(name);
+  a->InsertNextValue(value);
+  fd->AddArray(a);
+}
+
+/// Node metadata shared by every kind.
+void AddNodeMetadata(vtkFieldData* fd, const FoldingNode& node, int index)
+{
+  AddInt(fd, "FoldingNodeKind", static_cast<int>(node.kind));
+  AddInt(fd, "FoldingNodeIndex", index);
+  AddInt(fd, "FoldingNodeDepth", node.depth);
+  AddDouble(fd, "FoldingEpsilon", &node.epsilon);
+  AddInt(fd, "FoldingFoldsAbove", node.foldsAbove);
+  AddInt(fd, "FoldingRegionFaces", node.numberOfFaces);
+  AddDouble(fd, "FoldingRegionArea", &node.area);
+  AddIntList(fd, "FoldingRegionOriginalFaces", node.originalFaces);
+  AddDouble(fd, "SymmetricAreaFraction", &node.symmetricAreaFraction);
+  AddInt(fd, "DetectionRun", node.detectionRun ? 1 : 0);
+}
+
+/// Copies the arrays of `src` to `dst` (sized n) picking tuple ids[i] for tuple i; active
+/// attributes follow by name.
+void CopyArraysById(vtkDataSetAttributes* src,
+  vtkDataSetAttributes* dst,
+  const std::vector<int>& ids)
+{
+  const vtkIdType n = static_cast<vtkIdType>(ids.size());
+  for (int a = 0; a < src->GetNumberOfArrays(); ++a)
+  {
+    vtkAbstractArray* in = src->GetAbstractArray(a);
+    if (!in || !in->GetName())
+      continue;
+    vtkSmartPointer<vtkAbstractArray> out = vtk::TakeSmartPointer(in->NewInstance());
+    out->SetName(in->GetName());
+    out->SetNumberOfComponents(in->GetNumberOfComponents());
+    for (int c = 0; c < in->GetNumberOfComponents(); ++c)
+      if (in->GetComponentName(c))
+        out->SetComponentName(c, in->GetComponentName(c));
+    out->SetNumberOfTuples(n);
+    for (vtkIdType i = 0; i < n; ++i)
+      out->SetTuple(i, ids[i], in);
+    dst->AddArray(out);
+  }
+  for (int attribute = 0; attribute < vtkDataSetAttributes::NUM_ATTRIBUTES; ++attribute)
+    if (vtkAbstractArray* active = src->GetAbstractAttribute(attribute))
+      if (active->GetName())
+        dst->SetActiveAttribute(active->GetName(), attribute);
+}
+
+/// A quad on `plane` covering the projection of `points` (10% margin).
+void BuildPlaneGlyph(const std::vector<Vec3>& points,
+  const Plane& plane,
+  double diagonal,
+  vtkPolyData* glyph)
+{
+  const Vec3 n = plane.normal;
+  const Vec3 helper = std::abs(n.x()) < 0.9 ? Vec3::UnitX() : Vec3::UnitY();
+  const Vec3 u = n.cross(helper).normalized();
+  const Vec3 v = n.cross(u);
+  double lo[2] = { 0.0, 0.0 }, hi[2] = { 0.0, 0.0 };
+  bool any = false;
+  for (const Vec3& p : points)
+  {
+    const Vec3 q = p - plane.origin;
+    const double c[2] = { q.dot(u), q.dot(v) };
+    for (int k = 0; k < 2; ++k)
+    {
+      lo[k] = any ? std::min(lo[k], c[k]) : c[k];
+      hi[k] = any ? std::max(hi[k], c[k]) : c[k];
+    }
+    any = true;
+  }
+  for (int k = 0; k < 2; ++k)
+  {
+    const double margin = 0.1 * (hi[k] - lo[k]) + 1e-3 * diagonal;
+    lo[k] -= margin;
+    hi[k] += margin;
+  }
+  vtkNew<vtkPoints> corners;
+  corners->SetDataTypeToDouble();
+  const double uv[4][2] = {
+    { lo[0], lo[1] }, { hi[0], lo[1] }, { hi[0], hi[1] }, { lo[0], hi[1] }
+  };
+  for (const auto& c : uv)
+  {
+    const Vec3 p = plane.origin + c[0] * u + c[1] * v;
+    corners->InsertNextPoint(p.x(), p.y(), p.z());
+  }
+  vtkNew<vtkCellArray> quads;
+  const vtkIdType ids[4] = { 0, 1, 2, 3 };
+  quads->InsertNextCell(4, ids);
+  glyph->SetPoints(corners);
+  glyph->SetPolys(quads);
+}
+
+/**
+ * One point (no cell) at the centroid of `points`: XML multiblock writers skip data sets
+ * without points, so the metadata blocks "Node" and "Tree" carry this marker point.
+ */
+void SetMarkerPoint(const std::vector<Vec3>& points, vtkPolyData* block)
+{
+  Vec3 centroid = Vec3::Zero();
+  for (const Vec3& p : points)
+    centroid += p;
+  if (!points.empty())
+    centroid /= static_cast<double>(points.size());
+  vtkNew<vtkPoints> marker;
+  marker->SetDataTypeToDouble();
+  marker->InsertNextPoint(centroid.data());
+  block->SetPoints(marker);
+}
+
+void CollectSubtreePoints(const FoldingTree& tree, int index, std::vector<Vec3>& points)
+{
+  const FoldingNode& node = tree.nodes[index];
+  if (node.kind == FoldingNodeKind::Leaf)
+    points.insert(points.end(), node.mesh.points.begin(), node.mesh.points.end());
+  for (int c : node.children)
+    CollectSubtreePoints(tree, c, points);
+}
+
+std::string BlockName(const FoldingTree& tree, int index)
+{
+  const FoldingNode& node = tree.nodes[index];
+  std::ostringstream os;
+  switch (node.kind)
+  {
+    case FoldingNodeKind::Leaf:
+      os << "Leaf " << index;
+      break;
+    case FoldingNodeKind::Folding:
+      os << "Fold " << index << " (depth " << node.depth << ")";
+      break;
+    case FoldingNodeKind::Segmentation:
+      os << "Segmentation " << index << " (depth " << node.depth << ")";
+      break;
+  }
+  return os.str();
+}
+
+struct Writer
+{
+  const FoldingTree& Tree;
+  vtkPolyData* Input;
+
+  vtkSmartPointer<vtkDataObject> Node(int index)
+  {
+    const FoldingNode& node = this->Tree.nodes[index];
+    if (node.kind == FoldingNodeKind::Leaf)
+      return this->Leaf(index);
+    auto block = vtkSmartPointer<vtkMultiBlockDataSet>::New();
+    unsigned int b = 0;
+    for (int c : node.children)
+    {
+      block->SetBlock(b, this->Node(c));
+      block->GetMetaData(b)->Set(vtkCompositeDataSet::NAME(), BlockName(this->Tree, c).c_str());
+      ++b;
+    }
+    vtkNew<vtkPolyData> meta;
+    AddNodeMetadata(meta->GetFieldData(), node, index);
+    std::vector<Vec3> points;
+    CollectSubtreePoints(this->Tree, index, points);
+    if (node.kind == FoldingNodeKind::Segmentation)
+    {
+      SetMarkerPoint(points, meta);
+    }
+    else
+    {
+      BuildPlaneGlyph(points, node.plane, this->Tree.diagonal, meta);
+      vtkFieldData* fd = meta->GetFieldData();
+      AddDouble(fd, "FoldingPlaneOrigin", node.plane.origin.data(), 3);
+      AddDouble(fd, "FoldingPlaneNormal", node.plane.normal.data(), 3);
+      AddInt(fd, "FoldingDiscardedFaces", node.discardedFaces);
+      AddInt(fd, "FoldingProjectedPoints", node.projectedPoints);
+      AddIntList(fd, "FoldingDiscardedOriginalFaces", node.discardedOriginalFaces);
+    }
+    block->SetBlock(b, meta);
+    block->GetMetaData(b)->Set(
+      vtkCompositeDataSet::NAME(), node.kind == FoldingNodeKind::Folding ? "Plane" : "Node");
+    return block;
+  }
+
+  vtkSmartPointer<vtkDataObject> Leaf(int index)
+  {
+    const FoldingNode& node = this->Tree.nodes[index];
+    const FoldingLeafMesh& m = node.mesh;
+    auto leaf = vtkSmartPointer<vtkPolyData>::New();
+    vtkNew<vtkPoints> points;
+    points->SetDataTypeToDouble();
+    points->SetNumberOfPoints(m.NumberOfPoints());
+    for (int i = 0; i < m.NumberOfPoints(); ++i)
+      points->SetPoint(i, m.points[i].data());
+    leaf->SetPoints(points);
+    vtkNew<vtkCellArray> polys;
+    polys->AllocateExact(m.NumberOfFaces(), 3 * m.NumberOfFaces());
+    for (const Triangle& t : m.triangles)
+    {
+      const vtkIdType ids[3] = { t[0], t[1], t[2] };
+      polys->InsertNextCell(3, ids);
+    }
+    leaf->SetPolys(polys);
+
+    if (this->Input)
+    {
+      CopyArraysById(this->Input->GetPointData(), leaf->GetPointData(), m.originalPointIds);
+      CopyArraysById(this->Input->GetCellData(), leaf->GetCellData(), m.originalFaceIds);
+    }
+    vtkNew<vtkIdTypeArray> pointIds;
+    pointIds->SetName("OriginalPointId");
+    pointIds->SetNumberOfTuples(m.NumberOfPoints());
+    vtkNew<vtkTypeUInt64Array> tear, plane;
+    tear->SetName("TearMask");
+    plane->SetName("PlaneMask");
+    tear->SetNumberOfTuples(m.NumberOfPoints());
+    plane->SetNumberOfTuples(m.NumberOfPoints());
+    vtkNew<vtkUnsignedCharArray> projected;
+    projected->SetName("Projected");
+    projected->SetNumberOfTuples(m.NumberOfPoints());
+    for (int i = 0; i < m.NumberOfPoints(); ++i)
+    {
+      pointIds->SetValue(i, m.originalPointIds[i]);
+      tear->SetValue(i, m.tearMask[i]);
+      plane->SetValue(i, m.planeMask[i]);
+      projected->SetValue(i, m.projected[i] ? 1 : 0);
+    }
+    leaf->GetPointData()->AddArray(pointIds);
+    leaf->GetPointData()->AddArray(tear);
+    leaf->GetPointData()->AddArray(plane);
+    leaf->GetPointData()->AddArray(projected);
+    if (!m.errorBudget.empty())
+    {
+      vtkNew<vtkDoubleArray> budget;
+      budget->SetName("ErrorBudget");
+      budget->SetNumberOfTuples(m.NumberOfPoints());
+      for (int i = 0; i < m.NumberOfPoints(); ++i)
+        budget->SetValue(i, m.errorBudget[i]);
+      leaf->GetPointData()->AddArray(budget);
+    }
+    vtkNew<vtkIdTypeArray> cellIds;
+    cellIds->SetName("OriginalCellId");
+    cellIds->SetNumberOfTuples(m.NumberOfFaces());
+    for (int f = 0; f < m.NumberOfFaces(); ++f)
+      cellIds->SetValue(f, m.originalFaceIds[f]);
+    leaf->GetCellData()->AddArray(cellIds);
+    // The leaf's node index on every face, active: viewers colour the tree by leaf, with the
+    // same numbers as the segmentation view's FoldingLeafId (the unfolder does not carry it).
+    vtkNew<vtkIntArray> leafIds;
+    leafIds->SetName("FoldingLeafId");
+    leafIds->SetNumberOfTuples(m.NumberOfFaces());
+    leafIds->FillValue(index);
+    leaf->GetCellData()->AddArray(leafIds);
+    leaf->GetCellData()->SetActiveScalars("FoldingLeafId");
+
+    vtkFieldData* fd = leaf->GetFieldData();
+    AddNodeMetadata(fd, node, index);
+    AddInt(fd, "LeafReason", static_cast<int>(node.leafReason));
+    AddString(fd, "LeafReasonName", ToString(node.leafReason));
+    const size_t nf = m.mirroredFlags.size();
+    vtkNew<vtkIntArray> flagPoint, flagLevel, flagKind;
+    vtkNew<vtkTypeUInt64Array> flagMask;
+    flagPoint->SetName("MirroredFlagPoint");
+    flagLevel->SetName("MirroredFlagLevel");
+    flagKind->SetName("MirroredFlagKind");
+    flagMask->SetName("MirroredFlagMask");
+    for (auto* a : { static_cast<vtkDataArray*>(flagPoint),
+           static_cast<vtkDataArray*>(flagLevel),
+           static_cast<vtkDataArray*>(flagKind),
+           static_cast<vtkDataArray*>(flagMask) })
+    {
+      a->SetNumberOfTuples(static_cast<vtkIdType>(nf));
+      fd->AddArray(a);
+    }
+    for (size_t k = 0; k < nf; ++k)
+    {
+      const MirroredFlag& f = m.mirroredFlags[k];
+      flagPoint->SetValue(k, f.point);
+      flagLevel->SetValue(k, f.level);
+      flagKind->SetValue(k, f.flag == LevelFlag::Tear ? 0 : 1);
+      flagMask->SetValue(k, f.mirrorMask);
+    }
+    return leaf;
+  }
+};
+}
+
+//------------------------------------------------------------------------------
+bool FoldingTreeToMultiBlock(const FoldingTree& tree,
+  vtkPolyData* triangulatedInput,
+  vtkMultiBlockDataSet* out,
+  std::string& error)
+{
+  if (!out)
+  {
+    error = "no output multiblock";
+    return false;
+  }
+  out->Initialize();
+  error = tree.Validate();
+  if (!error.empty())
+    return false;
+  if (triangulatedInput)
+  {
+    const vtkIdType np = triangulatedInput->GetNumberOfPoints();
+    const vtkIdType nc = triangulatedInput->GetNumberOfCells();
+    for (const FoldingNode& node : tree.nodes)
+    {
+      for (int id : node.mesh.originalPointIds)
+        if (id < 0 || id >= np)
+        {
+          error = "a leaf point's original id is out of the input's point range";
+          return false;
+        }
+      for (int id : node.mesh.originalFaceIds)
+        if (id < 0 || id >= nc)
+        {
+          error = "a leaf face's original id is out of the input's cell range";
+          return false;
+        }
+    }
+  }
+  Writer writer{ tree, triangulatedInput };
+  out->SetNumberOfBlocks(2);
+  out->SetBlock(0, writer.Node(0));
+  out->GetMetaData(0u)->Set(vtkCompositeDataSet::NAME(), BlockName(tree, 0).c_str());
+
+  vtkNew<vtkPolyData> info;
+  {
+    std::vector<Vec3> points;
+    CollectSubtreePoints(tree, 0, points);
+    SetMarkerPoint(points, info);
+  }
+  vtkFieldData* fd = info->GetFieldData();
+  AddInt(fd, "OriginalFaces", tree.numberOfOriginalFaces);
+  AddInt(fd, "OriginalPoints", tree.numberOfOriginalPoints);
+  AddInt(fd, "DroppedFaces", tree.numberOfDroppedFaces);
+  AddInt(fd, "StoredFaces", tree.StoredFaces());
+  AddInt(fd, "StoredPoints", tree.StoredPoints());
+  const double compression = tree.Compression();
+  AddDouble(fd, "Compression", &compression);
+  AddInt(fd, "TreeHeight", tree.Height());
+  AddInt(fd, "NumberOfNodes", tree.NumberOfNodes());
+  AddInt(fd, "NumberOfLeaves", tree.NumberOfLeaves());
+  AddInt(fd, "NumberOfFolds", tree.NumberOfFolds());
+  AddInt(fd, "MaximumFoldsOnPath", tree.MaximumFoldsOnPath());
+  AddDouble(fd, "OriginalArea", &tree.originalArea);
+  AddDouble(fd, "BuildSeconds", &tree.buildSeconds);
+  AddDouble(fd, "RootEpsilon", &tree.rootEpsilon);
+  AddDouble(fd, "Diagonal", &tree.diagonal);
+  AddInt(fd, "Aborted", tree.aborted ? 1 : 0);
+  out->SetBlock(1, info);
+  out->GetMetaData(1u)->Set(vtkCompositeDataSet::NAME(), "Tree");
+  return true;
+}
+
+bool FoldingTreeToMultiBlock(const FoldingTree& tree,
+  vtkPolyData* triangulatedInput,
+  vtkMultiBlockDataSet* out)
+{
+  std::string error;
+  return FoldingTreeToMultiBlock(tree, triangulatedInput, out, error);
+}
+}
