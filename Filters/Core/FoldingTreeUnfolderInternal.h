@@ -1,0 +1,166 @@
+// Internal to FoldingTreeUnfolder*.cxx (no public API): Piece, tear lists, the Unfolder class.
+#ifndef foldingmeshes_FoldingTreeUnfolderInternal_h
+#define foldingmeshes_FoldingTreeUnfolderInternal_h
+
+#include "FoldingTreeUnfolder.h"
+
+#include <algorithm>
+#include <cstddef>
+#include <cstdint>
+#include <utility>
+#include <vector>
+
+namespace foldingmeshes
+{
+namespace unfolder_detail
+{
+/// Pending flags of a vertex copy (MirroredFlag): (2 * level + flag, reflections still
+/// required), flag 0 tear, 1 plane. An entry with no reflection left applies to the copy.
+using TearList = std::vector<std::pair<int, uint64_t>>;
+
+inline void Normalize(TearList& t)
+{
+  std::sort(t.begin(), t.end());
+  t.erase(std::unique(t.begin(), t.end()), t.end());
+}
+
+inline bool IsTear(const TearList& t, int level)
+{
+  for (const auto& e : t)
+    if (e.first == 2 * level && e.second == 0)
+      return true;
+  return false;
+}
+
+inline bool IsOnPlane(const TearList& t, int level)
+{
+  for (const auto& e : t)
+    if (e.first == 2 * level + 1 && e.second == 0)
+      return true;
+  return false;
+}
+
+/// A partial result of the postorder traversal.
+struct Piece
+{
+  std::vector<Vec3> points;
+  std::vector<Triangle> triangles;
+  std::vector<int> pointOrig;
+  std::vector<int> pointCopy;
+  std::vector<TearList> tear;
+  std::vector<uint64_t> onPlane;
+  std::vector<double> budget; ///< how far the point may still move (infinite: unknown)
+  std::vector<int> faceOrig;
+  std::vector<int> faceCopy;
+  std::vector<char> faceFilled;
+
+  int NumberOfPoints() const { return static_cast<int>(points.size()); }
+  int NumberOfFaces() const { return static_cast<int>(triangles.size()); }
+
+  void Append(const Piece& o)
+  {
+    const int offset = NumberOfPoints();
+    points.insert(points.end(), o.points.begin(), o.points.end());
+    pointOrig.insert(pointOrig.end(), o.pointOrig.begin(), o.pointOrig.end());
+    pointCopy.insert(pointCopy.end(), o.pointCopy.begin(), o.pointCopy.end());
+    tear.insert(tear.end(), o.tear.begin(), o.tear.end());
+    onPlane.insert(onPlane.end(), o.onPlane.begin(), o.onPlane.end());
+    budget.insert(budget.end(), o.budget.begin(), o.budget.end());
+    for (const Triangle& t : o.triangles)
+      triangles.push_back({ t[0] + offset, t[1] + offset, t[2] + offset });
+    faceOrig.insert(faceOrig.end(), o.faceOrig.begin(), o.faceOrig.end());
+    faceCopy.insert(faceCopy.end(), o.faceCopy.begin(), o.faceCopy.end());
+    faceFilled.insert(faceFilled.end(), o.faceFilled.begin(), o.faceFilled.end());
+  }
+};
+
+inline int FindRoot(std::vector<int>& parent, int a)
+{
+  while (parent[a] != a)
+  {
+    parent[a] = parent[parent[a]];
+    a = parent[a];
+  }
+  return a;
+}
+
+struct CellKey
+{
+  long long x, y, z;
+  bool operator==(const CellKey& o) const { return x == o.x && y == o.y && z == o.z; }
+};
+struct CellHash
+{
+  size_t operator()(const CellKey& k) const
+  {
+    return static_cast<size_t>(k.x * 73856093LL ^ k.y * 19349663LL ^ k.z * 83492791LL);
+  }
+};
+
+/// The postorder unfolding of a folding tree (see UnfoldFoldingTree). The traversal, the
+/// copies and the fold lines are in FoldingTreeUnfolder.cxx; the seam repair in
+/// FoldingTreeUnfolderStitching.cxx (vertex pairing, clusters, smoothing, final weld) and
+/// FoldingTreeUnfolderSeamGaps.cxx (zipper, gap filling).
+class Unfolder
+{
+public:
+  Unfolder(const FoldingTree& tree, const UnfoldOptions& options, UnfoldedMesh& result)
+    : Tree(tree)
+    , Options(options)
+    , Result(result)
+  {
+  }
+
+  bool Aborted = false;
+
+  Piece Unfold(int index);
+
+private:
+  Piece FromLeaf(int index);
+  void Reflect(const FoldingNode& node, Piece& piece);
+  void CountTears(const FoldingNode& node, Piece& piece, SeamReport& seam);
+  static void Consume(Piece& piece, int code);
+  static void CountGaps(const Piece& piece, const std::vector<char>& isTear, SeamReport& seam);
+
+  // FoldingTreeUnfolderSeamGaps.cxx
+  static int Zip(Piece& out,
+    std::vector<int>& faceChild,
+    std::vector<std::vector<int>>& children,
+    std::vector<char>& matched,
+    const std::vector<char>& isTear,
+    double tol,
+    std::vector<double>& rough);
+  static void FillSeamGaps(Piece& out,
+    std::vector<int>& faceChild,
+    const std::vector<std::vector<int>>& children,
+    const std::vector<char>& isTear,
+    double tol,
+    SeamReport& seam);
+
+  // FoldingTreeUnfolderStitching.cxx
+  void Stitch(const FoldingNode& node,
+    Piece& piece,
+    const std::vector<int>& childOf,
+    SeamReport& seam);
+
+public:
+  void WeldBoundaries(Piece& piece, SeamReport& seam);
+
+private:
+  void StitchVertices(Piece& piece,
+    const std::vector<char>& candidate,
+    const std::vector<int>& childOf,
+    double tol,
+    double epsilon,
+    bool fill,
+    SeamReport& seam);
+
+  const FoldingTree& Tree;
+  const UnfoldOptions& Options;
+  UnfoldedMesh& Result;
+  int Done = 0;
+};
+} // namespace unfolder_detail
+} // namespace foldingmeshes
+
+#endif

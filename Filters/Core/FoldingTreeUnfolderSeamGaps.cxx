@@ -1,0 +1,329 @@
+// Seam repair after pairing: the zipper and the ear-clipping fill of small seam gap loops.
+#include "FoldingTreeUnfolderInternal.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <map>
+#include <set>
+#include <unordered_map>
+
+namespace foldingmeshes
+{
+namespace unfolder_detail
+{
+/**
+ * Inserts unmatched tear vertices into open boundary edges of other children whose two end
+ * points are tear vertices, within `tol` (the vertex moves half way to the edge). Returns
+ * the number of vertices inserted.
+ */
+int Unfolder::Zip(Piece& out,
+  std::vector<int>& faceChild,
+  std::vector<std::vector<int>>& children,
+  std::vector<char>& matched,
+  const std::vector<char>& isTear,
+  double tol,
+  std::vector<double>& rough)
+{
+  using Edge = std::pair<int, int>;
+  auto key = [](int a, int b) { return Edge{ std::min(a, b), std::max(a, b) }; };
+  std::map<Edge, std::vector<int>> edgeFaces;
+  auto addFace = [&](int f)
+  {
+    const Triangle& t = out.triangles[f];
+    for (int k = 0; k < 3; ++k)
+      edgeFaces[key(t[k], t[(k + 1) % 3])].push_back(f);
+  };
+  auto removeFace = [&](int f)
+  {
+    const Triangle& t = out.triangles[f];
+    for (int k = 0; k < 3; ++k)
+    {
+      auto it = edgeFaces.find(key(t[k], t[(k + 1) % 3]));
+      it->second.erase(std::find(it->second.begin(), it->second.end(), f));
+      if (it->second.empty())
+        edgeFaces.erase(it);
+    }
+  };
+  for (int f = 0; f < out.NumberOfFaces(); ++f)
+    addFace(f);
+  int zipped = 0;
+  for (int pass = 0; pass < 3; ++pass)
+  {
+    bool changed = false;
+    // The open edges between two candidates at the start of the pass (edges split during
+    // the pass are skipped, the new ones wait for the next pass), bucketed on a grid of
+    // cell `tol` by the box of the edge grown by tol.
+    std::vector<Edge> open;
+    for (const auto& e : edgeFaces)
+      if (e.second.size() == 1 && isTear[e.first.first] && isTear[e.first.second])
+        open.push_back(e.first);
+    const double cell = std::max(tol, 1e-300);
+    auto cellOf = [cell](double x) { return static_cast<long long>(std::floor(x / cell)); };
+    std::unordered_map<CellKey, std::vector<int>, CellHash> buckets;
+    for (int i = 0; i < static_cast<int>(open.size()); ++i)
+    {
+      const Vec3 lo = out.points[open[i].first].cwiseMin(out.points[open[i].second]);
+      const Vec3 hi = out.points[open[i].first].cwiseMax(out.points[open[i].second]);
+      for (long long x = cellOf(lo.x() - tol); x <= cellOf(hi.x() + tol); ++x)
+        for (long long y = cellOf(lo.y() - tol); y <= cellOf(hi.y() + tol); ++y)
+          for (long long z = cellOf(lo.z() - tol); z <= cellOf(hi.z() + tol); ++z)
+            buckets[CellKey{ x, y, z }].push_back(i);
+    }
+    for (int u = 0; u < out.NumberOfPoints(); ++u)
+    {
+      if (!isTear[u] || matched[u])
+        continue;
+      const Vec3 x = out.points[u];
+      int bestFace = -1;
+      Edge bestEdge;
+      double bestDistance = tol;
+      Vec3 bestPoint = x;
+      auto bucket = buckets.find(CellKey{ cellOf(x.x()), cellOf(x.y()), cellOf(x.z()) });
+      if (bucket == buckets.end())
+        continue;
+      for (int i : bucket->second) // increasing i: the map order of the edges
+      {
+        const auto e = edgeFaces.find(open[i]);
+        if (e == edgeFaces.end() || e->second.size() != 1)
+          continue;
+        const int a = e->first.first, b = e->first.second, f = e->second[0];
+        if (a == u || b == u || !isTear[a] || !isTear[b] ||
+          std::binary_search(children[u].begin(), children[u].end(), faceChild[f]))
+          continue;
+        const Vec3 ab = out.points[b] - out.points[a];
+        const double len2 = ab.squaredNorm();
+        if (!(len2 > 0.0))
+          continue;
+        const double t = (x - out.points[a]).dot(ab) / len2;
+        if (t <= 0.02 || t >= 0.98)
+          continue;
+        const Vec3 q = out.points[a] + t * ab;
+        const double d = (x - q).norm();
+        if (d <= bestDistance)
+        {
+          bestDistance = d;
+          bestFace = f;
+          bestEdge = e->first;
+          bestPoint = q;
+        }
+      }
+      if (bestFace < 0)
+        continue;
+      // Split bestFace (p, q, c) with edge p -> q into (p, u, c) and (u, q, c).
+      const Triangle t = out.triangles[bestFace];
+      int k = 0;
+      while (key(t[k], t[(k + 1) % 3]) != bestEdge)
+        ++k;
+      const int p = t[k], q = t[(k + 1) % 3], c = t[(k + 2) % 3];
+      removeFace(bestFace);
+      out.triangles[bestFace] = { p, u, c };
+      addFace(bestFace);
+      out.triangles.push_back({ u, q, c });
+      out.faceOrig.push_back(out.faceOrig[bestFace]);
+      out.faceCopy.push_back(out.faceCopy[bestFace]);
+      out.faceFilled.push_back(out.faceFilled[bestFace]);
+      faceChild.push_back(faceChild[bestFace]);
+      addFace(out.NumberOfFaces() - 1);
+      // Half way to the edge, or as far as u's error budget allows.
+      const double move = std::min(0.5 * bestDistance, out.budget[u]);
+      if (bestDistance > 0.0)
+        out.points[u] = x + (move / bestDistance) * (bestPoint - x);
+      out.budget[u] = std::max(0.0, out.budget[u] - move);
+      matched[u] = 1;
+      rough[u] = move;
+      children[u].push_back(faceChild[bestFace]);
+      std::sort(children[u].begin(), children[u].end());
+      ++zipped;
+      changed = true;
+    }
+    if (!changed)
+      break;
+  }
+  return zipped;
+}
+
+/**
+ * Fills the small boundary loops left along a seam (e.g. the saw-tooth gaps between a
+ * mirrored, approximately symmetric region and its neighbour) by ear clipping. A loop is
+ * filled when it has 3..maximumGapLoop vertices, touches two children, at least half of its
+ * vertices are tear vertices of this level, and every vertex has a vertex of another child
+ * on the loop within 2 * max(tol, mean loop edge): loops that include an ancestor's open
+ * fold line or the input's own border fail that test and stay open. New triangles take the
+ * attributes of the face across their first loop edge.
+ */
+void Unfolder::FillSeamGaps(Piece& out,
+  std::vector<int>& faceChild,
+  const std::vector<std::vector<int>>& children,
+  const std::vector<char>& isTear,
+  double tol,
+  SeamReport& seam)
+{
+  constexpr int maximumGapLoop = 256;
+  std::map<std::pair<int, int>, int> halfEdges; // directed edge -> face
+  std::map<std::pair<int, int>, int> uses;
+  std::set<std::array<int, 3>> faceSets;
+  for (int f = 0; f < out.NumberOfFaces(); ++f)
+  {
+    const Triangle& t = out.triangles[f];
+    std::array<int, 3> key{ t[0], t[1], t[2] };
+    std::sort(key.begin(), key.end());
+    faceSets.insert(key);
+    for (int k = 0; k < 3; ++k)
+    {
+      const int a = t[k], b = t[(k + 1) % 3];
+      halfEdges[{ a, b }] = f;
+      ++uses[{ std::min(a, b), std::max(a, b) }];
+    }
+  }
+  // Boundary loops, traced along hole half-edges (the reverses of open face half-edges);
+  // at a pinch vertex (several openings) the next edge is found by turning around the
+  // vertex through its faces, so each gap is traced as its own loop.
+  auto isOpen = [&](int a, int b) { return uses[{ std::min(a, b), std::max(a, b) }] == 1; };
+  auto nextHole = [&](int a, int b) -> int
+  {
+    // Arrived at b by the hole edge a -> b: face half-edge b -> a.
+    auto it = halfEdges.find({ b, a });
+    for (int guard = 0; it != halfEdges.end() && guard < 64; ++guard)
+    {
+      const Triangle& t = out.triangles[it->second];
+      int k = 0;
+      while (t[(k + 1) % 3] != b)
+        ++k;
+      const int y = t[k]; // half-edge y -> b in this face
+      if (isOpen(y, b))
+        return y;
+      it = halfEdges.find({ b, y });
+    }
+    return -1;
+  };
+  std::set<std::pair<int, int>> visitedHoles;
+  std::vector<std::pair<int, int>> holes;
+  for (const auto& h : halfEdges)
+    if (isOpen(h.first.first, h.first.second))
+      holes.push_back({ h.first.second, h.first.first });
+  for (const auto& first : holes)
+  {
+    if (visitedHoles.count(first))
+      continue;
+    std::vector<int> loop;
+    std::pair<int, int> edge = first;
+    bool closed = false;
+    while (static_cast<int>(loop.size()) <= maximumGapLoop)
+    {
+      if (visitedHoles.count(edge))
+      {
+        closed = edge == first && !loop.empty();
+        break;
+      }
+      visitedHoles.insert(edge);
+      loop.push_back(edge.first);
+      const int nx = nextHole(edge.first, edge.second);
+      if (nx < 0)
+        break;
+      edge = { edge.second, nx };
+    }
+    std::vector<int> sortedLoop = loop;
+    std::sort(sortedLoop.begin(), sortedLoop.end());
+    const bool simple =
+      std::adjacent_find(sortedLoop.begin(), sortedLoop.end()) == sortedLoop.end();
+    const int n = static_cast<int>(loop.size());
+    if (!closed || !simple || n < 3 || n > maximumGapLoop)
+      continue;
+    // Seam loop?
+    std::vector<int> kids;
+    int tears = 0;
+    double perimeter = 0.0;
+    for (int i = 0; i < n; ++i)
+    {
+      kids.insert(kids.end(), children[loop[i]].begin(), children[loop[i]].end());
+      tears += isTear[loop[i]];
+      perimeter += (out.points[loop[i]] - out.points[loop[(i + 1) % n]]).norm();
+    }
+    std::sort(kids.begin(), kids.end());
+    kids.erase(std::unique(kids.begin(), kids.end()), kids.end());
+    if (kids.size() < 2 || 2 * tears < n)
+      continue;
+    const double reach = 2.0 * std::max(tol, perimeter / n);
+    bool narrow = true;
+    for (int i = 0; i < n && narrow; ++i)
+    {
+      bool near = children[loop[i]].size() > 1; // a stitched vertex: on both sides
+      for (int j = 0; j < n && !near; ++j)
+      {
+        if (i == j)
+          continue;
+        bool other = false;
+        for (int c : children[loop[j]])
+          other =
+            other || !std::binary_search(children[loop[i]].begin(), children[loop[i]].end(), c);
+        near = other && (out.points[loop[i]] - out.points[loop[j]]).norm() <= reach;
+      }
+      narrow = near;
+    }
+    if (!narrow)
+      continue;
+    // Ear clipping: the ear with the shortest new diagonal, not an existing edge.
+    std::vector<int> poly = loop;
+    std::vector<Triangle> added;
+    std::vector<int> addedFace;
+    while (poly.size() > 3)
+    {
+      const int m = static_cast<int>(poly.size());
+      int best = -1;
+      double bestLength = std::numeric_limits<double>::infinity();
+      for (int i = 0; i < m; ++i)
+      {
+        const int a = poly[i], c = poly[(i + 2) % m];
+        if (uses.count({ std::min(a, c), std::max(a, c) }))
+          continue;
+        const double length = (out.points[a] - out.points[c]).norm();
+        if (length < bestLength)
+        {
+          bestLength = length;
+          best = i;
+        }
+      }
+      if (best < 0)
+        break;
+      const int a = poly[best], b = poly[(best + 1) % m], c = poly[(best + 2) % m];
+      added.push_back({ a, b, c });
+      addedFace.push_back(halfEdges.count({ b, a }) ? halfEdges[{ b, a }] : -1);
+      ++uses[{ std::min(a, c), std::max(a, c) }];
+      poly.erase(poly.begin() + (best + 1) % m);
+    }
+    std::array<int, 3> last{
+      poly[0], poly.size() > 1 ? poly[1] : -1, poly.size() > 2 ? poly[2] : -1
+    };
+    std::sort(last.begin(), last.end());
+    if (poly.size() != 3 || faceSets.count(last))
+    {
+      // Gave up: the loop stays open (and is reported as a gap).
+      for (const Triangle& t : added)
+        --uses[{ std::min(t[0], t[2]), std::max(t[0], t[2]) }];
+      continue;
+    }
+    added.push_back({ poly[0], poly[1], poly[2] });
+    addedFace.push_back(
+      halfEdges.count({ poly[1], poly[0] }) ? halfEdges[{ poly[1], poly[0] }] : -1);
+    for (size_t k = 0; k < added.size(); ++k)
+    {
+      int from = addedFace[k];
+      if (from < 0)
+        from = halfEdges[{ loop[1], loop[0] }];
+      out.triangles.push_back(added[k]);
+      out.faceOrig.push_back(out.faceOrig[from]);
+      out.faceCopy.push_back(out.faceCopy[from]);
+      out.faceFilled.push_back(1);
+      faceChild.push_back(faceChild[from]);
+      std::array<int, 3> key{ added[k][0], added[k][1], added[k][2] };
+      std::sort(key.begin(), key.end());
+      faceSets.insert(key);
+    }
+    seam.filledFaces += static_cast<int>(added.size());
+    ++seam.filledLoops;
+  }
+}
+} // namespace unfolder_detail
+} // namespace foldingmeshes

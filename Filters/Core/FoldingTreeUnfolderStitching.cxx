@@ -1,0 +1,401 @@
+// Seam stitching and final weld: union-find pairing, budgeted cluster placement, smoothing.
+#include "FoldingTreeUnfolderInternal.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <iterator>
+#include <limits>
+#include <map>
+#include <numeric>
+#include <unordered_map>
+
+namespace foldingmeshes
+{
+namespace unfolder_detail
+{
+void Unfolder::Stitch(const FoldingNode& node,
+  Piece& piece,
+  const std::vector<int>& childOf,
+  SeamReport& seam)
+{
+  const int level = node.depth;
+  const double tol = std::max(this->Options.stitchToleranceScale * node.epsilon,
+    1e-12 * std::max(this->Tree.diagonal, 1e-300));
+  std::vector<char> isTear(piece.points.size());
+  for (int v = 0; v < piece.NumberOfPoints(); ++v)
+    isTear[v] = IsTear(piece.tear[v], level);
+  this->StitchVertices(piece, isTear, childOf, tol, node.epsilon, this->Options.fillSeamGaps, seam);
+  {
+    std::vector<char> tear(piece.points.size());
+    for (int v = 0; v < piece.NumberOfPoints(); ++v)
+      tear[v] = IsTear(piece.tear[v], level);
+    this->CountGaps(piece, tear, seam);
+    Consume(piece, 2 * level);
+  }
+  this->Result.stitchedVertices += seam.stitchedVertices;
+  this->Result.unmatchedTearVertices += seam.unmatchedTearVertices;
+  this->Result.gapEdges += seam.gapEdges;
+  this->Result.gapLength += seam.gapLength;
+}
+
+/**
+ * The final seam pass (UnfoldOptions::weldBoundaries): every vertex on an open edge is a
+ * candidate, copies play the part of children (a copy's own vertices are never merged),
+ * tolerance weldToleranceScale * root epsilon; moves are bounded by the error budgets.
+ */
+void Unfolder::WeldBoundaries(Piece& piece, SeamReport& seam)
+{
+  std::map<std::pair<int, int>, int> edges;
+  for (const Triangle& t : piece.triangles)
+    for (int k = 0; k < 3; ++k)
+      ++edges[{ std::min(t[k], t[(k + 1) % 3]), std::max(t[k], t[(k + 1) % 3]) }];
+  std::vector<char> open(piece.points.size(), 0);
+  for (const auto& e : edges)
+    if (e.second == 1)
+      open[e.first.first] = open[e.first.second] = 1;
+  const double tol = std::max(this->Options.weldToleranceScale * this->Tree.rootEpsilon,
+    1e-12 * std::max(this->Tree.diagonal, 1e-300));
+  // No gap filling here: loops of open edges between copies may be the input's own
+  // borders (new faces there would leave the input surface).
+  const std::vector<int> copyOf = piece.pointCopy;
+  this->StitchVertices(piece, open, copyOf, tol, this->Tree.rootEpsilon, false, seam);
+}
+
+/**
+ * Stitching of the candidate vertices `isTear` (see UnfoldFoldingTree): pairing by
+ * union-find within `tol` (never two vertices of one child), merged clusters placed where
+ * every member's move stays within its error budget, zipper, gap filling, constrained
+ * smoothing. Fills seam's stitch statistics (not the gaps).
+ */
+void Unfolder::StitchVertices(Piece& piece,
+  const std::vector<char>& candidate,
+  const std::vector<int>& childOf,
+  double tol,
+  double epsilon,
+  bool fill,
+  SeamReport& seam)
+{
+  std::vector<int> tears;
+  for (int v = 0; v < piece.NumberOfPoints(); ++v)
+    if (candidate[v])
+      tears.push_back(v);
+  seam.tearVertices = static_cast<int>(tears.size());
+
+  auto key = [&](const Vec3& x)
+  {
+    return CellKey{ static_cast<long long>(std::floor(x.x() / tol)),
+      static_cast<long long>(std::floor(x.y() / tol)),
+      static_cast<long long>(std::floor(x.z() / tol)) };
+  };
+  std::unordered_map<CellKey, std::vector<int>, CellHash> cells;
+  for (int v : tears)
+    cells[key(piece.points[v])].push_back(v);
+
+  // Proposals: each tear vertex's nearest tear vertex of another child.
+  struct Proposal
+  {
+    double distance;
+    int a, b;
+  };
+  std::vector<Proposal> proposals;
+  for (int v : tears)
+  {
+    const CellKey c = key(piece.points[v]);
+    int best = -1;
+    double bestDistance = tol;
+    for (long long dx = -1; dx <= 1; ++dx)
+      for (long long dy = -1; dy <= 1; ++dy)
+        for (long long dz = -1; dz <= 1; ++dz)
+        {
+          auto it = cells.find(CellKey{ c.x + dx, c.y + dy, c.z + dz });
+          if (it == cells.end())
+            continue;
+          for (int w : it->second)
+          {
+            if (childOf[w] == childOf[v])
+              continue;
+            const double d = (piece.points[w] - piece.points[v]).norm();
+            if (d <= tol && (best < 0 || d < bestDistance || (d == bestDistance && w < best)))
+            {
+              bestDistance = d;
+              best = w;
+            }
+          }
+        }
+    if (best >= 0)
+      proposals.push_back({ bestDistance, std::min(v, best), std::max(v, best) });
+  }
+  std::sort(proposals.begin(),
+    proposals.end(),
+    [](const Proposal& x, const Proposal& y)
+    {
+      if (x.distance != y.distance)
+        return x.distance < y.distance;
+      if (x.a != y.a)
+        return x.a < y.a;
+      return x.b < y.b;
+    });
+
+  const int n = piece.NumberOfPoints();
+  std::vector<int> parent(n);
+  std::iota(parent.begin(), parent.end(), 0);
+  std::unordered_map<int, std::vector<int>> childrenOfRoot; // sorted child ids per cluster
+  auto childrenOf = [&](int root) -> std::vector<int>&
+  {
+    auto it = childrenOfRoot.find(root);
+    if (it == childrenOfRoot.end())
+      it = childrenOfRoot.emplace(root, std::vector<int>{ childOf[root] }).first;
+    return it->second;
+  };
+  for (const Proposal& pr : proposals)
+  {
+    const int ra = FindRoot(parent, pr.a), rb = FindRoot(parent, pr.b);
+    if (ra == rb)
+      continue;
+    std::vector<int>& ca = childrenOf(ra);
+    std::vector<int>& cb = childrenOf(rb);
+    bool disjoint = true;
+    for (int c : cb)
+      disjoint = disjoint && !std::binary_search(ca.begin(), ca.end(), c);
+    if (!disjoint)
+      continue;
+    const int root = std::min(ra, rb), other = std::max(ra, rb);
+    std::vector<int> merged;
+    std::merge(ca.begin(), ca.end(), cb.begin(), cb.end(), std::back_inserter(merged));
+    parent[other] = root;
+    childrenOfRoot[root] = std::move(merged);
+    childrenOfRoot.erase(other);
+  }
+
+  // Clusters: mean position; spread decides smoothing.
+  std::vector<int> rep(n);
+  std::vector<Vec3> sum(n, Vec3::Zero());
+  std::vector<int> count(n, 0);
+  for (int v = 0; v < n; ++v)
+  {
+    rep[v] = FindRoot(parent, v);
+    sum[rep[v]] += piece.points[v];
+    ++count[rep[v]];
+  }
+  // Where a cluster goes: its mean, else the position of one of its members (lowest id
+  // first), whichever moves no member farther than its error budget; none: not merged.
+  std::vector<std::vector<int>> members(n);
+  for (int v = 0; v < n; ++v)
+    if (count[rep[v]] >= 2)
+      members[rep[v]].push_back(v);
+  std::vector<Vec3> target(n);
+  for (int r = 0; r < n; ++r)
+  {
+    if (members[r].empty())
+      continue;
+    std::vector<Vec3> candidates{ sum[r] / count[r] };
+    for (int v : members[r])
+      candidates.push_back(piece.points[v]);
+    bool placed = false;
+    for (const Vec3& c : candidates)
+    {
+      bool fits = true;
+      for (int v : members[r])
+        fits = fits && (piece.points[v] - c).norm() <= piece.budget[v] * (1.0 + 1e-12);
+      if (fits)
+      {
+        target[r] = c;
+        placed = true;
+        break;
+      }
+    }
+    if (!placed)
+    {
+      ++seam.budgetRejectedClusters;
+      for (int v : members[r])
+      {
+        rep[v] = v;
+        count[v] = 1;
+      }
+      childrenOfRoot.erase(r);
+      members[r].clear();
+    }
+  }
+  std::vector<double> spread(n, 0.0);
+  for (int r = 0; r < n; ++r)
+    for (int v : members[r])
+    {
+      const double moved = (piece.points[v] - target[r]).norm();
+      spread[r] = std::max(spread[r], moved);
+      piece.budget[v] = std::max(0.0, piece.budget[v] - moved);
+      ++seam.stitchedVertices;
+    }
+  for (int r = 0; r < n; ++r)
+    if (!members[r].empty())
+    {
+      double least = std::numeric_limits<double>::infinity();
+      for (int v : members[r])
+        least = std::min(least, piece.budget[v]);
+      piece.points[r] = target[r];
+      piece.budget[r] = least;
+      seam.maximumStitchDistance = std::max(seam.maximumStitchDistance, spread[r]);
+    }
+  for (int v = 0; v < n; ++v)
+    if (rep[v] != v)
+    {
+      TearList& into = piece.tear[rep[v]];
+      into.insert(into.end(), piece.tear[v].begin(), piece.tear[v].end());
+      Normalize(into);
+      piece.onPlane[rep[v]] |= piece.onPlane[v];
+    }
+  seam.unmatchedTearVertices = seam.tearVertices - seam.stitchedVertices;
+
+  // Remap faces; drop collapsed and duplicate ones.
+  Piece out;
+  std::vector<int> newId(n, -1);
+  std::vector<std::vector<int>> outChildren; // children a point belongs to (sorted)
+  std::vector<char> outMatched, outCandidate;
+  for (int v = 0; v < n; ++v)
+    if (rep[v] == v)
+    {
+      newId[v] = out.NumberOfPoints();
+      out.points.push_back(piece.points[v]);
+      out.pointOrig.push_back(piece.pointOrig[v]);
+      out.pointCopy.push_back(piece.pointCopy[v]);
+      out.tear.push_back(piece.tear[v]);
+      out.onPlane.push_back(piece.onPlane[v]);
+      out.budget.push_back(piece.budget[v]);
+      outCandidate.push_back(candidate[v]);
+      auto it = childrenOfRoot.find(v);
+      outChildren.push_back(
+        it != childrenOfRoot.end() ? it->second : std::vector<int>{ childOf[v] });
+      outMatched.push_back(count[v] >= 2);
+    }
+  std::vector<int> faceChild;
+  // Smoothing budget: how far a merged vertex may move (its cluster's spread); 0: fixed.
+  std::vector<double> rough(out.points.size(), 0.0);
+  for (int v = 0; v < n; ++v)
+    if (rep[v] == v && count[v] >= 2 && spread[v] > this->Options.exactStitchFraction * epsilon)
+      rough[newId[v]] = spread[v];
+  std::map<std::array<int, 3>, int> seen;
+  for (int f = 0; f < piece.NumberOfFaces(); ++f)
+  {
+    const Triangle& t = piece.triangles[f];
+    const Triangle u{ newId[rep[t[0]]], newId[rep[t[1]]], newId[rep[t[2]]] };
+    if (u[0] == u[1] || u[1] == u[2] || u[0] == u[2])
+    {
+      ++seam.droppedFaces;
+      continue;
+    }
+    std::array<int, 3> sorted{ u[0], u[1], u[2] };
+    std::sort(sorted.begin(), sorted.end());
+    if (!seen.emplace(sorted, f).second)
+    {
+      ++seam.droppedFaces;
+      continue;
+    }
+    out.triangles.push_back(u);
+    out.faceOrig.push_back(piece.faceOrig[f]);
+    out.faceCopy.push_back(piece.faceCopy[f]);
+    out.faceFilled.push_back(piece.faceFilled[f]);
+    faceChild.push_back(childOf[t[0]]);
+  }
+  // Drop points no face uses any more (keeps the output compact).
+  {
+    std::vector<char> used(out.points.size(), 0);
+    for (const Triangle& t : out.triangles)
+      for (int v : t)
+        used[v] = 1;
+    Piece compact;
+    std::vector<int> id(out.points.size(), -1);
+    std::vector<double> compactRough;
+    std::vector<char> compactMatched, compactCandidate;
+    std::vector<std::vector<int>> compactChildren;
+    for (int v = 0; v < out.NumberOfPoints(); ++v)
+      if (used[v])
+      {
+        id[v] = compact.NumberOfPoints();
+        compact.points.push_back(out.points[v]);
+        compact.pointOrig.push_back(out.pointOrig[v]);
+        compact.pointCopy.push_back(out.pointCopy[v]);
+        compact.tear.push_back(out.tear[v]);
+        compact.onPlane.push_back(out.onPlane[v]);
+        compact.budget.push_back(out.budget[v]);
+        compactCandidate.push_back(outCandidate[v]);
+        compactRough.push_back(rough[v]);
+        compactMatched.push_back(outMatched[v]);
+        compactChildren.push_back(outChildren[v]);
+      }
+    for (const Triangle& t : out.triangles)
+      compact.triangles.push_back({ id[t[0]], id[t[1]], id[t[2]] });
+    compact.faceOrig = std::move(out.faceOrig);
+    compact.faceCopy = std::move(out.faceCopy);
+    compact.faceFilled = std::move(out.faceFilled);
+    out = std::move(compact);
+    rough = std::move(compactRough);
+    outMatched = std::move(compactMatched);
+    outChildren = std::move(compactChildren);
+    outCandidate = std::move(compactCandidate);
+  }
+
+  // Zipper: tear vertices left without a partner vertex are inserted into the nearest open
+  // seam edge of another child (splitting its triangle), so seams whose two sides were
+  // tessellated differently close too.
+  if (this->Options.zipper)
+  {
+    const int zipped = Zip(out, faceChild, outChildren, outMatched, outCandidate, tol, rough);
+    seam.zippedVertices = zipped;
+    seam.stitchedVertices += zipped;
+    seam.unmatchedTearVertices -= zipped;
+  }
+  if (fill)
+    FillSeamGaps(out, faceChild, outChildren, outCandidate, tol, seam);
+
+  // Constrained Laplacian smoothing of the rough seam vertices: the others are fixed, and
+  // each moves at most by its budget (the distance its stitch already moved it), so
+  // sharp features along a seam are not eroded.
+  int smoothed = 0;
+  for (double r : rough)
+    smoothed += r > 0.0;
+  if (smoothed > 0 && this->Options.smoothingIterations > 0)
+  {
+    std::vector<std::vector<int>> ring(out.points.size());
+    for (const Triangle& t : out.triangles)
+      for (int k = 0; k < 3; ++k)
+      {
+        const int a = t[k], b = t[(k + 1) % 3];
+        if (rough[a] > 0.0)
+          ring[a].push_back(b);
+        if (rough[b] > 0.0)
+          ring[b].push_back(a);
+      }
+    for (auto& r : ring)
+    {
+      std::sort(r.begin(), r.end());
+      r.erase(std::unique(r.begin(), r.end()), r.end());
+    }
+    const double lambda = this->Options.smoothingWeight;
+    const std::vector<Vec3> start = out.points;
+    for (size_t v = 0; v < rough.size(); ++v)
+      rough[v] = std::min(rough[v], out.budget[v]);
+    for (int iteration = 0; iteration < this->Options.smoothingIterations; ++iteration)
+    {
+      std::vector<Vec3> next = out.points;
+      for (int v = 0; v < out.NumberOfPoints(); ++v)
+        if (rough[v] > 0.0 && !ring[v].empty())
+        {
+          Vec3 mean = Vec3::Zero();
+          for (int w : ring[v])
+            mean += out.points[w];
+          mean /= static_cast<double>(ring[v].size());
+          next[v] = (1.0 - lambda) * out.points[v] + lambda * mean;
+          const Vec3 moved = next[v] - start[v];
+          if (moved.norm() > rough[v])
+            next[v] = start[v] + moved * (rough[v] / moved.norm());
+        }
+      out.points.swap(next);
+    }
+    for (int v = 0; v < out.NumberOfPoints(); ++v)
+      out.budget[v] = std::max(0.0, out.budget[v] - (out.points[v] - start[v]).norm());
+  }
+  seam.smoothedVertices = smoothed;
+  piece = std::move(out);
+}
+} // namespace unfolder_detail
+} // namespace foldingmeshes
