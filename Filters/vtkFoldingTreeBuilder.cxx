@@ -86,31 +86,20 @@ int vtkFoldingTreeBuilder::RequestWholeData(vtkInformation*,
     vtkErrorMacro("Missing input poly data or outputs.");
     return 0;
   }
-  if (input->GetNumberOfPoints() == 0)
-  {
-    vtkErrorMacro("The input mesh is empty (no points).");
-    return 0;
-  }
-  if (input->GetNumberOfPolys() + input->GetNumberOfStrips() == 0)
-  {
-    vtkErrorMacro("The input has no polygons: a folding tree needs a surface mesh.");
-    return 0;
-  }
-
+  foldingmeshes::TriangleMesh soup;
+  std::vector<foldingmeshes::Vec3> normals;
+  std::string error;
   vtkIdType droppedVerts = 0, droppedLines = 0;
-  vtkSmartPointer<vtkPolyData> surface =
-    foldingmeshes::TriangulateSurface(input, droppedVerts, droppedLines);
+  vtkSmartPointer<vtkPolyData> surface = foldingmeshes::SurfaceInput(
+    input, "a folding tree needs a surface mesh", soup, normals, droppedVerts, droppedLines, error);
   if (droppedVerts + droppedLines > 0)
   {
     vtkWarningMacro("Ignoring " << droppedVerts << " vertex and " << droppedLines
                                 << " line cells: only polygons are folded.");
   }
-  foldingmeshes::TriangleMesh soup;
-  std::vector<foldingmeshes::Vec3> normals;
-  std::string error;
-  if (!foldingmeshes::ToTriangleMesh(surface, soup, normals, error))
+  if (!surface)
   {
-    vtkErrorMacro("Invalid input mesh: " << error << ".");
+    vtkErrorMacro(<< error);
     return 0;
   }
   if (soup.triangles.empty())

@@ -160,31 +160,29 @@ int vtkSymmetryPlaneDetector::RequestWholeData(vtkInformation*,
     vtkErrorMacro("Missing input or output poly data.");
     return 0;
   }
-  if (input->GetNumberOfPoints() == 0)
-  {
-    vtkErrorMacro("The input mesh is empty (no points).");
-    return 0;
-  }
-  if (input->GetNumberOfPolys() + input->GetNumberOfStrips() == 0)
-  {
-    vtkErrorMacro("The input has no polygons: symmetry detection needs a surface mesh.");
-    return 0;
-  }
-
+  foldingmeshes::TriangleMesh soup;
+  std::vector<Vec3> normals;
+  std::string error;
   vtkIdType droppedVerts = 0, droppedLines = 0;
-  vtkSmartPointer<vtkPolyData> surface =
-    foldingmeshes::TriangulateSurface(input, droppedVerts, droppedLines);
+  vtkSmartPointer<vtkPolyData> surface = foldingmeshes::SurfaceInput(input,
+    "symmetry detection needs a surface mesh",
+    soup,
+    normals,
+    droppedVerts,
+    droppedLines,
+    error);
   if (droppedVerts + droppedLines > 0)
   {
     vtkWarningMacro("Ignoring " << droppedVerts << " vertex and " << droppedLines
                                 << " line cells: only polygons are used.");
   }
-  foldingmeshes::TriangleMesh soup;
-  std::vector<Vec3> normals;
-  std::string error;
+  if (!surface)
+  {
+    vtkErrorMacro(<< error);
+    return 0;
+  }
   foldingmeshes::PreparedMesh mesh;
-  if (!foldingmeshes::ToTriangleMesh(surface, soup, normals, error) ||
-    !foldingmeshes::PrepareMesh(soup, normals, mesh, error))
+  if (!foldingmeshes::PrepareMesh(soup, normals, mesh, error))
   {
     vtkErrorMacro("Invalid input mesh: " << error << ".");
     return 0;

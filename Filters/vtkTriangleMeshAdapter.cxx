@@ -73,4 +73,33 @@ bool ToTriangleMesh(vtkPolyData* triangles,
   }
   return true;
 }
+
+vtkSmartPointer<vtkPolyData> SurfaceInput(vtkPolyData* input,
+  const char* purpose,
+  TriangleMesh& mesh,
+  std::vector<Vec3>& normals,
+  vtkIdType& droppedVerts,
+  vtkIdType& droppedLines,
+  std::string& error)
+{
+  droppedVerts = droppedLines = 0;
+  if (input->GetNumberOfPoints() == 0)
+  {
+    error = "The input mesh is empty (no points).";
+    return nullptr;
+  }
+  if (input->GetNumberOfPolys() + input->GetNumberOfStrips() == 0)
+  {
+    error = std::string("The input has no polygons: ") + purpose + ".";
+    return nullptr;
+  }
+  vtkSmartPointer<vtkPolyData> surface = TriangulateSurface(input, droppedVerts, droppedLines);
+  std::string why;
+  if (!ToTriangleMesh(surface, mesh, normals, why))
+  {
+    error = "Invalid input mesh: " + why + ".";
+    return nullptr;
+  }
+  return surface;
+}
 }

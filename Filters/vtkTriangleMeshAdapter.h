@@ -28,6 +28,20 @@ bool ToTriangleMesh(vtkPolyData* triangles,
   TriangleMesh& mesh,
   std::vector<Vec3>& normals,
   std::string& error);
+
+/**
+ * The input step shared by the filters: rejects a mesh without points or without polygons
+ * (`purpose` completes "The input has no polygons: ..."), triangulates it
+ * (TriangulateSurface) and copies it (ToTriangleMesh). Returns the triangulated surface, or
+ * null with the whole message in `error`.
+ */
+vtkSmartPointer<vtkPolyData> SurfaceInput(vtkPolyData* input,
+  const char* purpose,
+  TriangleMesh& mesh,
+  std::vector<Vec3>& normals,
+  vtkIdType& droppedVerts,
+  vtkIdType& droppedLines,
+  std::string& error);
 }
 
 #endif
