@@ -1,6 +1,8 @@
 // WorkMesh helpers: area, extraction, welding (see FoldingWorkMesh.h).
 #include "FoldingWorkMesh.h"
 
+#include "MeshPreparation.h"
+
 #include <algorithm>
 #include <numeric>
 
@@ -83,31 +85,7 @@ WorkMesh ExtractFaces(const WorkMesh& w, const std::vector<int>& faces)
 std::vector<int> WeldAndDropCollapsed(WorkMesh& w)
 {
   const int n = w.NumberOfPoints();
-  std::vector<int> order(n);
-  std::iota(order.begin(), order.end(), 0);
-  const auto& p = w.points;
-  std::sort(order.begin(),
-    order.end(),
-    [&](int i, int j)
-    {
-      if (p[i].x() != p[j].x())
-        return p[i].x() < p[j].x();
-      if (p[i].y() != p[j].y())
-        return p[i].y() < p[j].y();
-      if (p[i].z() != p[j].z())
-        return p[i].z() < p[j].z();
-      return i < j;
-    });
-  std::vector<int> rep(n);
-  for (int k = 0; k < n;)
-  {
-    int e = k;
-    while (e < n && p[order[e]] == p[order[k]])
-      ++e;
-    for (int m = k; m < e; ++m)
-      rep[order[m]] = order[k];
-    k = e;
-  }
+  const std::vector<int> rep = CoincidentPointRepresentatives(w.points);
   for (int v = 0; v < n; ++v)
     if (rep[v] != v)
     {

@@ -47,32 +47,9 @@ void Unite(std::vector<int>& parent, int a, int b)
 void WeldPoints(const TriangleMesh& input, PreparedMesh& mesh)
 {
   const int n = static_cast<int>(input.points.size());
-  std::vector<int> order(n);
-  std::iota(order.begin(), order.end(), 0);
   const auto& p = input.points;
-  std::sort(order.begin(),
-    order.end(),
-    [&](int i, int j)
-    {
-      if (p[i].x() != p[j].x())
-        return p[i].x() < p[j].x();
-      if (p[i].y() != p[j].y())
-        return p[i].y() < p[j].y();
-      if (p[i].z() != p[j].z())
-        return p[i].z() < p[j].z();
-      return i < j;
-    });
   // Welded ids follow the first input id of each group, so the result is order-stable.
-  std::vector<int> groupFirst(n, -1);
-  for (int k = 0; k < n;)
-  {
-    int e = k;
-    while (e < n && p[order[e]] == p[order[k]])
-      ++e;
-    for (int m = k; m < e; ++m)
-      groupFirst[order[m]] = order[k];
-    k = e;
-  }
+  const std::vector<int> groupFirst = CoincidentPointRepresentatives(p);
   mesh.inputToWelded.assign(n, -1);
   mesh.points.clear();
   mesh.weldedToInput.clear();
@@ -148,6 +125,36 @@ std::vector<char> OrientFaces(PreparedMesh& mesh, const std::vector<EdgeUse>& us
   }
   return flip;
 }
+}
+
+std::vector<int> CoincidentPointRepresentatives(const std::vector<Vec3>& p)
+{
+  const int n = static_cast<int>(p.size());
+  std::vector<int> order(n);
+  std::iota(order.begin(), order.end(), 0);
+  std::sort(order.begin(),
+    order.end(),
+    [&](int i, int j)
+    {
+      if (p[i].x() != p[j].x())
+        return p[i].x() < p[j].x();
+      if (p[i].y() != p[j].y())
+        return p[i].y() < p[j].y();
+      if (p[i].z() != p[j].z())
+        return p[i].z() < p[j].z();
+      return i < j;
+    });
+  std::vector<int> first(n, -1);
+  for (int k = 0; k < n;)
+  {
+    int e = k;
+    while (e < n && p[order[e]] == p[order[k]])
+      ++e;
+    for (int m = k; m < e; ++m)
+      first[order[m]] = order[k];
+    k = e;
+  }
+  return first;
 }
 
 bool PrepareMesh(const TriangleMesh& input,

@@ -33,6 +33,10 @@ bool PrepareMesh(const TriangleMesh& input,
  */
 TriangleMesh SimplifiedMesh(const PreparedMesh& mesh, int targetFaces);
 
+/// For every point, the smallest index of a point with exactly the same coordinates (itself
+/// when it has no earlier duplicate): the representatives of a weld of coincident points.
+std::vector<int> CoincidentPointRepresentatives(const std::vector<Vec3>& points);
+
 /**
  * Records, for every vertex with a vertex of another part closer than `gap`, the pair
  * (vertex, its nearest such vertex) in mesh.proximityLinks: linear in the mesh size even
