@@ -21,6 +21,40 @@ FaceTree::FaceTree(const PreparedMesh& mesh)
   this->Nodes.reserve(2 * this->Order.size() / LeafSize + 2);
   if (!this->Order.empty())
     this->Build(0, static_cast<int>(this->Order.size()));
+  this->OrderIndex.assign(mesh.NumberOfFaces(), -1);
+  this->Packed.resize(this->Order.size());
+  for (size_t k = 0; k < this->Order.size(); ++k)
+  {
+    const int f = this->Order[k];
+    const Triangle& t = mesh.triangles[f];
+    PackedFace& face = this->Packed[k];
+    face.a = mesh.points[t[0]];
+    face.b = mesh.points[t[1]];
+    face.c = mesh.points[t[2]];
+    face.center = (face.a + face.b + face.c) / 3.0;
+    face.radius = std::sqrt(std::max({ (face.a - face.center).squaredNorm(),
+      (face.b - face.center).squaredNorm(), (face.c - face.center).squaredNorm() }));
+    face.regular = IsRegularTriangle(face.a, face.b, face.c);
+    this->OrderIndex[f] = static_cast<int>(k);
+  }
+}
+
+ClosestPointOnTriangle FaceTree::ClosestPoint(const Vec3& p, int k) const
+{
+  const PackedFace& face = this->Packed[k];
+  return face.regular ? ClosestPointRegularTriangle(p, face.a, face.b, face.c)
+                      : ClosestPointTriangle(p, face.a, face.b, face.c);
+}
+
+bool FaceTree::Beyond(const Vec3& p, int k, double best2) const
+{
+  const PackedFace& face = this->Packed[k];
+  const double d2 = (p - face.center).squaredNorm();
+  const double r = face.radius;
+  if (d2 <= r * r)
+    return false;
+  const double gap = std::sqrt(d2) - r; // <= the distance to the triangle
+  return gap > 0.0 && gap * gap > best2 * (1.0 + 1e-9);
 }
 
 int FaceTree::Build(int first, int count)
@@ -106,7 +140,7 @@ void FaceTree::Traverse(const Vec3& p, const double& best2, Prune prune, Visit v
     if (node.count > 0)
     {
       for (int k = node.first; k < node.first + node.count; ++k)
-        visit(this->Order[k]);
+        visit(k);
       continue;
     }
     const double dl = BoxDistance2(this->Nodes[node.left].lo, this->Nodes[node.left].hi, p);
@@ -127,13 +161,15 @@ void FaceTree::Traverse(const Vec3& p, const double& best2, Prune prune, Visit v
 bool FaceTree::TryFace(const Vec3& p,
   const Vec3& normal,
   double cosLimit,
-  int f,
+  int k,
   double& best2,
   Hit& hit) const
 {
+  if (this->Beyond(p, k, best2))
+    return false;
+  const int f = this->Order[k];
   const Triangle& t = Mesh.triangles[f];
-  const ClosestPointOnTriangle cp =
-    ClosestPointTriangle(p, Mesh.points[t[0]], Mesh.points[t[1]], Mesh.points[t[2]]);
+  const ClosestPointOnTriangle cp = this->ClosestPoint(p, k);
   if (cp.squaredDistance > best2 || (cp.squaredDistance == best2 && hit.face >= 0 && f > hit.face))
     return false;
   const Vec3 n = cp.barycentric[0] * Mesh.vertexNormals[t[0]] +
@@ -164,8 +200,8 @@ FaceTree::Hit FaceTree::ClosestCompatibleFace(const Vec3& p,
   double best2 = maxDistance * maxDistance;
   // A compatible hint bounds the search from the start; the minimum (lowest id on ties) is
   // the same with or without it.
-  if (hintFace >= 0 && hintFace < Mesh.NumberOfFaces() && !Mesh.faceDegenerate[hintFace])
-    this->TryFace(p, normal, cosLimit, hintFace, best2, hit);
+  if (hintFace >= 0 && hintFace < Mesh.NumberOfFaces() && this->OrderIndex[hintFace] >= 0)
+    this->TryFace(p, normal, cosLimit, this->OrderIndex[hintFace], best2, hit);
   this->Traverse(
     p,
     best2,
@@ -178,7 +214,7 @@ FaceTree::Hit FaceTree::ClosestCompatibleFace(const Vec3& p,
       const double cosSum = node.coneCos * cosL - node.coneSin * sinL;
       return cosL > -node.coneCos && normal.dot(node.coneAxis) < cosSum - 1e-12;
     },
-    [&](int f) { this->TryFace(p, normal, cosLimit, f, best2, hit); });
+    [&](int k) { this->TryFace(p, normal, cosLimit, k, best2, hit); });
   if (hit.face >= 0)
     hit.distance = std::sqrt(best2);
   return hit;
@@ -194,11 +230,12 @@ FaceTree::Hit FaceTree::ClosestFace(const Vec3& p, double maxDistance) const
     p,
     best2,
     [](const Node&) { return false; },
-    [&](int f)
+    [&](int k)
     {
-      const Triangle& t = Mesh.triangles[f];
-      const ClosestPointOnTriangle cp =
-        ClosestPointTriangle(p, Mesh.points[t[0]], Mesh.points[t[1]], Mesh.points[t[2]]);
+      if (this->Beyond(p, k, best2))
+        return;
+      const int f = this->Order[k];
+      const ClosestPointOnTriangle cp = this->ClosestPoint(p, k);
       if (cp.squaredDistance < best2 ||
         (cp.squaredDistance == best2 && (hit.face < 0 || f < hit.face)))
       {

@@ -3,6 +3,7 @@
 #ifndef foldingmeshes_FaceTree_h
 #define foldingmeshes_FaceTree_h
 
+#include "PointTriangleDistance.h"
 #include "TriangleMesh.h"
 
 #include <limits>
@@ -74,12 +75,28 @@ private:
   void Traverse(const Vec3& p, const double& best2, Prune prune, Visit visit) const;
   /// Leaf test of ClosestCompatibleFace: takes face f when it is compatible and closer
   /// (or as close with a lower id) than best2; true if taken.
-  bool TryFace(const Vec3& p, const Vec3& normal, double cosLimit, int f, double& best2, Hit& hit)
+  bool TryFace(const Vec3& p, const Vec3& normal, double cosLimit, int k, double& best2, Hit& hit)
     const;
   static double BoxDistance2(const Vec3& lo, const Vec3& hi, const Vec3& p);
 
+  /// A face's corners and bounding sphere, stored in tree order (Order) for the leaf tests.
+  struct PackedFace
+  {
+    Vec3 a, b, c;
+    Vec3 center;   ///< centroid
+    double radius; ///< largest distance of a corner to the centroid
+    bool regular;  ///< IsRegularTriangle(a, b, c)
+  };
+  /// Closest point on the packed face k (index into Order), without the sphere test.
+  ClosestPointOnTriangle ClosestPoint(const Vec3& p, int k) const;
+  /// True when the bounding sphere of packed face k is farther than sqrt(best2) from p
+  /// (with a relative margin, so a face at exactly that distance is never skipped).
+  bool Beyond(const Vec3& p, int k, double best2) const;
+
   const PreparedMesh& Mesh;
   std::vector<int> Order; ///< face ids, leaf ranges
+  std::vector<PackedFace> Packed; ///< per Order entry
+  std::vector<int> OrderIndex;    ///< face id -> index into Order (-1: degenerate)
   std::vector<Node> Nodes;
 };
 }

@@ -179,24 +179,8 @@ int Builder::Build(WorkMesh w, int parent, int depth, double eps, int folds, uin
     return this->MakeLeaf(index, w, LeafReason::Aborted), index;
   }
 
-  std::vector<char> S(nf, 0);
-  bool any = false;
-  for (int f = 0; f < nf; ++f)
-  {
-    S[f] = result.faceLabel[f] == 2;
-    any = any || S[f];
-  }
-  Plane plane = result.plane;
-  // Trimming keeps the faces whose mirrored vertices are within eps of S - or within the
-  // error budget left there, if less (errorBudget).
-  if (any && O.trimToMirrorConsistent)
-    S = this->Trim(w, pm, S, plane, eps);
-  if (any && O.polishPlane)
-  {
-    plane = this->Polish(w, pm, S, plane, eps);
-    if (O.trimToMirrorConsistent)
-      S = this->Trim(w, pm, S, plane, eps);
-  }
+  Plane plane;
+  std::vector<char> S = this->ChooseSymmetricRegion(w, pm, result, eps, pathFolds, plane);
   // Input-degenerate faces (never in S: detection ignores them) follow S when all their
   // vertices are vertices of S.
   {

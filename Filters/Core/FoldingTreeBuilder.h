@@ -127,8 +127,12 @@ struct FoldingTreeOptions
  * 1. A region that meets a stop criterion becomes a leaf.
  * 2. Otherwise the region is prepared (PrepareMesh: welding, orientation; LinkNearbyParts)
  *    and DetectSymmetry finds S and p with the node's epsilon. S is trimmed, p polished and
- *    S trimmed again (see trimToMirrorConsistent, polishPlane); input-degenerate faces whose
- *    vertices all belong to S join S.
+ *    S trimmed again (see trimToMirrorConsistent, polishPlane); with trimming on, detection's
+ *    two runner-up planes (SymmetryResult::finalists) get the same treatment - each with
+ *    its largest connected region of faces whose vertices mirror within epsilon - and the
+ *    plane with the largest trimmed S wins (trimming can halve a region whose mirror image
+ *    is partly outside it; ties: detection's plane). Input-degenerate faces whose vertices
+ *    all belong to S join S.
  * 3. The remaining faces split into connected components R1..Rn (edge adjacency plus the
  *    proximity links). n == 0 (global symmetry): the node is a Folding node. n > 0: a
  *    Segmentation node with children fold(S) (a Folding node one level down) and a subtree

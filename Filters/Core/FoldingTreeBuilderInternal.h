@@ -84,6 +84,32 @@ private:
     const Plane& plane,
     double eps) const;
 
+  /// Detection's plane and its runners-up tried by ChooseSymmetricRegion.
+  static constexpr size_t RegionCandidatePlanes = 3;
+
+  /**
+   * S and its plane for a node: the detected region, trimmed, the plane polished on it and
+   * S trimmed again (trimToMirrorConsistent, polishPlane). Trimming can shrink a region
+   * a lot when its mirror image is partly outside it; so the runner-up planes of detection
+   * (SymmetryResult::finalists) get the same treatment - their largest connected region of
+   * faces within eps, trimmed, polished - and the largest S wins (ties: detection's order).
+   * Planes of ancestor folds are skipped (IsAncestorPlane), except detection's own, which
+   * the caller judges. Empty S: none.
+   */
+  std::vector<char> ChooseSymmetricRegion(const WorkMesh& w,
+    const PreparedMesh& pm,
+    const SymmetryResult& result,
+    double eps,
+    uint64_t pathFolds,
+    Plane& plane) const;
+
+  /// S as trimmed and polished for `plane` (see ChooseSymmetricRegion).
+  std::vector<char> TrimAndPolish(const WorkMesh& w,
+    const PreparedMesh& pm,
+    std::vector<char> S,
+    double eps,
+    Plane& plane) const;
+
   bool IsAncestorPlane(const Plane& p, uint64_t pathFolds, const Vec3& at, double eps) const;
 
   /// Builds the subtree of region w; returns its node index.

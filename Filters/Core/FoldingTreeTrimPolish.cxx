@@ -1,4 +1,5 @@
-// Builder: trimming S to its mirror-consistent part and polishing the fold plane on S.
+// Builder: choosing S among detection's planes, trimming S to its mirror-consistent part and
+// polishing the fold plane on S.
 #include "FoldingTreeBuilderInternal.h"
 
 #include "CandidatePlanes.h"
@@ -90,6 +91,80 @@ Plane Builder::Polish(const WorkMesh& w,
       break;
   }
   return CanonicalPlane(best, plane.origin);
+}
+
+std::vector<char> Builder::TrimAndPolish(const WorkMesh& w,
+  const PreparedMesh& pm,
+  std::vector<char> S,
+  double eps,
+  Plane& plane) const
+{
+  if (std::find(S.begin(), S.end(), 1) == S.end())
+    return S;
+  // Trimming keeps the faces whose mirrored vertices are within eps of S - or within the
+  // error budget left there, if less (errorBudget).
+  if (this->Options.trimToMirrorConsistent)
+    S = this->Trim(w, pm, S, plane, eps);
+  if (this->Options.polishPlane)
+  {
+    plane = this->Polish(w, pm, S, plane, eps);
+    if (this->Options.trimToMirrorConsistent)
+      S = this->Trim(w, pm, S, plane, eps);
+  }
+  return S;
+}
+
+std::vector<char> Builder::ChooseSymmetricRegion(const WorkMesh& w,
+  const PreparedMesh& pm,
+  const SymmetryResult& result,
+  double eps,
+  uint64_t pathFolds,
+  Plane& plane) const
+{
+  const int nf = w.NumberOfFaces();
+  std::vector<char> best(nf, 0);
+  for (int f = 0; f < nf; ++f)
+    best[f] = result.faceLabel[f] == 2;
+  plane = result.plane;
+  best = this->TrimAndPolish(w, pm, std::move(best), eps, plane);
+  double bestArea = RegionArea(pm, best);
+  if (!this->Options.trimToMirrorConsistent)
+    return best;
+  std::unique_ptr<MirrorDistance> distances;
+  std::vector<double> d;
+  for (size_t k = 1; k < result.finalists.size() && k < RegionCandidatePlanes; ++k)
+  {
+    Plane candidate = result.finalists[k];
+    if (PlaneAngleDegrees(candidate, result.plane) < 2.0 &&
+      PlaneOffsetAt(result.plane, candidate, candidate.origin) < eps)
+      continue;
+    if (!distances)
+      distances = std::make_unique<MirrorDistance>(pm, this->Options.symmetry.compatibilityAngle);
+    distances->Compute(candidate, DistanceMetric::Fine, eps, d);
+    std::vector<char> S = LargestConnectedRegion(pm, FacesWithVerticesWithin(pm, d, eps, true));
+    // Trimming only removes faces: a region no larger than the best S cannot win.
+    if (!(RegionArea(pm, S) > bestArea))
+      continue;
+    Vec3 centroid = Vec3::Zero();
+    double total = 0.0;
+    for (int f = 0; f < nf; ++f)
+      if (S[f])
+      {
+        centroid += pm.faceAreas[f] * pm.faceCentroids[f];
+        total += pm.faceAreas[f];
+      }
+    if (this->IsAncestorPlane(candidate, pathFolds, centroid / total, eps))
+      continue;
+    S = this->TrimAndPolish(w, pm, std::move(S), eps, candidate);
+    const double area = RegionArea(pm, S);
+    if (area > bestArea)
+    {
+      best = std::move(S);
+      bestArea = area;
+      plane = candidate;
+    }
+  }
+  return best;
 }
 
 std::vector<double> Builder::MirrorBudget(const WorkMesh& w,

@@ -9,12 +9,7 @@ ClosestPointOnTriangle ClosestPointTriangle(const Vec3& p,
   const Vec3& b,
   const Vec3& c)
 {
-  auto result = [&p](const Vec3& q, double u, double v, double w) {
-    return ClosestPointOnTriangle{ q, Vec3(u, v, w), (p - q).squaredNorm() };
-  };
-  const Vec3 ab = b - a, ac = c - a, ap = p - a;
-  const double scale = std::max({ ab.squaredNorm(), ac.squaredNorm(), (c - b).squaredNorm() });
-  if (!(ab.cross(ac).squaredNorm() > 1e-24 * scale * scale))
+  if (!IsRegularTriangle(a, b, c))
   {
     // Degenerate (repeated or collinear points): the closest point of its three edges.
     ClosestPointOnTriangle best{ a, Vec3(1, 0, 0), (p - a).squaredNorm() };
@@ -38,6 +33,25 @@ ClosestPointOnTriangle ClosestPointTriangle(const Vec3& p,
     }
     return best;
   }
+  return ClosestPointRegularTriangle(p, a, b, c);
+}
+
+bool IsRegularTriangle(const Vec3& a, const Vec3& b, const Vec3& c)
+{
+  const Vec3 ab = b - a, ac = c - a;
+  const double scale = std::max({ ab.squaredNorm(), ac.squaredNorm(), (c - b).squaredNorm() });
+  return ab.cross(ac).squaredNorm() > 1e-24 * scale * scale;
+}
+
+ClosestPointOnTriangle ClosestPointRegularTriangle(const Vec3& p,
+  const Vec3& a,
+  const Vec3& b,
+  const Vec3& c)
+{
+  auto result = [&p](const Vec3& q, double u, double v, double w) {
+    return ClosestPointOnTriangle{ q, Vec3(u, v, w), (p - q).squaredNorm() };
+  };
+  const Vec3 ab = b - a, ac = c - a, ap = p - a;
   const double d1 = ab.dot(ap), d2 = ac.dot(ap);
   if (d1 <= 0.0 && d2 <= 0.0)
     return result(a, 1, 0, 0);

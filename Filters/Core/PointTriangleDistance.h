@@ -18,6 +18,17 @@ ClosestPointOnTriangle ClosestPointTriangle(const Vec3& p,
   const Vec3& a,
   const Vec3& b,
   const Vec3& c);
+
+/// False for triangles ClosestPointTriangle treats as degenerate (repeated or collinear
+/// points: it then takes the closest point of the three edges).
+bool IsRegularTriangle(const Vec3& a, const Vec3& b, const Vec3& c);
+
+/// ClosestPointTriangle for a triangle known to be regular (IsRegularTriangle): the same
+/// result without the test, for callers that query one triangle many times.
+ClosestPointOnTriangle ClosestPointRegularTriangle(const Vec3& p,
+  const Vec3& a,
+  const Vec3& b,
+  const Vec3& c);
 }
 
 #endif

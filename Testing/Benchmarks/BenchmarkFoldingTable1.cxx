@@ -6,9 +6,13 @@
 // epsilon 2% of the diagonal, keep the half with more faces, 5% area stop). Not a test:
 // numbers for humans and closing notes.
 //
-//   BenchmarkFoldingTable1 [--threads N] MESH_OR_FOLDER...
+//   BenchmarkFoldingTable1 [--threads N] [--keep fewer] [--tree] [--no-unfold] MESH_OR_FOLDER...
+//
+// --tree prints each tree's outline (node kind, depth, faces, area share, symmetric area
+// fraction, why a leaf stopped); --no-unfold skips the unfolding columns.
 #include "MeshComparison.h"
 #include "MeshIO.h"
+#include "vtkFoldingTreeIO.h"
 #include "vtkFoldingTreeBuilder.h"
 #include "vtkFoldingTreeUnfolder.h"
 
@@ -74,11 +78,46 @@ double TreeValue(vtkMultiBlockDataSet* tree, const char* name)
   return a && a->GetNumberOfTuples() > 0 ? a->GetTuple1(0) : 0.0;
 }
 
-void Run(const std::string& path, vtkPolyData* mesh)
+struct Settings
+{
+  bool keepFewer = false;
+  bool printTree = false;
+  bool unfold = true;
+};
+
+void PrintOutline(vtkMultiBlockDataSet* blocks)
+{
+  foldingmeshes::FoldingTree tree;
+  std::string error;
+  if (!foldingmeshes::MultiBlockToFoldingTree(blocks, tree, error))
+  {
+    std::printf("  (tree not readable: %s)\n", error.c_str());
+    return;
+  }
+  for (const foldingmeshes::FoldingNode& node : tree.nodes)
+  {
+    std::printf("  %*s%-12s faces %6d area %5.1f%%", 2 * node.depth, "",
+      foldingmeshes::ToString(node.kind), node.numberOfFaces,
+      100.0 * node.area / tree.originalArea);
+    if (node.detectionRun)
+      std::printf(" S %5.1f%%", 100.0 * node.symmetricAreaFraction);
+    if (node.kind == foldingmeshes::FoldingNodeKind::Folding)
+      std::printf(" n (%6.3f %6.3f %6.3f) discarded %d", node.plane.normal.x(),
+        node.plane.normal.y(), node.plane.normal.z(), node.discardedFaces);
+    if (node.kind == foldingmeshes::FoldingNodeKind::Leaf)
+      std::printf(" stored %d (%s)", node.mesh.NumberOfFaces(),
+        foldingmeshes::ToString(node.leafReason));
+    std::printf("\n");
+  }
+}
+
+void Run(const std::string& path, vtkPolyData* mesh, const Settings& settings)
 {
   const std::string stem = std::filesystem::path(path).stem().string();
   vtkNew<vtkFoldingTreeBuilder> builder;
   builder->SetInputData(mesh);
+  if (settings.keepFewer)
+    builder->SetKeepSide(vtkFoldingTreeBuilder::FEWER_FACES);
   const auto t0 = Clock::now();
   builder->Update();
   const double build = std::chrono::duration<double>(Clock::now() - t0).count();
@@ -87,6 +126,18 @@ void Run(const std::string& path, vtkPolyData* mesh)
   if (!tree || tree->GetNumberOfBlocks() < 2 || input->GetNumberOfCells() == 0)
   {
     std::printf("%-26s error: folding failed\n", stem.c_str());
+    return;
+  }
+  if (!settings.unfold)
+  {
+    std::printf("%-26s %7d %7d %6.1f%% %3d %7.3f\n", stem.c_str(),
+      static_cast<int>(TreeValue(tree, "OriginalFaces")),
+      static_cast<int>(TreeValue(tree, "StoredFaces")),
+      100.0 * TreeValue(tree, "Compression"),
+      static_cast<int>(TreeValue(tree, "TreeHeight")), build);
+    if (settings.printTree)
+      PrintOutline(tree);
+    std::fflush(stdout);
     return;
   }
   vtkNew<vtkFoldingTreeUnfolder> unfolder;
@@ -134,6 +185,8 @@ void Run(const std::string& path, vtkPolyData* mesh)
       row->height,
       row->seconds);
   std::printf("\n");
+  if (settings.printTree)
+    PrintOutline(tree);
   std::fflush(stdout);
 }
 }
@@ -141,6 +194,7 @@ void Run(const std::string& path, vtkPolyData* mesh)
 int main(int argc, char* argv[])
 {
   std::vector<std::string> meshes;
+  Settings settings;
   for (int i = 1; i < argc; ++i)
   {
     const std::string arg = argv[i];
@@ -149,6 +203,12 @@ int main(int argc, char* argv[])
       vtkSMPTools::SetBackend("STDThread");
       vtkSMPTools::Initialize(std::atoi(argv[++i]));
     }
+    else if (arg == "--keep" && i + 1 < argc)
+      settings.keepFewer = std::string(argv[++i]) == "fewer";
+    else if (arg == "--tree")
+      settings.printTree = true;
+    else if (arg == "--no-unfold")
+      settings.unfold = false;
     else if (std::filesystem::is_directory(arg))
     {
       std::vector<std::string> found;
@@ -195,7 +255,7 @@ int main(int argc, char* argv[])
       std::printf("%-26s error: %s\n", path.c_str(), error.c_str());
       continue;
     }
-    Run(path, mesh);
+    Run(path, mesh, settings);
   }
   return 0;
 }
