@@ -3,9 +3,9 @@
 //   (within 1 degree) on meshes with a global plane;
 // - every input face is accounted for in output 1: stored in a leaf (role 0/2) or mirrored away
 //   (role 1), always with a leaf id; the stored ones add up to StoredFaces;
-// - compression at least the paper's Table 1 value where we reach it (dino, table), and at
-//   least 45% on the exactly symmetric triceratops (one fold keeps half, plus the faces
-//   straddling the plane);
+// - compression at least the paper's Table 1 value where we reach it (dino, table,
+//   triceratops: the paper's own 5660-face mesh; below 56.8% before the runner-up planes
+//   competed for S, see FoldingTreeBuilder.h);
 // - the same tree (stored faces, height, leaf ids) with the Sequential and STDThread backends.
 //
 //   TestFoldingTreeRealMeshes MESH_DIR
@@ -189,10 +189,10 @@ int main(int argc, char* argv[])
     return 1;
   }
   const std::string dir = argv[1];
-  // Paper's Table 1: dino 52.7%, table 73.7%.
+  // Paper's Table 1: dino 52.7%, table 73.7%, triceratops 56.8%.
   TestMesh(dir, "dino_cgal.off", 0.527, true);
   TestMesh(dir, "table_psb152.off", 0.737, true);
-  TestMesh(dir, "triceratops_cgal.off", 0.45, true);
+  TestMesh(dir, "triceratops_cgal.off", 0.568, true);
   TestMesh(dir, "anchor_cgal.off", 0.40, true);
   std::printf(
     "%s\n", Failures ? "TestFoldingTreeRealMeshes FAILED" : "TestFoldingTreeRealMeshes passed");
