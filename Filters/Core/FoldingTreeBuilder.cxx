@@ -206,17 +206,8 @@ int Builder::Build(WorkMesh w, int parent, int depth, double eps, int folds, uin
     meaningful = meaningful && (result.found || !O.requireTightSymmetry) &&
       node.symmetricAreaFraction >= O.symmetry.minimumSymmetricAreaFraction &&
       sFaces >= (O.useMinimumFaces ? std::max(1, O.minimumFaces) : 1);
-    Vec3 centroid = Vec3::Zero();
-    double total = 0.0;
-    for (int f = 0; f < nf; ++f)
-      if (S[f])
-      {
-        centroid += pm.faceAreas[f] * pm.faceCentroids[f];
-        total += pm.faceAreas[f];
-      }
-    if (total > 0)
-      centroid /= total;
-    meaningful = meaningful && !this->IsAncestorPlane(plane, pathFolds, centroid, eps);
+    meaningful =
+      meaningful && !this->IsAncestorPlane(plane, pathFolds, RegionCentroid(pm, S), eps);
   }
   if (!meaningful)
     return this->MakeLeaf(index, w, LeafReason::NoSymmetry), index;

@@ -145,15 +145,7 @@ std::vector<char> Builder::ChooseSymmetricRegion(const WorkMesh& w,
     // Trimming only removes faces: a region no larger than the best S cannot win.
     if (!(RegionArea(pm, S) > bestArea))
       continue;
-    Vec3 centroid = Vec3::Zero();
-    double total = 0.0;
-    for (int f = 0; f < nf; ++f)
-      if (S[f])
-      {
-        centroid += pm.faceAreas[f] * pm.faceCentroids[f];
-        total += pm.faceAreas[f];
-      }
-    if (this->IsAncestorPlane(candidate, pathFolds, centroid / total, eps))
+    if (this->IsAncestorPlane(candidate, pathFolds, RegionCentroid(pm, S), eps))
       continue;
     S = this->TrimAndPolish(w, pm, std::move(S), eps, candidate);
     const double area = RegionArea(pm, S);

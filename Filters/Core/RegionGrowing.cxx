@@ -113,4 +113,17 @@ double RegionArea(const PreparedMesh& mesh, const std::vector<char>& mask)
       area += mesh.faceAreas[f];
   return area;
 }
+
+Vec3 RegionCentroid(const PreparedMesh& mesh, const std::vector<char>& mask)
+{
+  Vec3 centroid = Vec3::Zero();
+  double total = 0.0;
+  for (int f = 0; f < mesh.NumberOfFaces(); ++f)
+    if (mask[f])
+    {
+      centroid += mesh.faceAreas[f] * mesh.faceCentroids[f];
+      total += mesh.faceAreas[f];
+    }
+  return total > 0.0 ? Vec3(centroid / total) : centroid;
+}
 }

@@ -29,6 +29,9 @@ std::vector<char> LargestConnectedRegion(const PreparedMesh& mesh, const std::ve
 
 /// Total area of the faces selected by mask.
 double RegionArea(const PreparedMesh& mesh, const std::vector<char>& mask);
+
+/// Area-weighted centroid of the faces selected by mask (zero when they have no area).
+Vec3 RegionCentroid(const PreparedMesh& mesh, const std::vector<char>& mask);
 }
 
 #endif
