@@ -221,15 +221,38 @@ std::vector<Plane> VotedPlanes(const PreparedMesh& mesh, int count, double epsil
     const double vo = c < 0 ? -v.offset : v.offset;
     return std::abs(u.offset - vo) <= offsetLimit;
   };
+  // strength[i] = the weight of the votes near vote i (itself included). near() needs the
+  // offsets within epsilon (or opposite within epsilon, for opposite normals): only the votes
+  // in two offset windows of the votes sorted by offset are tested.
+  std::vector<int> byOffset(nvotes);
+  for (int i = 0; i < nvotes; ++i)
+    byOffset[i] = i;
+  std::sort(byOffset.begin(),
+    byOffset.end(),
+    [&](int a, int b)
+    { return votes[a].offset != votes[b].offset ? votes[a].offset < votes[b].offset : a < b; });
+  std::vector<double> sortedOffsets(nvotes);
+  for (int k = 0; k < nvotes; ++k)
+    sortedOffsets[k] = votes[byOffset[k]].offset;
+  auto offsetWindow = [&](double center)
+  {
+    const auto lo = std::lower_bound(sortedOffsets.begin(), sortedOffsets.end(), center - epsilon);
+    const auto hi = std::upper_bound(sortedOffsets.begin(), sortedOffsets.end(), center + epsilon);
+    return std::make_pair(
+      static_cast<int>(lo - sortedOffsets.begin()), static_cast<int>(hi - sortedOffsets.begin()));
+  };
   std::vector<double> strength(nvotes, 0.0);
   for (int i = 0; i < nvotes; ++i)
-    for (int j = i; j < nvotes; ++j)
-      if (near(votes[i], votes[j], clusterCos, epsilon))
-      {
-        strength[i] += votes[j].weight;
-        if (j != i)
-          strength[j] += votes[i].weight;
-      }
+  {
+    const auto same = offsetWindow(votes[i].offset), opposite = offsetWindow(-votes[i].offset);
+    for (int k = same.first; k < same.second; ++k)
+      if (near(votes[i], votes[byOffset[k]], clusterCos, epsilon))
+        strength[i] += votes[byOffset[k]].weight;
+    for (int k = opposite.first; k < opposite.second; ++k)
+      if ((k < same.first || k >= same.second) &&
+        near(votes[i], votes[byOffset[k]], clusterCos, epsilon))
+        strength[i] += votes[byOffset[k]].weight;
+  }
   std::vector<char> used(nvotes, 0);
   const double separationCos = std::cos(10.0 * 3.14159265358979323846 / 180.0);
   while (static_cast<int>(result.size()) < count)

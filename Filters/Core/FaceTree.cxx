@@ -119,11 +119,7 @@ int FaceTree::Build(int first, int count)
   return index;
 }
 
-double FaceTree::BoxDistance2(const Vec3& lo, const Vec3& hi, const Vec3& p)
-{
-  const Vec3 d = (lo - p).cwiseMax(p - hi).cwiseMax(0.0);
-  return d.squaredNorm();
-}
+
 
 template <typename Prune, typename Visit>
 void FaceTree::Traverse(const Vec3& p, const double& best2, Prune prune, Visit visit) const

@@ -77,7 +77,11 @@ private:
   /// (or as close with a lower id) than best2; true if taken.
   bool TryFace(const Vec3& p, const Vec3& normal, double cosLimit, int k, double& best2, Hit& hit)
     const;
-  static double BoxDistance2(const Vec3& lo, const Vec3& hi, const Vec3& p);
+  static double BoxDistance2(const Vec3& lo, const Vec3& hi, const Vec3& p)
+  {
+    const Vec3 d = (lo - p).cwiseMax(p - hi).cwiseMax(0.0);
+    return d.squaredNorm();
+  }
 
   /// A face's corners and bounding sphere, stored in tree order (Order) for the leaf tests.
   struct PackedFace
