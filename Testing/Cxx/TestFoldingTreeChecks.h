@@ -3,6 +3,7 @@
 #define foldingmeshes_testing_TestFoldingTreeChecks_h
 
 #include "ProceduralMeshes.h"
+#include "TestExpect.h"
 
 #include <vtkSmartPointer.h>
 #include <vtkType.h>
@@ -25,17 +26,7 @@ namespace pm = foldingmeshes::testing;
 using Vec3 = Eigen::Vector3d;
 extern int failures;
 
-#define EXPECT(cond, msg)                                                                          \
-  do                                                                                               \
-  {                                                                                                \
-    if (!(cond))                                                                                   \
-    {                                                                                              \
-      std::ostringstream os_;                                                                      \
-      os_ << msg;                                                                                  \
-      std::printf("FAIL (line %d): %s\n", __LINE__, os_.str().c_str());                            \
-      ++failures;                                                                                  \
-    }                                                                                              \
-  } while (0)
+#define EXPECT(cond, msg) FOLDINGMESHES_EXPECT(failures, cond, msg)
 
 struct EventLog
 {

@@ -12,6 +12,7 @@
 // - determinism: two runs (fresh filters, and a re-run) give bit-identical results, and
 //   vtkSMPTools Sequential and STDThread (2 threads) agree bit for bit.
 #include "ProceduralMeshes.h"
+#include "TestExpect.h"
 #include "vtkSymmetryPlaneDetector.h"
 
 #include <vtkCallbackCommand.h>
@@ -48,17 +49,7 @@ namespace
 using Vec3 = Eigen::Vector3d;
 int failures = 0;
 
-#define EXPECT(cond, msg)                                                                          \
-  do                                                                                               \
-  {                                                                                                \
-    if (!(cond))                                                                                   \
-    {                                                                                              \
-      std::ostringstream os_;                                                                      \
-      os_ << msg;                                                                                  \
-      std::printf("FAIL (line %d): %s\n", __LINE__, os_.str().c_str());                            \
-      ++failures;                                                                                  \
-    }                                                                                              \
-  } while (0)
+#define EXPECT(cond, msg) FOLDINGMESHES_EXPECT(failures, cond, msg)
 
 /// Captures (and so silences) the error and warning events of the filter and its executive.
 struct EventLog

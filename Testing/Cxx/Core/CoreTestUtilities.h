@@ -3,6 +3,7 @@
 #ifndef foldingmeshes_CoreTestUtilities_h
 #define foldingmeshes_CoreTestUtilities_h
 
+#include "../TestExpect.h"
 #include "MeshPreparation.h"
 #include "TriangleMesh.h"
 
@@ -25,17 +26,7 @@ inline int& Failures()
   return failures;
 }
 
-#define EXPECT(cond, msg)                                                                          \
-  do                                                                                               \
-  {                                                                                                \
-    if (!(cond))                                                                                   \
-    {                                                                                              \
-      std::ostringstream os_;                                                                      \
-      os_ << msg;                                                                                  \
-      std::printf("FAIL (%s:%d): %s\n", __FILE__, __LINE__, os_.str().c_str());                    \
-      ++coretest::Failures();                                                                      \
-    }                                                                                              \
-  } while (0)
+#define EXPECT(cond, msg) FOLDINGMESHES_EXPECT(coretest::Failures(), cond, msg)
 
 /// Stops the test at once (for preconditions the rest depends on).
 #define REQUIRE(cond, msg)                                                                         \
