@@ -360,6 +360,16 @@ struct Reader
       for (vtkIdType i = 0; i < np; ++i)
         m.errorBudget[i] = budget->GetTuple1(i);
     }
+    // Optional too: without it the unfolder treats every boundary loop as possibly the
+    // input's own border and fills none (UnfoldOptions::closeHoles).
+    if (vtkDataArray* border = vtkDataArray::SafeDownCast(pd->GetAbstractArray("InputBoundary")))
+    {
+      if (border->GetNumberOfTuples() != np || border->GetNumberOfComponents() != 1)
+        return this->Fail(where, "InputBoundary does not have one value per point");
+      m.inputBoundary.resize(np);
+      for (vtkIdType i = 0; i < np; ++i)
+        m.inputBoundary[i] = border->GetTuple1(i) != 0.0 ? 1 : 0;
+    }
     m.originalFaceIds.resize(nt);
     for (vtkIdType f = 0; f < nt; ++f)
     {

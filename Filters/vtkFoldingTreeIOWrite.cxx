@@ -303,6 +303,15 @@ struct Writer
         budget->SetValue(i, m.errorBudget[i]);
       leaf->GetPointData()->AddArray(budget);
     }
+    if (!m.inputBoundary.empty())
+    {
+      vtkNew<vtkUnsignedCharArray> border;
+      border->SetName("InputBoundary");
+      border->SetNumberOfTuples(m.NumberOfPoints());
+      for (int i = 0; i < m.NumberOfPoints(); ++i)
+        border->SetValue(i, m.inputBoundary[i] ? 1 : 0);
+      leaf->GetPointData()->AddArray(border);
+    }
     vtkNew<vtkIdTypeArray> cellIds;
     cellIds->SetName("OriginalCellId");
     cellIds->SetNumberOfTuples(m.NumberOfFaces());

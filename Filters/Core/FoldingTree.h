@@ -94,6 +94,10 @@ struct FoldingLeafMesh
   /// copies without breaking the root epsilon bound - the root epsilon minus the errors the
   /// folds on the way charged here (FoldingTreeOptions::errorBudget).
   std::vector<double> errorBudget;
+  /// Per point (or empty: unknown, e.g. files written before it existed): 1 when the input
+  /// point copied here lay on the input's own border (an edge used by one input face). The
+  /// unfolder never fills a boundary loop along such points (FoldingTreeBuilder sets it).
+  std::vector<char> inputBoundary;
 
   int NumberOfPoints() const { return static_cast<int>(points.size()); }
   int NumberOfFaces() const { return static_cast<int>(triangles.size()); }

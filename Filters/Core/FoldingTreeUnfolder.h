@@ -63,6 +63,18 @@ struct UnfoldOptions
    */
   bool weldBoundaries = true;
   double weldToleranceScale = 0.5;
+  /**
+   * Finally repair the mesh (see RepairReport): drop the faces that make an edge
+   * non-manifold (gap fills first, then the faces most folded against the rest), orient each
+   * connected component consistently, and fill every boundary loop that is not the input's
+   * own border (FoldingLeafMesh::inputBoundary; unknown for older tree files: then nothing
+   * is filled) with a minimal-area triangulation of its vertices, when the centroid and edge
+   * midpoints of every new face lie within holeToleranceScale * root epsilon of the loop
+   * and the loop has at most maximumHoleEdges edges. Loops left open are reported.
+   */
+  bool closeHoles = true;
+  double holeToleranceScale = 0.5;
+  int maximumHoleEdges = 400;
   /// Called with progress in [0,1]; return false to abort.
   std::function<bool(double)> progress;
 };
@@ -105,6 +117,29 @@ struct SeamReport
   int budgetRejectedClusters = 0;     ///< clusters left unmerged: no place within the budgets
 };
 
+/// The final repair (UnfoldOptions::closeHoles). Loops are counted after the repair.
+struct RepairReport
+{
+  int droppedFaces = 0; ///< faces removed at non-manifold edges
+  int flippedFaces = 0; ///< faces reversed to orient their component consistently
+  int filledLoops = 0;  ///< boundary loops closed by new faces
+  int filledFaces = 0;
+  /// Loops left open because they are the input's own border (an edge between two copies of
+  /// input border points): kept, as they must be.
+  int borderLoops = 0;
+  int borderEdges = 0;
+  double borderLength = 0.0;
+  /// Loops left open without border information (trees written before inputBoundary).
+  int unknownLoops = 0;
+  int unknownEdges = 0;
+  double unknownLength = 0.0;
+  /// Gaps that could not be closed: no triangulation, too long, or the fill would leave the
+  /// tolerance (holeToleranceScale).
+  int openLoops = 0;
+  int openEdges = 0;
+  double openLength = 0.0;
+};
+
 struct UnfoldedMesh
 {
   std::vector<Vec3> points;
@@ -132,6 +167,7 @@ struct UnfoldedMesh
   std::vector<SeamReport> seams; ///< one per segmentation node (postorder)
   /// The final boundary weld (weldBoundaries): tearVertices = vertices on open edges before.
   SeamReport weld;
+  RepairReport repair; ///< the final repair (closeHoles)
   int stitchedVertices = 0; ///< sums over the seams
   int unmatchedTearVertices = 0;
   int gapEdges = 0;

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cstddef>
 #include <cstdint>
+#include <set>
 #include <utility>
 #include <vector>
 
@@ -50,6 +51,8 @@ struct Piece
   std::vector<TearList> tear;
   std::vector<uint64_t> onPlane;
   std::vector<double> budget; ///< how far the point may still move (infinite: unknown)
+  /// Copy of a point on the input's own border: 0 no, 1 yes, 2 unknown (older tree files).
+  std::vector<char> border;
   std::vector<int> faceOrig;
   std::vector<int> faceCopy;
   std::vector<char> faceFilled;
@@ -66,6 +69,7 @@ struct Piece
     tear.insert(tear.end(), o.tear.begin(), o.tear.end());
     onPlane.insert(onPlane.end(), o.onPlane.begin(), o.onPlane.end());
     budget.insert(budget.end(), o.budget.begin(), o.budget.end());
+    border.insert(border.end(), o.border.begin(), o.border.end());
     for (const Triangle& t : o.triangles)
       triangles.push_back({ t[0] + offset, t[1] + offset, t[2] + offset });
     faceOrig.insert(faceOrig.end(), o.faceOrig.begin(), o.faceOrig.end());
@@ -145,6 +149,8 @@ private:
 
 public:
   void WeldBoundaries(Piece& piece, SeamReport& seam);
+  // FoldingTreeUnfolderRepair.cxx
+  void Repair(Piece& piece, RepairReport& report);
 
 private:
   void StitchVertices(Piece& piece,
@@ -154,6 +160,15 @@ private:
     double epsilon,
     bool fill,
     SeamReport& seam);
+
+  static int DropNonManifoldFaces(Piece& piece);
+  static int OrientComponents(Piece& piece, int& dropped);
+  static std::vector<std::vector<int>> BoundaryLoops(const Piece& piece);
+  static bool TriangulateLoop(const Piece& piece,
+    const std::vector<int>& loop,
+    const std::set<std::pair<int, int>>& existing,
+    std::vector<Triangle>& triangles);
+  int FillLoops(Piece& piece, RepairReport& report, bool apply);
 
   const FoldingTree& Tree;
   const UnfoldOptions& Options;

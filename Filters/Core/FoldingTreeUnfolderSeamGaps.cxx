@@ -59,7 +59,12 @@ int Unfolder::Zip(Piece& out,
     for (const auto& e : edgeFaces)
       if (e.second.size() == 1 && isTear[e.first.first] && isTear[e.first.second])
         open.push_back(e.first);
-    const double cell = std::max(tol, 1e-300);
+    // Cells of at least tol, and no smaller than an eighth of the longest open edge: an
+    // edge much longer than tol would otherwise cover (length / tol)^3 cells.
+    double longest = 0.0;
+    for (const Edge& e : open)
+      longest = std::max(longest, (out.points[e.first] - out.points[e.second]).norm());
+    const double cell = std::max({ tol, longest / 8.0, 1e-300 });
     auto cellOf = [cell](double x) { return static_cast<long long>(std::floor(x / cell)); };
     std::unordered_map<CellKey, std::vector<int>, CellHash> buckets;
     for (int i = 0; i < static_cast<int>(open.size()); ++i)

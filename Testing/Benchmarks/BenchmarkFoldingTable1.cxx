@@ -1,7 +1,7 @@
 // The paper's Table 1, side by side: per mesh, original faces, non-redundant (stored) faces,
 // compression, tree height, build time, unfold time, symmetric Hausdorff distance between
 // the input and unfold(fold(input)) as a fraction of the bounding-box diagonal (max, and the
-// mean over the vertices of both meshes), open edges before/after, and - for the Table 1
+// mean over the vertices of both meshes), open, non-manifold and misoriented edges before/after (nm, mis), and - for the Table 1
 // models, matched by file name - the paper's row. Default builder and unfolder options (root
 // epsilon 2% of the diagonal, keep the half with more faces, 5% area stop). Not a test:
 // numbers for humans and closing notes.
@@ -112,7 +112,9 @@ void Run(const std::string& path, vtkPolyData* mesh)
   mean /= diagonal;
   const double epsilon = TreeValue(tree, "RootEpsilon") / diagonal;
 
-  std::printf("%-26s %7d %7d %6.1f%% %3d %7.3f %7.3f %7.4f%s %8.5f %6lld %6lld",
+  const foldingmeshes::EdgeCounts before = foldingmeshes::CountEdges(input);
+  const foldingmeshes::EdgeCounts after = foldingmeshes::CountEdges(unfolded);
+  std::printf("%-26s %7d %7d %6.1f%% %3d %7.3f %7.3f %7.4f%s %8.5f %6lld %6lld %4lld %4lld %4lld %4lld",
     stem.c_str(),
     static_cast<int>(TreeValue(tree, "OriginalFaces")),
     static_cast<int>(TreeValue(tree, "StoredFaces")),
@@ -123,8 +125,12 @@ void Run(const std::string& path, vtkPolyData* mesh)
     hausdorff,
     hausdorff <= epsilon ? " " : "!",
     mean,
-    foldingmeshes::CountOpenEdges(input),
-    foldingmeshes::CountOpenEdges(unfolded));
+    before.open,
+    after.open,
+    before.nonManifold,
+    after.nonManifold,
+    before.misoriented,
+    after.misoriented);
   if (const PaperRow* row = FindPaperRow(stem))
     std::printf("  | %-11s %6d %6d %5.1f%% %3d %5.0f",
       row->model,
@@ -168,7 +174,8 @@ int main(int argc, char* argv[])
               "Hausdorff distance: above it)\n",
     vtkSMPTools::GetBackend(),
     vtkSMPTools::GetEstimatedNumberOfThreads());
-  std::printf("%-26s %7s %7s %7s %3s %7s %7s %8s %8s %6s %6s  | %-11s %6s %6s %6s %3s %5s\n",
+  std::printf(
+    "%-26s %7s %7s %7s %3s %7s %7s %8s %8s %6s %6s %4s %4s %4s %4s  | %-11s %6s %6s %6s %3s %5s\n",
     "mesh",
     "faces",
     "stored",
@@ -180,6 +187,10 @@ int main(int argc, char* argv[])
     "mean/dg",
     "open<",
     "open>",
+    "nm<",
+    "nm>",
+    "mis<",
+    "mis>",
     "paper",
     "faces",
     "stored",
