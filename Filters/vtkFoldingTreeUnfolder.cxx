@@ -482,6 +482,7 @@ int vtkFoldingTreeUnfolder::RequestWholeData(vtkInformation*,
   AddValue(fd, "FilledLoops", mesh.repair.filledLoops);
   AddValue(fd, "BorderLoops", mesh.repair.borderLoops);
   AddValue(fd, "BorderEdges", mesh.repair.borderEdges);
+  AddValue(fd, "BorderLength", mesh.repair.borderLength);
   AddValue(fd, "OpenLoops", mesh.repair.openLoops);
   AddValue(fd, "OpenLoopEdges", mesh.repair.openEdges);
   AddValue(fd, "OpenLoopLength", mesh.repair.openLength);

@@ -29,8 +29,8 @@
  *   "MisorientedEdges" (edges whose two faces traverse them in the same direction),
  *   "WeldedVertices" (merged or zipped by the final boundary weld), "BudgetRejectedClusters"
  *   (stitches not made: no position within the error budgets), the final repair's
- *   (CloseHoles) "RepairDroppedFaces", "RepairFlippedFaces", "FilledLoops", "BorderLoops" and
- *   "BorderEdges" (the input's own border, kept open), "OpenLoops", "OpenLoopEdges" and
+ *   (CloseHoles) "RepairDroppedFaces", "RepairFlippedFaces", "FilledLoops", "BorderLoops",
+ *   "BorderEdges" and "BorderLength" (the input's own border, kept open), "OpenLoops", "OpenLoopEdges" and
  *   "OpenLoopLength" (gaps that could not be closed), "UnknownBorderLoops" (not filled: the
  *   tree has no InputBoundary flags), and the tree's "RootEpsilon" and "Diagonal".
  * Every vertex move (fold-line merges, stitching, zipper, smoothing and a final weld of the

@@ -255,8 +255,12 @@ bool UnfoldFoldingTree(const FoldingTree& tree,
     result.weld.node = -1;
     unfolder.WeldBoundaries(piece, result.weld);
   }
+  const int pointsBeforeRepair = piece.NumberOfPoints();
   if (!unfolder.Aborted && options.stitch && options.closeHoles)
     unfolder.Repair(piece, result.repair);
+  result.pointAdded.assign(piece.points.size(), 0);
+  for (int v = pointsBeforeRepair; v < piece.NumberOfPoints(); ++v)
+    result.pointAdded[v] = 1;
   result.aborted = unfolder.Aborted;
   result.points = std::move(piece.points);
   result.triangles = std::move(piece.triangles);

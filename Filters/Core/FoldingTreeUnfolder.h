@@ -124,6 +124,9 @@ struct RepairReport
   int flippedFaces = 0; ///< faces reversed to orient their component consistently
   int filledLoops = 0;  ///< boundary loops closed by new faces
   int filledFaces = 0;
+  /// Loops that no triangulation of their own vertices closes without repeating an edge are
+  /// filled by a fan around a new point at their centroid (point data of the nearest vertex).
+  int addedPoints = 0;
   /// Loops left open because they are the input's own border (an edge between two copies of
   /// input border points): kept, as they must be.
   int borderLoops = 0;
@@ -148,6 +151,9 @@ struct UnfoldedMesh
   std::vector<int> pointOriginalIds; ///< input point id of the leaf point copied
   std::vector<int> pointCopy;        ///< index into copies (a merged point: the lowest one)
   std::vector<char> pointMirrored;   ///< the copy was reflected an odd number of times
+  /// 1: a point added by the repair (RepairReport::addedPoints) at the centroid of a loop; not
+  /// an image of a leaf point (its ids and copy are those of the nearest loop vertex).
+  std::vector<char> pointAdded;
 
   /// Input triangle id of the stored (leaf) triangle copied: a mirrored copy carries the id
   /// of the kept face it reflects (the tree does not store which face was discarded).

@@ -169,6 +169,11 @@ private:
     const std::set<std::pair<int, int>>& existing,
     std::vector<Triangle>& triangles);
   int FillLoops(Piece& piece, RepairReport& report, bool apply);
+  bool FillWithinTolerance(const Piece& piece,
+    const std::vector<int>& loop,
+    const std::vector<Triangle>& fill) const;
+  static void AddPoint(Piece& piece, const Vec3& x, int like);
+  static void RemoveLastPoint(Piece& piece);
 
   const FoldingTree& Tree;
   const UnfoldOptions& Options;

@@ -435,6 +435,88 @@ bool Unfolder::TriangulateLoop(const Piece& piece,
   return true;
 }
 
+/// Appends a point at x with the data of point `like` (copy, ids); no budget left, no flags.
+void Unfolder::AddPoint(Piece& piece, const Vec3& x, int like)
+{
+  piece.points.push_back(x);
+  piece.pointOrig.push_back(piece.pointOrig[like]);
+  piece.pointCopy.push_back(piece.pointCopy[like]);
+  piece.tear.push_back({});
+  piece.onPlane.push_back(0);
+  piece.budget.push_back(0.0);
+  piece.border.push_back(0);
+}
+
+void Unfolder::RemoveLastPoint(Piece& piece)
+{
+  piece.points.pop_back();
+  piece.pointOrig.pop_back();
+  piece.pointCopy.pop_back();
+  piece.tear.pop_back();
+  piece.onPlane.pop_back();
+  piece.budget.pop_back();
+  piece.border.pop_back();
+}
+
+/**
+ * Whether the fill of `loop` stays within the error bound: either every new face is close
+ * to the loop itself (a narrow crack: its centroid and edge midpoints lie within the
+ * tolerance of the loop's edges, which are parts of the surface), or the loop is small and
+ * flat: its vertices within half the tolerance of their best-fit plane, no two farther apart
+ * than four times the tolerance or 2.5 mean loop edges (a missing face or two, on a coarse
+ * mesh, re-tessellated like its neighbours; flat, so not across a crease).
+ */
+bool Unfolder::FillWithinTolerance(const Piece& piece,
+  const std::vector<int>& loop,
+  const std::vector<Triangle>& fill) const
+{
+  const double tolerance = this->Options.holeToleranceScale * this->Tree.rootEpsilon;
+  const int n = static_cast<int>(loop.size());
+  bool narrow = true;
+  for (size_t f = 0; f < fill.size() && narrow; ++f)
+  {
+    const Triangle& t = fill[f];
+    const Vec3 c = (piece.points[t[0]] + piece.points[t[1]] + piece.points[t[2]]) / 3.0;
+    const Vec3 probes[4] = { c, 0.5 * (piece.points[t[0]] + piece.points[t[1]]),
+      0.5 * (piece.points[t[1]] + piece.points[t[2]]),
+      0.5 * (piece.points[t[2]] + piece.points[t[0]]) };
+    for (const Vec3& x : probes)
+    {
+      double d = std::numeric_limits<double>::infinity();
+      for (int i = 0; i < n && d > tolerance; ++i)
+        d = std::min(
+          d, SegmentDistance(x, piece.points[loop[i]], piece.points[loop[(i + 1) % n]]));
+      narrow = narrow && d <= tolerance;
+    }
+  }
+  if (narrow)
+    return true;
+  Vec3 mean = Vec3::Zero();
+  for (int v : loop)
+    mean += piece.points[v];
+  mean /= n;
+  Eigen::Matrix3d cov = Eigen::Matrix3d::Zero();
+  double diameter = 0.0;
+  for (int i = 0; i < n; ++i)
+  {
+    const Vec3 d = piece.points[loop[i]] - mean;
+    cov += d * d.transpose();
+    for (int j = i + 1; j < n; ++j)
+      diameter = std::max(diameter, (piece.points[loop[i]] - piece.points[loop[j]]).norm());
+  }
+  double perimeter = 0.0;
+  for (int i = 0; i < n; ++i)
+    perimeter += (piece.points[loop[i]] - piece.points[loop[(i + 1) % n]]).norm();
+  if (diameter > std::max(4.0 * tolerance, 2.5 * perimeter / n))
+    return false;
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(cov);
+  const Vec3 normal = eig.eigenvectors().col(0);
+  for (int v : loop)
+    if (std::abs((piece.points[v] - mean).dot(normal)) > 0.5 * tolerance)
+      return false;
+  return true;
+}
+
 /**
  * One pass over the boundary loops: the input's border (an edge whose two end points are
  * copies of input border points) and loops with unknown border flags are left alone; the
@@ -444,7 +526,6 @@ bool Unfolder::TriangulateLoop(const Piece& piece,
  */
 int Unfolder::FillLoops(Piece& piece, RepairReport& report, bool apply)
 {
-  const double tolerance = this->Options.holeToleranceScale * this->Tree.rootEpsilon;
   const auto loops = BoundaryLoops(piece);
   std::set<Edge> existing;
   std::map<Edge, int> faceOfHalfEdge; // directed face half-edge -> face
@@ -483,31 +564,35 @@ int Unfolder::FillLoops(Piece& piece, RepairReport& report, bool apply)
     }
     std::vector<Triangle> fill;
     const bool shortEnough = n <= this->Options.maximumHoleEdges;
-    const bool triangulated = shortEnough && TriangulateLoop(piece, loop, existing, fill);
-    bool ok = triangulated;
-    // Within the error bound? The centroid and edge midpoints of every new face must lie
-    // within the tolerance of the loop itself (whose edges are parts of the surface).
-    for (size_t f = 0; f < fill.size() && ok; ++f)
+    bool triangulated = shortEnough && TriangulateLoop(piece, loop, existing, fill);
+    // No triangulation of the loop's own vertices (every diagonal would repeat an edge of
+    // the mesh, e.g. a pocket between stitched copies): a fan around a new vertex at the
+    // loop's centroid, with the point data of the nearest loop vertex.
+    bool fan = false;
+    if (shortEnough && !triangulated)
     {
-      const Triangle& t = fill[f];
-      const Vec3 c = (piece.points[t[0]] + piece.points[t[1]] + piece.points[t[2]]) / 3.0;
-      const Vec3 probes[4] = { c, 0.5 * (piece.points[t[0]] + piece.points[t[1]]),
-        0.5 * (piece.points[t[1]] + piece.points[t[2]]),
-        0.5 * (piece.points[t[2]] + piece.points[t[0]]) };
-      for (const Vec3& x : probes)
-      {
-        double d = std::numeric_limits<double>::infinity();
-        for (int i = 0; i < n && d > tolerance; ++i)
-          d = std::min(
-            d, SegmentDistance(x, piece.points[loop[i]], piece.points[loop[(i + 1) % n]]));
-        ok = ok && d <= tolerance;
-      }
+      Vec3 c = Vec3::Zero();
+      for (int v : loop)
+        c += piece.points[v];
+      c /= n;
+      int nearest = loop[0];
+      for (int v : loop)
+        if ((piece.points[v] - c).norm() < (piece.points[nearest] - c).norm())
+          nearest = v;
+      AddPoint(piece, c, nearest);
+      const int centre = piece.NumberOfPoints() - 1;
+      for (int i = 0; i < n; ++i)
+        fill.push_back({ loop[i], loop[(i + 1) % n], centre });
+      triangulated = fan = true;
     }
+    bool ok = triangulated && this->FillWithinTolerance(piece, loop, fill);
+    if (fan && (!ok || !apply))
+      RemoveLastPoint(piece);
     if (!ok || !apply)
     {
       if (!apply && std::getenv("FOLDINGMESHES_REPAIR_DEBUG"))
         std::fprintf(stderr, "  open loop: %d edges, length %.4g, %s\n", n, length,
-          !shortEnough ? "too long" : !triangulated ? "no triangulation" : "beyond tolerance");
+          !shortEnough ? "too long" : fan ? "fan beyond tolerance" : "beyond tolerance");
       if (!apply)
       {
         ++report.openLoops;
@@ -530,6 +615,7 @@ int Unfolder::FillLoops(Piece& piece, RepairReport& report, bool apply)
         existing.insert(Key(t[k], t[(k + 1) % 3]));
     }
     report.filledFaces += static_cast<int>(fill.size());
+    report.addedPoints += fan;
     ++report.filledLoops;
     ++filled;
   }
@@ -563,7 +649,14 @@ void PrintEdgeClasses(const Piece& piece, const char* when)
     }
     const int cls = filled ? 0 : sameCopy ? 1 : 2;
     if (e.second.size() > 2)
+    {
       ++nonManifold[cls];
+      if (std::getenv("FOLDINGMESHES_REPAIR_DEBUG2"))
+        for (int f : e.second)
+          std::fprintf(stderr, "   nm %d-%d face %d: %d %d %d filled %d\n", a, b, f,
+            piece.triangles[f][0], piece.triangles[f][1], piece.triangles[f][2],
+            piece.faceFilled[f]);
+    }
     if (e.second.size() == 2 &&
       Direction(piece.triangles[e.second[0]], a, b) == Direction(piece.triangles[e.second[1]], a, b))
       ++misoriented[cls];
@@ -581,7 +674,18 @@ void Unfolder::Repair(Piece& piece, RepairReport& report)
   const bool debug = std::getenv("FOLDINGMESHES_REPAIR_DEBUG") != nullptr;
   if (debug)
     PrintEdgeClasses(piece, "before");
-  report.droppedFaces = this->DropNonManifoldFaces(piece);
+  {
+    // Degenerate faces (a repeated vertex) first.
+    std::vector<char> drop(piece.triangles.size(), 0);
+    for (size_t f = 0; f < piece.triangles.size(); ++f)
+    {
+      const Triangle& t = piece.triangles[f];
+      drop[f] = t[0] == t[1] || t[1] == t[2] || t[0] == t[2];
+      report.droppedFaces += drop[f];
+    }
+    KeepFaces(piece, drop);
+  }
+  report.droppedFaces += this->DropNonManifoldFaces(piece);
   report.flippedFaces = this->OrientComponents(piece, report.droppedFaces);
   for (int pass = 0; pass < 3; ++pass)
   {
