@@ -462,6 +462,22 @@ bool MultiBlockToFoldingTree(vtkMultiBlockDataSet* in,
       reader.Double(fd, "BuildSeconds", "Tree", &tree.buildSeconds);
     if (fd->GetAbstractArray("Aborted") && reader.Int(fd, "Aborted", "Tree", aborted))
       tree.aborted = aborted != 0;
+    // Optional (older files have none).
+    if (vtkDataArray* border = vtkDataArray::SafeDownCast(fd->GetAbstractArray("InputBorderEdges")))
+    {
+      if (border->GetNumberOfComponents() != 2)
+      {
+        error = "InputBorderEdges does not have two components";
+        return false;
+      }
+      for (vtkIdType i = 0; i < border->GetNumberOfTuples(); ++i)
+      {
+        const int a = static_cast<int>(border->GetComponent(i, 0));
+        const int b = static_cast<int>(border->GetComponent(i, 1));
+        tree.inputBorderEdges.push_back({ std::min(a, b), std::max(a, b) });
+      }
+      std::sort(tree.inputBorderEdges.begin(), tree.inputBorderEdges.end());
+    }
   }
   const char* rootName =
     in->HasMetaData(0u) ? in->GetMetaData(0u)->Get(vtkCompositeDataSet::NAME()) : nullptr;

@@ -423,6 +423,18 @@ bool FoldingTreeToMultiBlock(const FoldingTree& tree,
   AddDouble(fd, "RootEpsilon", &tree.rootEpsilon);
   AddDouble(fd, "Diagonal", &tree.diagonal);
   AddInt(fd, "Aborted", tree.aborted ? 1 : 0);
+  {
+    vtkNew<vtkIdTypeArray> border; // pairs of input point ids (may be empty)
+    border->SetName("InputBorderEdges");
+    border->SetNumberOfComponents(2);
+    border->SetNumberOfTuples(static_cast<vtkIdType>(tree.inputBorderEdges.size()));
+    for (size_t i = 0; i < tree.inputBorderEdges.size(); ++i)
+    {
+      border->SetTypedComponent(static_cast<vtkIdType>(i), 0, tree.inputBorderEdges[i].first);
+      border->SetTypedComponent(static_cast<vtkIdType>(i), 1, tree.inputBorderEdges[i].second);
+    }
+    fd->AddArray(border);
+  }
   out->SetBlock(1, info);
   out->GetMetaData(1u)->Set(vtkCompositeDataSet::NAME(), "Tree");
   return true;

@@ -7,6 +7,7 @@
 
 #include <cstdint>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace foldingmeshes
@@ -148,6 +149,11 @@ struct FoldingTree
   double rootEpsilon = 0.0;
   double buildSeconds = 0.0;
   bool aborted = false;
+  /// The input's own border: its edges used by one face (after the root's weld of coincident
+  /// points), as sorted pairs of input point ids (FoldingLeafMesh::originalPointIds), sorted.
+  /// With the leaves' inputBoundary flags the unfolder tells the input's border from gaps.
+  /// Empty: no border, or unknown (older files) - then only the flags are used.
+  std::vector<std::pair<int, int>> inputBorderEdges;
 
   bool Empty() const { return this->nodes.empty(); }
   int NumberOfNodes() const { return static_cast<int>(this->nodes.size()); }

@@ -148,11 +148,17 @@ int Builder::Build(WorkMesh w, int parent, int depth, double eps, int folds, uin
       for (int k = 0; k < 3; ++k)
         ++uses[{ std::min(t[k], t[(k + 1) % 3]), std::max(t[k], t[(k + 1) % 3]) }];
     this->InputBoundary.assign(this->Tree.numberOfOriginalPoints, 0);
+    this->Tree.inputBorderEdges.clear();
     for (const auto& e : uses)
       if (e.second == 1)
-        for (int v : { e.first.first, e.first.second })
-          if (w.pointOrig[v] >= 0 && w.pointOrig[v] < this->Tree.numberOfOriginalPoints)
-            this->InputBoundary[w.pointOrig[v]] = 1;
+      {
+        const int a = w.pointOrig[e.first.first], b = w.pointOrig[e.first.second];
+        this->Tree.inputBorderEdges.push_back({ std::min(a, b), std::max(a, b) });
+        for (int v : { a, b })
+          if (v >= 0 && v < this->Tree.numberOfOriginalPoints)
+            this->InputBoundary[v] = 1;
+      }
+    std::sort(this->Tree.inputBorderEdges.begin(), this->Tree.inputBorderEdges.end());
   }
   else if (!dropped.empty())
   {

@@ -172,6 +172,7 @@ private:
   bool FillWithinTolerance(const Piece& piece,
     const std::vector<int>& loop,
     const std::vector<Triangle>& fill) const;
+  bool IsInputBorderEdge(const Piece& piece, int a, int b) const;
   static void AddPoint(Piece& piece, const Vec3& x, int like);
   static void RemoveLastPoint(Piece& piece);
 

@@ -5,7 +5,8 @@
 //   every new face (FoldingFilled) lies within the root epsilon of the sphere; with
 //   closeHoles off the hole stays open;
 // - a hole on the input's border (inputBoundary set on its vertices) is kept and reported as
-//   border; without border information (older files) nothing is filled (unknown loops);
+//   border; with the border edges listed (inputBorderEdges) only listed edges count; without
+//   border information (older files) nothing is filled (unknown loops);
 // - a hole whose fill would leave the tolerance (tiny root epsilon) is left open and
 //   reported (loops, edges, length);
 // - faces flipped by hand are turned back (misoriented 0, the component keeps the
@@ -166,6 +167,33 @@ void TestHoles(const TriangleMesh& sphere)
   EXPECT(b.repair.borderLoops == 1 && b.repair.borderEdges == n && b.repair.borderLength > 0.0,
     "input border: reported as " << b.repair.borderLoops << " loops, " << b.repair.borderEdges
                                  << " edges");
+
+  // With the input's border edges listed (FoldingTree::inputBorderEdges): the flags alone do
+  // not make a border - a hole whose edges are not listed is filled, one whose edges are is
+  // kept.
+  {
+    std::vector<std::pair<int, int>> holeEdges;
+    for (const Triangle& t : holed.triangles)
+      for (int k = 0; k < 3; ++k)
+      {
+        const int a = t[k], b = t[(k + 1) % 3];
+        if (loop.count(a) && loop.count(b))
+          holeEdges.push_back({ std::min(a, b), std::max(a, b) });
+      }
+    std::sort(holeEdges.begin(), holeEdges.end());
+    holeEdges.erase(std::unique(holeEdges.begin(), holeEdges.end()), holeEdges.end());
+    FoldingTree listed = bordered;
+    listed.inputBorderEdges = holeEdges; // (contains the loop's edges, and maybe chords)
+    const UnfoldedMesh kept = Unfold(listed);
+    EXPECT(kept.repair.borderLoops == 1 && kept.repair.filledLoops == 0,
+      "listed border edges: the border was filled");
+    FoldingTree other = bordered;
+    other.inputBorderEdges = { { 1000000, 1000001 } }; // another border elsewhere
+    const UnfoldedMesh filledAnyway = Unfold(other);
+    EXPECT(filledAnyway.repair.borderLoops == 0 && filledAnyway.repair.filledLoops == 1 &&
+        Count(filledAnyway.triangles).open == 0,
+      "border flags without a listed border edge: the hole was not filled");
+  }
 
   // Unknown border (a tree file without InputBoundary): nothing filled.
   FoldingTree unknown = tree;
