@@ -25,17 +25,16 @@ using namespace repair;
  */
 std::vector<std::vector<int>> Unfolder::BoundaryLoops(const Piece& piece)
 {
-  std::map<Edge, int> uses;
   std::map<int, std::vector<int>> holeNext; // hole half-edge a -> b, by a
-  for (const Triangle& t : piece.triangles)
-    for (int k = 0; k < 3; ++k)
-      ++uses[Key(t[k], t[(k + 1) % 3])];
-  for (const Triangle& t : piece.triangles)
-    for (int k = 0; k < 3; ++k)
+  for (const auto& e : EdgeFaces(piece))
+    if (e.second.size() == 1)
     {
-      const int a = t[k], b = t[(k + 1) % 3];
-      if (uses[Key(a, b)] == 1)
-        holeNext[b].push_back(a);
+      const Triangle& t = piece.triangles[e.second[0]];
+      const int a = e.first.first, b = e.first.second;
+      if (Direction(t, a, b) == 1)
+        holeNext[b].push_back(a); // face a -> b: hole b -> a
+      else
+        holeNext[a].push_back(b);
     }
   std::vector<std::vector<int>> loops;
   std::set<Edge> visited;
@@ -102,7 +101,7 @@ std::vector<std::vector<int>> Unfolder::BoundaryLoops(const Piece& piece)
  */
 bool Unfolder::TriangulateLoop(const Piece& piece,
   const std::vector<int>& loop,
-  const std::set<Edge>& existing,
+  const EdgeSet& existing,
   std::vector<Triangle>& triangles)
 {
   const int n = static_cast<int>(loop.size());
@@ -160,7 +159,8 @@ bool Unfolder::TriangulateLoop(const Piece& piece,
   }
   // Ear clipping: the ear with the shortest new diagonal.
   std::vector<int> poly(loop.begin(), loop.end());
-  std::set<Edge> used = existing;
+  EdgeSet added; // the new diagonals
+  auto used = [&](const Edge& e) { return existing.count(e) || added.count(e); };
   while (poly.size() > 3)
   {
     const int m = static_cast<int>(poly.size());
@@ -169,7 +169,7 @@ bool Unfolder::TriangulateLoop(const Piece& piece,
     for (int i = 0; i < m; ++i)
     {
       const int a = poly[i], c = poly[(i + 2) % m];
-      if (used.count(Key(a, c)))
+      if (used(Key(a, c)))
         continue;
       const double length = (piece.points[a] - piece.points[c]).norm();
       if (length < bestLength)
@@ -182,7 +182,7 @@ bool Unfolder::TriangulateLoop(const Piece& piece,
       return false;
     const int a = poly[best], b = poly[(best + 1) % m], c = poly[(best + 2) % m];
     triangles.push_back({ a, b, c });
-    used.insert(Key(a, c));
+    added.insert(Key(a, c));
     poly.erase(poly.begin() + (best + 1) % m);
   }
   triangles.push_back({ poly[0], poly[1], poly[2] });
@@ -295,8 +295,10 @@ bool Unfolder::FillWithinTolerance(const Piece& piece,
 int Unfolder::FillLoops(Piece& piece, RepairReport& report, bool apply)
 {
   const auto loops = BoundaryLoops(piece);
-  std::set<Edge> existing;
-  std::map<Edge, int> faceOfHalfEdge; // directed face half-edge -> face
+  EdgeSet existing;
+  std::unordered_map<Edge, int, EdgeHash> faceOfHalfEdge; // directed face half-edge -> face
+  existing.reserve(3 * piece.triangles.size());
+  faceOfHalfEdge.reserve(3 * piece.triangles.size());
   for (int f = 0; f < piece.NumberOfFaces(); ++f)
   {
     const Triangle& t = piece.triangles[f];

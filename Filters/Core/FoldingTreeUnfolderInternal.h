@@ -7,7 +7,9 @@
 #include <algorithm>
 #include <cstddef>
 #include <cstdint>
-#include <set>
+#include <functional>
+#include <unordered_map>
+#include <unordered_set>
 #include <utility>
 #include <vector>
 
@@ -101,6 +103,17 @@ struct CellHash
   }
 };
 
+/// Hash of an edge (pair of point ids), for the repair's edge sets.
+struct EdgeHash
+{
+  size_t operator()(const std::pair<int, int>& e) const
+  {
+    return std::hash<long long>()((static_cast<long long>(e.first) << 32) ^
+      static_cast<unsigned int>(e.second));
+  }
+};
+using EdgeSet = std::unordered_set<std::pair<int, int>, EdgeHash>;
+
 /// The postorder unfolding of a folding tree (see UnfoldFoldingTree). The traversal, the
 /// copies and the fold lines are in FoldingTreeUnfolder.cxx; the seam repair in
 /// FoldingTreeUnfolderStitching.cxx (vertex pairing, clusters, smoothing, final weld) and
@@ -166,7 +179,7 @@ private:
   static std::vector<std::vector<int>> BoundaryLoops(const Piece& piece);
   static bool TriangulateLoop(const Piece& piece,
     const std::vector<int>& loop,
-    const std::set<std::pair<int, int>>& existing,
+    const EdgeSet& existing,
     std::vector<Triangle>& triangles);
   int FillLoops(Piece& piece, RepairReport& report, bool apply);
   bool FillWithinTolerance(const Piece& piece,

@@ -33,15 +33,24 @@ inline double Area(const Piece& p, const Triangle& t)
   return 0.5 * Normal(p, t).norm();
 }
 
-/// Undirected edge -> faces using it.
-inline std::map<Edge, std::vector<int>> EdgeFaces(const Piece& p)
+/// Undirected edge -> faces using it, sorted by edge.
+inline std::vector<std::pair<Edge, std::vector<int>>> EdgeFaces(const Piece& p)
 {
-  std::map<Edge, std::vector<int>> edges;
+  std::vector<std::pair<Edge, int>> uses;
+  uses.reserve(3 * p.triangles.size());
   for (int f = 0; f < p.NumberOfFaces(); ++f)
   {
     const Triangle& t = p.triangles[f];
     for (int k = 0; k < 3; ++k)
-      edges[Key(t[k], t[(k + 1) % 3])].push_back(f);
+      uses.push_back({ Key(t[k], t[(k + 1) % 3]), f });
+  }
+  std::sort(uses.begin(), uses.end());
+  std::vector<std::pair<Edge, std::vector<int>>> edges;
+  for (size_t i = 0; i < uses.size(); ++i)
+  {
+    if (i == 0 || uses[i].first != uses[i - 1].first)
+      edges.push_back({ uses[i].first, {} });
+    edges.back().second.push_back(uses[i].second);
   }
   return edges;
 }
