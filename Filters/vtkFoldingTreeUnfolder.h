@@ -149,7 +149,7 @@ public:
    * orient every connected component consistently, and fill each boundary loop that is not
    * the input's own border (the leaves' "InputBoundary" point array; trees without it: no
    * loop is filled) by a minimal-area triangulation of its vertices, when every new face
-   * stays within HoleToleranceScale x the root tolerance of the loop (default 0.5, range
+   * stays within HoleToleranceScale x the root tolerance of the loop (default 1, range
    * 0..10) and the loop has at most MaximumHoleEdges edges (default 400, range 3..100000).
    * Loops left open are reported ("OpenLoops", "OpenLoopEdges", "OpenLoopLength").
    */
@@ -212,7 +212,7 @@ protected:
   bool WeldBoundaries = true;
   double WeldToleranceScale = 0.5;
   bool CloseHoles = true;
-  double HoleToleranceScale = 0.5;
+  double HoleToleranceScale = 1.0;
   int MaximumHoleEdges = 400;
 
   int OpenGapCount = 0;

@@ -73,7 +73,7 @@ struct UnfoldOptions
    * and the loop has at most maximumHoleEdges edges. Loops left open are reported.
    */
   bool closeHoles = true;
-  double holeToleranceScale = 0.5;
+  double holeToleranceScale = 1.0;
   int maximumHoleEdges = 400;
   /// Called with progress in [0,1]; return false to abort.
   std::function<bool(double)> progress;

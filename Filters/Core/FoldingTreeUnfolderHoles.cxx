@@ -26,9 +26,37 @@ using namespace repair;
 std::vector<std::vector<int>> Unfolder::BoundaryLoops(const Piece& piece)
 {
   std::map<int, std::vector<int>> holeNext; // hole half-edge a -> b, by a
+  std::unordered_map<Edge, int, EdgeHash> halfEdges; // directed face half-edge -> face
+  EdgeSet open;
+  halfEdges.reserve(3 * piece.triangles.size());
+  for (int f = 0; f < piece.NumberOfFaces(); ++f)
+    for (int k = 0; k < 3; ++k)
+      halfEdges[{ piece.triangles[f][k], piece.triangles[f][(k + 1) % 3] }] = f;
+  // Arrived at b by the hole edge a -> b (face half-edge b -> a): the next hole edge found by
+  // turning around b through its faces, so that at a pinch vertex (several openings) each
+  // opening is traced as its own loop; -1 if the fan is not consistently oriented.
+  auto turn = [&](int a, int b) -> int
+  {
+    auto it = halfEdges.find({ b, a });
+    for (int guard = 0; it != halfEdges.end() && guard < 256; ++guard)
+    {
+      const Triangle& t = piece.triangles[it->second];
+      int k = 0;
+      while (k < 3 && t[(k + 1) % 3] != b)
+        ++k;
+      if (k == 3)
+        return -1;
+      const int y = t[k]; // half-edge y -> b in this face
+      if (open.count(Key(y, b)))
+        return y;
+      it = halfEdges.find({ b, y });
+    }
+    return -1;
+  };
   for (const auto& e : EdgeFaces(piece))
     if (e.second.size() == 1)
     {
+      open.insert(e.first);
       const Triangle& t = piece.triangles[e.second[0]];
       const int a = e.first.first, b = e.first.second;
       if (Direction(t, a, b) == 1)
@@ -54,13 +82,12 @@ std::vector<std::vector<int>> Unfolder::BoundaryLoops(const Piece& piece)
         auto it = holeNext.find(b);
         if (it == holeNext.end())
           break; // a dead end: inconsistent orientation around b
-        int next = -1;
-        for (int c : it->second)
-          if (!visited.count({ b, c }))
-          {
-            next = c;
-            break;
-          }
+        int next = turn(a, b);
+        if (next >= 0 && visited.count({ b, next }))
+          next = -1;
+        for (size_t i = 0; i < it->second.size() && next < 0; ++i)
+          if (!visited.count({ b, it->second[i] }))
+            next = it->second[i];
         if (next < 0)
         {
           closed = b == start.first; // back where the walk began

@@ -6,7 +6,9 @@
 // epsilon 2% of the diagonal, keep the half with more faces, 5% area stop). Not a test:
 // numbers for humans and closing notes.
 //
-//   BenchmarkFoldingTable1 [--threads N] MESH_OR_FOLDER...
+//   BenchmarkFoldingTable1 [--threads N] [--no-close-holes] [--hole-tolerance F] MESH_OR_FOLDER...
+//   (--no-close-holes: the unfolder without its final repair; --hole-tolerance: its
+//   HoleToleranceScale)
 #include "MeshComparison.h"
 #include "MeshIO.h"
 #include "vtkFoldingTreeBuilder.h"
@@ -74,6 +76,9 @@ double TreeValue(vtkMultiBlockDataSet* tree, const char* name)
   return a && a->GetNumberOfTuples() > 0 ? a->GetTuple1(0) : 0.0;
 }
 
+bool CloseHoles = true;
+double HoleToleranceScale = -1.0; // < 0: the filter's default
+
 void Run(const std::string& path, vtkPolyData* mesh)
 {
   const std::string stem = std::filesystem::path(path).stem().string();
@@ -91,6 +96,9 @@ void Run(const std::string& path, vtkPolyData* mesh)
   }
   vtkNew<vtkFoldingTreeUnfolder> unfolder;
   unfolder->SetInputData(tree);
+  unfolder->SetCloseHoles(CloseHoles);
+  if (HoleToleranceScale >= 0.0)
+    unfolder->SetHoleToleranceScale(HoleToleranceScale);
   const auto t1 = Clock::now();
   unfolder->Update();
   const double unfold = std::chrono::duration<double>(Clock::now() - t1).count();
@@ -150,7 +158,11 @@ int main(int argc, char* argv[])
   for (int i = 1; i < argc; ++i)
   {
     const std::string arg = argv[i];
-    if (arg == "--threads" && i + 1 < argc)
+    if (arg == "--no-close-holes")
+      CloseHoles = false;
+    else if (arg == "--hole-tolerance" && i + 1 < argc)
+      HoleToleranceScale = std::atof(argv[++i]);
+    else if (arg == "--threads" && i + 1 < argc)
     {
       vtkSMPTools::SetBackend("STDThread");
       vtkSMPTools::Initialize(std::atoi(argv[++i]));
