@@ -18,8 +18,7 @@
  *   point (the centroid of the stored points, no cell) whose field data holds OriginalFaces,
  * OriginalPoints, DroppedFaces, StoredFaces, StoredPoints, Compression (1 - stored/original),
  * TreeHeight, NumberOfNodes, NumberOfLeaves, NumberOfFolds, MaximumFoldsOnPath, OriginalArea,
- * BuildSeconds, RootEpsilon, Diagonal, Aborted and InputBorderEdges (2-component vtkIdType:
- * the input's border edges as pairs of input point ids; optional on reading).
+ * BuildSeconds, RootEpsilon, Diagonal, Aborted.
  * - every node block is named after its node index i (preorder, as in the core tree):
  *   "Leaf i", "Fold i (depth d)", "Segmentation i (depth d)".
  * - a leaf is a vtkPolyData (the leaf mesh: double points, triangles) carrying every point
@@ -29,7 +28,9 @@
  *   "Projected" (unsigned char 0/1), "ErrorBudget" (double: how far the unfolder may still
  *   move the point without breaking the root epsilon bound; optional on reading),
  *   "InputBoundary" (unsigned char 1: a copy of a point on the input's own border; optional
- *   on reading: without it the unfolder fills no hole), cell arrays
+ *   on reading: without it the unfolder fills no hole), "InputBorderNeighbors" (vtkIdType, 4
+ *   components: input ids of the point's neighbours along the input's border, -1 padded; the
+ *   tree's inputBorderEdges), cell arrays
  *   "OriginalCellId" (vtkIdType) and "FoldingLeafId" (int, the leaf's node index on every
  *   face, the active cell scalars, so viewers colour the tree by leaf like the segmentation
  *   output), and field data

@@ -80,6 +80,7 @@ struct Reader
     vtkPolyData* Leaf = nullptr;
   };
   std::vector<Item> Items; // in preorder of the blocks
+  std::vector<std::pair<int, int>> BorderEdges; // from the leaves' InputBorderNeighbors
 
   bool Fail(const std::string& where, const std::string& what)
   {
@@ -370,6 +371,19 @@ struct Reader
       for (vtkIdType i = 0; i < np; ++i)
         m.inputBoundary[i] = border->GetTuple1(i) != 0.0 ? 1 : 0;
     }
+    if (vtkDataArray* nb =
+          vtkDataArray::SafeDownCast(pd->GetAbstractArray("InputBorderNeighbors")))
+    {
+      if (nb->GetNumberOfTuples() != np || nb->GetNumberOfComponents() != 4)
+        return this->Fail(where, "InputBorderNeighbors does not have four values per point");
+      for (vtkIdType i = 0; i < np; ++i)
+        for (int k = 0; k < 4; ++k)
+        {
+          const int o = m.originalPointIds[i], x = static_cast<int>(nb->GetComponent(i, k));
+          if (x >= 0)
+            this->BorderEdges.push_back({ std::min(o, x), std::max(o, x) });
+        }
+    }
     m.originalFaceIds.resize(nt);
     for (vtkIdType f = 0; f < nt; ++f)
     {
@@ -462,22 +476,7 @@ bool MultiBlockToFoldingTree(vtkMultiBlockDataSet* in,
       reader.Double(fd, "BuildSeconds", "Tree", &tree.buildSeconds);
     if (fd->GetAbstractArray("Aborted") && reader.Int(fd, "Aborted", "Tree", aborted))
       tree.aborted = aborted != 0;
-    // Optional (older files have none).
-    if (vtkDataArray* border = vtkDataArray::SafeDownCast(fd->GetAbstractArray("InputBorderEdges")))
-    {
-      if (border->GetNumberOfComponents() != 2)
-      {
-        error = "InputBorderEdges does not have two components";
-        return false;
-      }
-      for (vtkIdType i = 0; i < border->GetNumberOfTuples(); ++i)
-      {
-        const int a = static_cast<int>(border->GetComponent(i, 0));
-        const int b = static_cast<int>(border->GetComponent(i, 1));
-        tree.inputBorderEdges.push_back({ std::min(a, b), std::max(a, b) });
-      }
-      std::sort(tree.inputBorderEdges.begin(), tree.inputBorderEdges.end());
-    }
+
   }
   const char* rootName =
     in->HasMetaData(0u) ? in->GetMetaData(0u)->Get(vtkCompositeDataSet::NAME()) : nullptr;
@@ -514,6 +513,11 @@ bool MultiBlockToFoldingTree(vtkMultiBlockDataSet* in,
     if (leafBlocks)
       (*leafBlocks)[index[i]] = item.Leaf;
   }
+  tree.inputBorderEdges = std::move(reader.BorderEdges);
+  std::sort(tree.inputBorderEdges.begin(), tree.inputBorderEdges.end());
+  tree.inputBorderEdges.erase(
+    std::unique(tree.inputBorderEdges.begin(), tree.inputBorderEdges.end()),
+    tree.inputBorderEdges.end());
   for (int i = 0; i < n; ++i) // children in block order
     if (reader.Items[i].Parent >= 0)
       tree.nodes[index[reader.Items[i].Parent]].children.push_back(index[i]);

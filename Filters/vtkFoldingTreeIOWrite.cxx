@@ -25,6 +25,7 @@
 #include <cmath>
 #include <cstring>
 #include <limits>
+#include <map>
 #include <sstream>
 
 namespace foldingmeshes
@@ -311,6 +312,29 @@ struct Writer
       for (int i = 0; i < m.NumberOfPoints(); ++i)
         border->SetValue(i, m.inputBoundary[i] ? 1 : 0);
       leaf->GetPointData()->AddArray(border);
+      // The tree's input border edges (FoldingTree::inputBorderEdges) at their end points: the
+      // input ids of up to four border neighbours of the point's input point, -1 padded.
+      vtkNew<vtkIdTypeArray> neighbours;
+      neighbours->SetName("InputBorderNeighbors");
+      neighbours->SetNumberOfComponents(4);
+      neighbours->SetNumberOfTuples(m.NumberOfPoints());
+      std::map<int, std::vector<int>> around;
+      for (const auto& e : this->Tree.inputBorderEdges)
+      {
+        around[e.first].push_back(e.second);
+        around[e.second].push_back(e.first);
+      }
+      for (int i = 0; i < m.NumberOfPoints(); ++i)
+      {
+        int k = 0;
+        auto it = around.find(m.originalPointIds[i]);
+        if (m.inputBoundary[i] && it != around.end())
+          for (size_t j = 0; j < it->second.size() && k < 4; ++j)
+            neighbours->SetTypedComponent(i, k++, it->second[j]);
+        for (; k < 4; ++k)
+          neighbours->SetTypedComponent(i, k, -1);
+      }
+      leaf->GetPointData()->AddArray(neighbours);
     }
     vtkNew<vtkIdTypeArray> cellIds;
     cellIds->SetName("OriginalCellId");
@@ -423,18 +447,6 @@ bool FoldingTreeToMultiBlock(const FoldingTree& tree,
   AddDouble(fd, "RootEpsilon", &tree.rootEpsilon);
   AddDouble(fd, "Diagonal", &tree.diagonal);
   AddInt(fd, "Aborted", tree.aborted ? 1 : 0);
-  {
-    vtkNew<vtkIdTypeArray> border; // pairs of input point ids (may be empty)
-    border->SetName("InputBorderEdges");
-    border->SetNumberOfComponents(2);
-    border->SetNumberOfTuples(static_cast<vtkIdType>(tree.inputBorderEdges.size()));
-    for (size_t i = 0; i < tree.inputBorderEdges.size(); ++i)
-    {
-      border->SetTypedComponent(static_cast<vtkIdType>(i), 0, tree.inputBorderEdges[i].first);
-      border->SetTypedComponent(static_cast<vtkIdType>(i), 1, tree.inputBorderEdges[i].second);
-    }
-    fd->AddArray(border);
-  }
   out->SetBlock(1, info);
   out->GetMetaData(1u)->Set(vtkCompositeDataSet::NAME(), "Tree");
   return true;

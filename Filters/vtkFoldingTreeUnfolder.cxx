@@ -51,7 +51,7 @@ void AddValue(vtkFieldData* fd, const char* name, double value)
 bool IsTreeArray(const char* name, bool points)
 {
   static const char* const pointNames[] = {
-    "OriginalPointId", "TearMask", "PlaneMask", "Projected"
+    "OriginalPointId", "TearMask", "PlaneMask", "Projected", "InputBorderNeighbors"
   };
   if (points)
   {
