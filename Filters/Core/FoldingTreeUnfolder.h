@@ -64,13 +64,21 @@ struct UnfoldOptions
   bool weldBoundaries = true;
   double weldToleranceScale = 0.5;
   /**
-   * Finally repair the mesh (see RepairReport): drop the faces that make an edge
+   * Finally (with stitch on) repair the mesh (see RepairReport, FoldingTreeUnfolderRepair.cxx
+   * and FoldingTreeUnfolderHoles.cxx): drop degenerate faces and the faces that make an edge
    * non-manifold (gap fills first, then the faces most folded against the rest), orient each
-   * connected component consistently, and fill every boundary loop that is not the input's
-   * own border (FoldingLeafMesh::inputBoundary; unknown for older tree files: then nothing
-   * is filled) with a minimal-area triangulation of its vertices, when the centroid and edge
-   * midpoints of every new face lie within holeToleranceScale * root epsilon of the loop
-   * and the loop has at most maximumHoleEdges edges. Loops left open are reported.
+   * connected component consistently (patches of consistently oriented faces flipped greedily,
+   * largest first; faces at a one-sided conflict dropped), and fill every boundary loop that
+   * is not the input's own border - an edge between copies of input border points
+   * (FoldingLeafMesh::inputBoundary) whose input ids form an input border edge
+   * (FoldingTree::inputBorderEdges); without flags (older tree files) nothing is filled - by a
+   * minimal-area triangulation of its vertices (a fan around a new point at its centroid when
+   * every diagonal would repeat an edge), when the centroid and edge midpoints of every new
+   * face lie within holeToleranceScale * root epsilon of the loop, or the loop is small and
+   * flat, and it has at most maximumHoleEdges edges. A gap that opens into the input's border
+   * is closed by a chord between two border vertices (within 2 * that tolerance). Loops left
+   * open are reported. FOLDINGMESHES_REPAIR_DEBUG set in the environment prints where the
+   * open, non-manifold and misoriented edges are before and after (stderr).
    */
   bool closeHoles = true;
   double holeToleranceScale = 1.0;
@@ -215,7 +223,8 @@ struct UnfoldedMesh
  *   left unmatched and the boundary edges between tear vertices are reported per node
  *   (SeamReport) and in total - never hidden.
  * - finally (weldBoundaries) the open boundaries of different copies are stitched once more
- *   (UnfoldedMesh::weld).
+ *   (UnfoldedMesh::weld), and (closeHoles) the mesh is repaired: non-manifold faces dropped,
+ *   components oriented, holes that are not the input's border filled (UnfoldedMesh::repair).
  * With the builder's error budgets (FoldingTreeOptions::errorBudget) and respectErrorBudget,
  * no point ends farther from the affine image of its leaf point than that point's budget, so
  * the result stays within the root epsilon of the input the tree was built from.

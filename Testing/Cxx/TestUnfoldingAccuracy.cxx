@@ -15,7 +15,8 @@
 //   cases closed with M's point count;
 // - the final repair (CloseHoles, default on): a closed manifold M (dino, triceratops, the
 //   procedural meshes) comes back without non-manifold or misoriented edges and with open
-//   edges below 1% of the edges, every open edge in a reported loop (OpenLoopEdges +
+//   edges below 1% of the edges (none at all for the real meshes), every open edge in a
+//   reported loop (OpenLoopEdges +
 //   BorderEdges); an M with a border (teapot, queen) keeps it: at least as many border loops
 //   as M has, at least 90% of its length (never filled); with CloseHoles off the closed inputs
 //   have more open edges (the repair is what closes them), with it the Hausdorff bound holds.
@@ -266,7 +267,8 @@ long long TriangleCount(vtkPolyData* pd)
 vtkSmartPointer<vtkPolyData> RoundTrip(const std::string& name,
   vtkPolyData* mesh,
   bool exact,
-  double* seconds = nullptr)
+  double* seconds = nullptr,
+  bool closesCompletely = false)
 {
   const auto start = std::chrono::steady_clock::now();
   vtkNew<vtkFoldingTreeBuilder> builder;
@@ -356,7 +358,7 @@ vtkSmartPointer<vtkPolyData> RoundTrip(const std::string& name,
     EXPECT(edges.nonManifold == 0 && edges.misoriented == 0,
       name << ": closed input, " << edges.nonManifold << " non-manifold and "
            << edges.misoriented << " misoriented edges after the repair");
-    EXPECT(edges.open <= 0.01 * edges.edges,
+    EXPECT(edges.open <= (closesCompletely ? 0.0 : 0.01 * edges.edges),
       name << ": closed input, " << edges.open << " open edges of " << edges.edges);
     EXPECT(Field(out, "BorderLoops") == 0, name << ": closed input, border loops reported");
   }
@@ -472,7 +474,8 @@ int main(int argc, char* argv[])
     if (!mesh)
       continue;
     double seconds = 0.0;
-    RoundTrip(std::filesystem::path(argv[i]).stem().string(), mesh, false, &seconds);
+    // The shared real meshes: closed inputs come back closed (measured on all 29).
+    RoundTrip(std::filesystem::path(argv[i]).stem().string(), mesh, false, &seconds, true);
     std::printf("  (%.1f s)\n", seconds);
   }
   if (Failures > 0)
