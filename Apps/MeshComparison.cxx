@@ -43,9 +43,9 @@ EdgeCounts CountEdges(vtkPolyData* mesh)
       const vtkIdType a = id[pts[k]], b = id[pts[(k + 1) % n]];
       if (a != b)
       {
-        auto it = edges.emplace(std::make_pair(std::min(a, b), std::max(a, b)),
-                         std::array<int, 2>{ 0, 0 })
-                    .first;
+        auto it =
+          edges.emplace(std::make_pair(std::min(a, b), std::max(a, b)), std::array<int, 2>{ 0, 0 })
+            .first;
         ++it->second[a < b ? 0 : 1];
       }
     }

@@ -79,7 +79,7 @@ struct Reader
     int Parent = -1; // traversal position of the parent
     vtkPolyData* Leaf = nullptr;
   };
-  std::vector<Item> Items; // in preorder of the blocks
+  std::vector<Item> Items;                      // in preorder of the blocks
   std::vector<std::pair<int, int>> BorderEdges; // from the leaves' InputBorderNeighbors
 
   bool Fail(const std::string& where, const std::string& what)
@@ -371,8 +371,7 @@ struct Reader
       for (vtkIdType i = 0; i < np; ++i)
         m.inputBoundary[i] = border->GetTuple1(i) != 0.0 ? 1 : 0;
     }
-    if (vtkDataArray* nb =
-          vtkDataArray::SafeDownCast(pd->GetAbstractArray("InputBorderNeighbors")))
+    if (vtkDataArray* nb = vtkDataArray::SafeDownCast(pd->GetAbstractArray("InputBorderNeighbors")))
     {
       if (nb->GetNumberOfTuples() != np || nb->GetNumberOfComponents() != 4)
         return this->Fail(where, "InputBorderNeighbors does not have four values per point");
@@ -476,7 +475,6 @@ bool MultiBlockToFoldingTree(vtkMultiBlockDataSet* in,
       reader.Double(fd, "BuildSeconds", "Tree", &tree.buildSeconds);
     if (fd->GetAbstractArray("Aborted") && reader.Int(fd, "Aborted", "Tree", aborted))
       tree.aborted = aborted != 0;
-
   }
   const char* rootName =
     in->HasMetaData(0u) ? in->GetMetaData(0u)->Get(vtkCompositeDataSet::NAME()) : nullptr;

@@ -30,9 +30,10 @@
  *   "WeldedVertices" (merged or zipped by the final boundary weld), "BudgetRejectedClusters"
  *   (stitches not made: no position within the error budgets), the final repair's
  *   (CloseHoles) "RepairDroppedFaces", "RepairFlippedFaces", "FilledLoops", "BorderLoops",
- *   "BorderEdges" and "BorderLength" (the input's own border, kept open), "OpenLoops", "OpenLoopEdges" and
- *   "OpenLoopLength" (gaps that could not be closed), "UnknownBorderLoops" (not filled: the
- *   tree has no InputBoundary flags), and the tree's "RootEpsilon" and "Diagonal".
+ *   "BorderEdges" and "BorderLength" (the input's own border, kept open), "OpenLoops",
+ *   "OpenLoopEdges" and "OpenLoopLength" (gaps that could not be closed),
+ *   "UnknownBorderLoops" (not filled: the tree has no InputBoundary flags), and the tree's
+ *   "RootEpsilon" and "Diagonal".
  * Every vertex move (fold-line merges, stitching, zipper, smoothing and a final weld of the
  * open boundaries of different copies within half the root epsilon) is bounded by the error
  * budgets the builder stores in the leaves ("ErrorBudget"; UnfoldOptions in

@@ -181,7 +181,7 @@ struct UnfoldedMesh
   std::vector<SeamReport> seams; ///< one per segmentation node (postorder)
   /// The final boundary weld (weldBoundaries): tearVertices = vertices on open edges before.
   SeamReport weld;
-  RepairReport repair; ///< the final repair (closeHoles)
+  RepairReport repair;      ///< the final repair (closeHoles)
   int stitchedVertices = 0; ///< sums over the seams
   int unmatchedTearVertices = 0;
   int gapEdges = 0;

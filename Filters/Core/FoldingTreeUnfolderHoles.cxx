@@ -25,7 +25,7 @@ using namespace repair;
  */
 std::vector<std::vector<int>> Unfolder::BoundaryLoops(const Piece& piece)
 {
-  std::map<int, std::vector<int>> holeNext; // hole half-edge a -> b, by a
+  std::map<int, std::vector<int>> holeNext;          // hole half-edge a -> b, by a
   std::unordered_map<Edge, int, EdgeHash> halfEdges; // directed face half-edge -> face
   EdgeSet open;
   halfEdges.reserve(3 * piece.triangles.size());
@@ -139,8 +139,7 @@ bool Unfolder::TriangulateLoop(const Piece& piece,
       return true; // a loop edge
     return !existing.count(Key(loop[i], loop[j]));
   };
-  auto area = [&](int i, int j, int k)
-  { return Area(piece, { loop[i], loop[j], loop[k] }); };
+  auto area = [&](int i, int j, int k) { return Area(piece, { loop[i], loop[j], loop[k] }); };
   constexpr int maximumDynamic = 160;
   if (n <= maximumDynamic)
   {
@@ -272,15 +271,15 @@ bool Unfolder::FillWithinTolerance(const Piece& piece,
   {
     const Triangle& t = fill[f];
     const Vec3 c = (piece.points[t[0]] + piece.points[t[1]] + piece.points[t[2]]) / 3.0;
-    const Vec3 probes[4] = { c, 0.5 * (piece.points[t[0]] + piece.points[t[1]]),
+    const Vec3 probes[4] = { c,
+      0.5 * (piece.points[t[0]] + piece.points[t[1]]),
       0.5 * (piece.points[t[1]] + piece.points[t[2]]),
       0.5 * (piece.points[t[2]] + piece.points[t[0]]) };
     for (const Vec3& x : probes)
     {
       double d = std::numeric_limits<double>::infinity();
       for (int i = 0; i < n && d > tolerance; ++i)
-        d = std::min(
-          d, SegmentDistance(x, piece.points[loop[i]], piece.points[loop[(i + 1) % n]]));
+        d = std::min(d, SegmentDistance(x, piece.points[loop[i]], piece.points[loop[(i + 1) % n]]));
       narrow = narrow && d <= tolerance;
     }
   }
@@ -411,7 +410,12 @@ int Unfolder::FillLoops(Piece& piece, RepairReport& report, bool apply)
           be += this->IsInputBorderEdge(piece, loop[i], loop[(i + 1) % n]);
           bv += piece.border[loop[i]] == 1;
         }
-        std::fprintf(stderr, "  border loop: %d edges (%d border edges, %d border vertices), length %.4g\n", n, be, bv, length);
+        std::fprintf(stderr,
+          "  border loop: %d edges (%d border edges, %d border vertices), length %.4g\n",
+          n,
+          be,
+          bv,
+          length);
       }
       if (!apply)
       {
@@ -451,8 +455,13 @@ int Unfolder::FillLoops(Piece& piece, RepairReport& report, bool apply)
     if (!ok || !apply)
     {
       if (!apply && std::getenv("FOLDINGMESHES_REPAIR_DEBUG"))
-        std::fprintf(stderr, "  open loop: %d edges, length %.4g, %s\n", n, length,
-          !shortEnough ? "too long" : fan ? "fan beyond tolerance" : "beyond tolerance");
+        std::fprintf(stderr,
+          "  open loop: %d edges, length %.4g, %s\n",
+          n,
+          length,
+          !shortEnough ? "too long"
+            : fan      ? "fan beyond tolerance"
+                       : "beyond tolerance");
       if (!apply)
       {
         ++report.openLoops;

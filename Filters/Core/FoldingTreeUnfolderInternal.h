@@ -108,8 +108,8 @@ struct EdgeHash
 {
   size_t operator()(const std::pair<int, int>& e) const
   {
-    return std::hash<long long>()((static_cast<long long>(e.first) << 32) ^
-      static_cast<unsigned int>(e.second));
+    return std::hash<long long>()(
+      (static_cast<long long>(e.first) << 32) ^ static_cast<unsigned int>(e.second));
   }
 };
 using EdgeSet = std::unordered_set<std::pair<int, int>, EdgeHash>;

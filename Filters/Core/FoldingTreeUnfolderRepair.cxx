@@ -219,14 +219,24 @@ static void PrintEdgeClasses(const Piece& piece, const char* when)
     if (e.second.size() > 2)
       ++nonManifold[cls];
     if (e.second.size() == 2 &&
-      Direction(piece.triangles[e.second[0]], a, b) == Direction(piece.triangles[e.second[1]], a, b))
+      Direction(piece.triangles[e.second[0]], a, b) ==
+        Direction(piece.triangles[e.second[1]], a, b))
       ++misoriented[cls];
   }
   std::fprintf(stderr,
     "repair %s: open border %d foldline %d in-copy %d across-stitch %d | non-manifold filled %d "
     "one-copy %d copies %d | misoriented filled %d one-copy %d copies %d\n",
-    when, open[0], open[1], open[2], open[3], nonManifold[0], nonManifold[1], nonManifold[2],
-    misoriented[0], misoriented[1], misoriented[2]);
+    when,
+    open[0],
+    open[1],
+    open[2],
+    open[3],
+    nonManifold[0],
+    nonManifold[1],
+    nonManifold[2],
+    misoriented[0],
+    misoriented[1],
+    misoriented[2]);
 }
 
 /// The final repair (UnfoldOptions::closeHoles), see RepairReport.
@@ -263,9 +273,16 @@ void Unfolder::Repair(Piece& piece, RepairReport& report)
     std::fprintf(stderr,
       "repair: dropped %d flipped %d filled %d loops %d faces; border %d loops %d edges; open "
       "%d loops %d edges %.4g length; unknown %d loops\n",
-      report.droppedFaces, report.flippedFaces, report.filledLoops, report.filledFaces,
-      report.borderLoops, report.borderEdges, report.openLoops, report.openEdges,
-      report.openLength, report.unknownLoops);
+      report.droppedFaces,
+      report.flippedFaces,
+      report.filledLoops,
+      report.filledFaces,
+      report.borderLoops,
+      report.borderEdges,
+      report.openLoops,
+      report.openEdges,
+      report.openLength,
+      report.unknownLoops);
   }
 }
 } // namespace unfolder_detail

@@ -96,8 +96,7 @@ int Unfolder::Zip(Piece& out,
         const int a = e->first.first, b = e->first.second, f = e->second[0];
         const Triangle& tf = out.triangles[f];
         if (a == u || b == u || tf[0] == u || tf[1] == u || tf[2] == u || !isTear[a] ||
-          !isTear[b] ||
-          std::binary_search(children[u].begin(), children[u].end(), faceChild[f]))
+          !isTear[b] || std::binary_search(children[u].begin(), children[u].end(), faceChild[f]))
           continue;
         const Vec3 ab = out.points[b] - out.points[a];
         const double len2 = ab.squaredNorm();

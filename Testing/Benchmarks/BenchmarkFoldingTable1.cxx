@@ -1,10 +1,10 @@
 // The paper's Table 1, side by side: per mesh, original faces, non-redundant (stored) faces,
 // compression, tree height, build time, unfold time, symmetric Hausdorff distance between
 // the input and unfold(fold(input)) as a fraction of the bounding-box diagonal (max, and the
-// mean over the vertices of both meshes), open, non-manifold and misoriented edges before/after (nm, mis), and - for the Table 1
-// models, matched by file name - the paper's row. Default builder and unfolder options (root
-// epsilon 2% of the diagonal, keep the half with more faces, 5% area stop). Not a test:
-// numbers for humans and closing notes.
+// mean over the vertices of both meshes), open, non-manifold and misoriented edges before/after
+// (nm, mis), and - for the Table 1 models, matched by file name - the paper's row. Default builder
+// and unfolder options (root epsilon 2% of the diagonal, keep the half with more faces, 5% area
+// stop). Not a test: numbers for humans and closing notes.
 //
 //   BenchmarkFoldingTable1 [--threads N] [--no-close-holes] [--hole-tolerance F] MESH_OR_FOLDER...
 //   (--no-close-holes: the unfolder without its final repair; --hole-tolerance: its
@@ -122,7 +122,8 @@ void Run(const std::string& path, vtkPolyData* mesh)
 
   const foldingmeshes::EdgeCounts before = foldingmeshes::CountEdges(input);
   const foldingmeshes::EdgeCounts after = foldingmeshes::CountEdges(unfolded);
-  std::printf("%-26s %7d %7d %6.1f%% %3d %7.3f %7.3f %7.4f%s %8.5f %6lld %6lld %4lld %4lld %4lld %4lld",
+  std::printf(
+    "%-26s %7d %7d %6.1f%% %3d %7.3f %7.3f %7.4f%s %8.5f %6lld %6lld %4lld %4lld %4lld %4lld",
     stem.c_str(),
     static_cast<int>(TreeValue(tree, "OriginalFaces")),
     static_cast<int>(TreeValue(tree, "StoredFaces")),

@@ -343,7 +343,8 @@ vtkSmartPointer<vtkPolyData> RoundTrip(const std::string& name,
     Field(out, "OpenLoops"),
     openLoopEdges,
     Field(out, "OpenLoopLength") / diagonal);
-  EXPECT(edges.open == Field(out, "OpenEdges") && edges.nonManifold == Field(out, "NonManifoldEdges") &&
+  EXPECT(edges.open == Field(out, "OpenEdges") &&
+      edges.nonManifold == Field(out, "NonManifoldEdges") &&
       edges.misoriented == Field(out, "MisorientedEdges"),
     name << ": the edge report differs from the mesh");
   EXPECT(edges.open <= borderEdges + openLoopEdges,
@@ -356,8 +357,8 @@ vtkSmartPointer<vtkPolyData> RoundTrip(const std::string& name,
   if (closedInput)
   {
     EXPECT(edges.nonManifold == 0 && edges.misoriented == 0,
-      name << ": closed input, " << edges.nonManifold << " non-manifold and "
-           << edges.misoriented << " misoriented edges after the repair");
+      name << ": closed input, " << edges.nonManifold << " non-manifold and " << edges.misoriented
+           << " misoriented edges after the repair");
     EXPECT(edges.open <= (closesCompletely ? 0.0 : 0.01 * edges.edges),
       name << ": closed input, " << edges.open << " open edges of " << edges.edges);
     EXPECT(Field(out, "BorderLoops") == 0, name << ": closed input, border loops reported");

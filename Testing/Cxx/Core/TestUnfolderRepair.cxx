@@ -131,7 +131,12 @@ void TestHoles(const TriangleMesh& sphere)
   const EdgeStats s = Count(u.triangles);
   std::printf("hole of %d edges: filled %d loops, %d faces; open %d non-manifold %d "
               "misoriented %d\n",
-    n, u.repair.filledLoops, u.repair.filledFaces, s.open, s.nonManifold, s.misoriented);
+    n,
+    u.repair.filledLoops,
+    u.repair.filledFaces,
+    s.open,
+    s.nonManifold,
+    s.misoriented);
   EXPECT(u.repair.filledLoops == 1 && u.repair.filledFaces == n - 2,
     "hole: " << u.repair.filledLoops << " loops, " << u.repair.filledFaces << " faces filled");
   EXPECT(s.open == 0 && s.nonManifold == 0 && s.misoriented == 0,
@@ -238,7 +243,10 @@ void TestOrientationAndNonManifold(const TriangleMesh& sphere)
   const EdgeStats after = Count(u.triangles);
   std::printf("orientation: %d faces flipped by hand, %d misoriented edges; repair flipped %d, "
               "misoriented %d\n",
-    count, before.misoriented, u.repair.flippedFaces, after.misoriented);
+    count,
+    before.misoriented,
+    u.repair.flippedFaces,
+    after.misoriented);
   EXPECT(before.misoriented > 0, "flipped faces: no misoriented edge to repair");
   EXPECT(after.misoriented == 0 && after.open == 0 && after.nonManifold == 0 &&
       u.NumberOfFaces() == static_cast<int>(sphere.triangles.size()),
