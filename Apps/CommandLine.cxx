@@ -59,6 +59,8 @@ unfold: reconstructs the mesh from a tree written by fold (section 4.3) and writ
 the tree's file stem without a trailing "_tree"; prints faces, open edges, stitched vertices
 and open gaps.
   --no-stitch              the raw union of the copies: no stitching or smoothing of tears
+  --no-close-holes         no final repair (non-manifold faces dropped, orientation made
+                           consistent, holes that are not the input's border filled)
   --original MESH          also measure the distance to MESH (the folded input): Hausdorff
                            and mean distance, also as fractions of its diagonal (-1 without)
   --outdir DIR             folder for the outputs (default: current folder)

@@ -375,7 +375,7 @@ int Fold(int argc, char* argv[])
 int Unfold(int argc, char* argv[])
 {
   std::string treePath, outdir = ".", originalPath;
-  bool json = false, quiet = false, stitch = true;
+  bool json = false, quiet = false, stitch = true, closeHoles = true;
   for (int i = 0; i < argc; ++i)
   {
     const std::string arg = argv[i];
@@ -392,6 +392,8 @@ int Unfold(int argc, char* argv[])
     }
     else if (arg == "--no-stitch")
       stitch = false;
+    else if (arg == "--no-close-holes")
+      closeHoles = false;
     else if (arg == "--original")
     {
       if (i + 1 >= argc)
@@ -421,6 +423,7 @@ int Unfold(int argc, char* argv[])
   }
   vtkNew<vtkFoldingTreeUnfolder> unfolder;
   unfolder->SetStitch(stitch);
+  unfolder->SetCloseHoles(closeHoles);
   unfolder->SetInputData(tree);
   vtkSmartPointer<vtkPolyData> original;
   if (!originalPath.empty())
@@ -456,6 +459,11 @@ int Unfold(int argc, char* argv[])
   const long long faces = static_cast<long long>(mesh->GetNumberOfCells());
   const int openEdges = static_cast<int>(FieldValue(mesh, "OpenEdges"));
   const int nonManifold = static_cast<int>(FieldValue(mesh, "NonManifoldEdges"));
+  const int misoriented = static_cast<int>(FieldValue(mesh, "MisorientedEdges"));
+  const int filledLoops = static_cast<int>(FieldValue(mesh, "FilledLoops"));
+  const int borderLoops = static_cast<int>(FieldValue(mesh, "BorderLoops"));
+  const int openLoops = static_cast<int>(FieldValue(mesh, "OpenLoops"));
+  const double openLoopLength = FieldValue(mesh, "OpenLoopLength");
   const int stitched = static_cast<int>(FieldValue(mesh, "StitchedVertices"));
   const int gaps = static_cast<int>(FieldValue(mesh, "OpenGapCount"));
   const double gapLength = FieldValue(mesh, "OpenGapLength");
@@ -469,6 +477,8 @@ int Unfold(int argc, char* argv[])
   {
     std::printf("{\n  \"tree\": %s,\n  \"stitch\": %s,\n  \"faces\": %lld,\n"
                 "  \"points\": %lld,\n  \"openEdges\": %d,\n  \"nonManifoldEdges\": %d,\n"
+                "  \"misorientedEdges\": %d,\n  \"closeHoles\": %s,\n  \"filledLoops\": %d,\n"
+                "  \"borderLoops\": %d,\n  \"openLoops\": %d,\n  \"openLoopLength\": %.9g,\n"
                 "  \"stitchedVertices\": %d,\n  \"openGapCount\": %d,\n"
                 "  \"openGapLength\": %.9g,\n  \"hausdorffToOriginal\": %.9g,\n"
                 "  \"hausdorffToOriginalRelative\": %.9g,\n"
@@ -480,6 +490,12 @@ int Unfold(int argc, char* argv[])
       static_cast<long long>(mesh->GetNumberOfPoints()),
       openEdges,
       nonManifold,
+      misoriented,
+      closeHoles ? "true" : "false",
+      filledLoops,
+      borderLoops,
+      openLoops,
+      openLoopLength,
       stitched,
       gaps,
       gapLength,
@@ -496,7 +512,17 @@ int Unfold(int argc, char* argv[])
     std::printf("faces:                   %lld (%lld points)\n",
       faces,
       static_cast<long long>(mesh->GetNumberOfPoints()));
-    std::printf("open edges:              %d (non-manifold %d)\n", openEdges, nonManifold);
+    std::printf("open edges:              %d (non-manifold %d, misoriented %d)\n",
+      openEdges,
+      nonManifold,
+      misoriented);
+    std::printf("repair:                  %d loops filled, %d input border loops kept, %d gaps "
+                "left open (length %.6g)%s\n",
+      filledLoops,
+      borderLoops,
+      openLoops,
+      openLoopLength,
+      closeHoles && stitch ? "" : " (off)");
     std::printf("stitched vertices:       %d%s\n", stitched, stitch ? "" : " (stitching off)");
     std::printf("open gaps:               %d (length %.6g)\n", gaps, gapLength);
     if (original)

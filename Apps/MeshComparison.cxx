@@ -16,6 +16,12 @@ namespace foldingmeshes
 /// Edges used by exactly one triangle, vertices at identical positions counted as one.
 long long CountOpenEdges(vtkPolyData* mesh)
 {
+  return CountEdges(mesh).open;
+}
+
+EdgeCounts CountEdges(vtkPolyData* mesh)
+{
+  EdgeCounts counts;
   std::map<std::array<double, 3>, vtkIdType> unique;
   std::vector<vtkIdType> id(mesh->GetNumberOfPoints());
   for (vtkIdType p = 0; p < mesh->GetNumberOfPoints(); ++p)
@@ -24,10 +30,11 @@ long long CountOpenEdges(vtkPolyData* mesh)
     mesh->GetPoint(p, x.data());
     id[p] = unique.emplace(x, static_cast<vtkIdType>(unique.size())).first->second;
   }
-  std::map<std::pair<vtkIdType, vtkIdType>, int> edges;
+  // Per undirected edge: uses in increasing and in decreasing vertex order.
+  std::map<std::pair<vtkIdType, vtkIdType>, std::array<int, 2>> edges;
   vtkCellArray* polys = mesh->GetPolys();
   if (!polys)
-    return 0;
+    return counts;
   vtkIdType n = 0;
   const vtkIdType* pts = nullptr;
   for (polys->InitTraversal(); polys->GetNextCell(n, pts);)
@@ -35,12 +42,21 @@ long long CountOpenEdges(vtkPolyData* mesh)
     {
       const vtkIdType a = id[pts[k]], b = id[pts[(k + 1) % n]];
       if (a != b)
-        ++edges[{ std::min(a, b), std::max(a, b) }];
+      {
+        auto it =
+          edges.emplace(std::make_pair(std::min(a, b), std::max(a, b)), std::array<int, 2>{ 0, 0 })
+            .first;
+        ++it->second[a < b ? 0 : 1];
+      }
     }
-  long long open = 0;
   for (const auto& e : edges)
-    open += e.second == 1;
-  return open;
+  {
+    const int uses = e.second[0] + e.second[1];
+    counts.open += uses == 1;
+    counts.nonManifold += uses > 2;
+    counts.misoriented += uses == 2 && e.second[0] != 1;
+  }
+  return counts;
 }
 
 namespace

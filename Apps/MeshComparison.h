@@ -12,6 +12,16 @@ namespace foldingmeshes
 /// Edges used by exactly one polygon, vertices at identical positions counted as one.
 long long CountOpenEdges(vtkPolyData* mesh);
 
+/// Edge statistics (vertices at identical positions counted as one): edges of one polygon,
+/// of more than two, and of two that traverse the edge in the same direction.
+struct EdgeCounts
+{
+  long long open = 0;
+  long long nonManifold = 0;
+  long long misoriented = 0;
+};
+EdgeCounts CountEdges(vtkPolyData* mesh);
+
 /**
  * Symmetric Hausdorff distance and mean distance between the polygon surfaces of two meshes,
  * by the core's CompareSurfaces (Filters/Core/SurfaceDistance.h: exact point-to-surface

@@ -26,7 +26,11 @@
  *   attributes kept), point arrays "OriginalPointId" (vtkIdType), "TearMask" and
  *   "PlaneMask" (vtkTypeUInt64Array, bit d = tree level d, see Core/FoldingTree.h),
  *   "Projected" (unsigned char 0/1), "ErrorBudget" (double: how far the unfolder may still
- *   move the point without breaking the root epsilon bound; optional on reading), cell arrays
+ *   move the point without breaking the root epsilon bound; optional on reading),
+ *   "InputBoundary" (unsigned char 1: a copy of a point on the input's own border; optional
+ *   on reading: without it the unfolder fills no hole), "InputBorderNeighbors" (vtkIdType, 4
+ *   components: input ids of the point's neighbours along the input's border, -1 padded; the
+ *   tree's inputBorderEdges), cell arrays
  *   "OriginalCellId" (vtkIdType) and "FoldingLeafId" (int, the leaf's node index on every
  *   face, the active cell scalars, so viewers colour the tree by leaf like the segmentation
  *   output), and field data

@@ -79,7 +79,8 @@ struct Reader
     int Parent = -1; // traversal position of the parent
     vtkPolyData* Leaf = nullptr;
   };
-  std::vector<Item> Items; // in preorder of the blocks
+  std::vector<Item> Items;                      // in preorder of the blocks
+  std::vector<std::pair<int, int>> BorderEdges; // from the leaves' InputBorderNeighbors
 
   bool Fail(const std::string& where, const std::string& what)
   {
@@ -360,6 +361,28 @@ struct Reader
       for (vtkIdType i = 0; i < np; ++i)
         m.errorBudget[i] = budget->GetTuple1(i);
     }
+    // Optional too: without it the unfolder treats every boundary loop as possibly the
+    // input's own border and fills none (UnfoldOptions::closeHoles).
+    if (vtkDataArray* border = vtkDataArray::SafeDownCast(pd->GetAbstractArray("InputBoundary")))
+    {
+      if (border->GetNumberOfTuples() != np || border->GetNumberOfComponents() != 1)
+        return this->Fail(where, "InputBoundary does not have one value per point");
+      m.inputBoundary.resize(np);
+      for (vtkIdType i = 0; i < np; ++i)
+        m.inputBoundary[i] = border->GetTuple1(i) != 0.0 ? 1 : 0;
+    }
+    if (vtkDataArray* nb = vtkDataArray::SafeDownCast(pd->GetAbstractArray("InputBorderNeighbors")))
+    {
+      if (nb->GetNumberOfTuples() != np || nb->GetNumberOfComponents() != 4)
+        return this->Fail(where, "InputBorderNeighbors does not have four values per point");
+      for (vtkIdType i = 0; i < np; ++i)
+        for (int k = 0; k < 4; ++k)
+        {
+          const int o = m.originalPointIds[i], x = static_cast<int>(nb->GetComponent(i, k));
+          if (x >= 0)
+            this->BorderEdges.push_back({ std::min(o, x), std::max(o, x) });
+        }
+    }
     m.originalFaceIds.resize(nt);
     for (vtkIdType f = 0; f < nt; ++f)
     {
@@ -488,6 +511,11 @@ bool MultiBlockToFoldingTree(vtkMultiBlockDataSet* in,
     if (leafBlocks)
       (*leafBlocks)[index[i]] = item.Leaf;
   }
+  tree.inputBorderEdges = std::move(reader.BorderEdges);
+  std::sort(tree.inputBorderEdges.begin(), tree.inputBorderEdges.end());
+  tree.inputBorderEdges.erase(
+    std::unique(tree.inputBorderEdges.begin(), tree.inputBorderEdges.end()),
+    tree.inputBorderEdges.end());
   for (int i = 0; i < n; ++i) // children in block order
     if (reader.Items[i].Parent >= 0)
       tree.nodes[index[reader.Items[i].Parent]].children.push_back(index[i]);

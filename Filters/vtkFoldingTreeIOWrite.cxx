@@ -25,6 +25,7 @@
 #include <cmath>
 #include <cstring>
 #include <limits>
+#include <map>
 #include <sstream>
 
 namespace foldingmeshes
@@ -302,6 +303,38 @@ struct Writer
       for (int i = 0; i < m.NumberOfPoints(); ++i)
         budget->SetValue(i, m.errorBudget[i]);
       leaf->GetPointData()->AddArray(budget);
+    }
+    if (!m.inputBoundary.empty())
+    {
+      vtkNew<vtkUnsignedCharArray> border;
+      border->SetName("InputBoundary");
+      border->SetNumberOfTuples(m.NumberOfPoints());
+      for (int i = 0; i < m.NumberOfPoints(); ++i)
+        border->SetValue(i, m.inputBoundary[i] ? 1 : 0);
+      leaf->GetPointData()->AddArray(border);
+      // The tree's input border edges (FoldingTree::inputBorderEdges) at their end points: the
+      // input ids of up to four border neighbours of the point's input point, -1 padded.
+      vtkNew<vtkIdTypeArray> neighbours;
+      neighbours->SetName("InputBorderNeighbors");
+      neighbours->SetNumberOfComponents(4);
+      neighbours->SetNumberOfTuples(m.NumberOfPoints());
+      std::map<int, std::vector<int>> around;
+      for (const auto& e : this->Tree.inputBorderEdges)
+      {
+        around[e.first].push_back(e.second);
+        around[e.second].push_back(e.first);
+      }
+      for (int i = 0; i < m.NumberOfPoints(); ++i)
+      {
+        int k = 0;
+        auto it = around.find(m.originalPointIds[i]);
+        if (m.inputBoundary[i] && it != around.end())
+          for (size_t j = 0; j < it->second.size() && k < 4; ++j)
+            neighbours->SetTypedComponent(i, k++, it->second[j]);
+        for (; k < 4; ++k)
+          neighbours->SetTypedComponent(i, k, -1);
+      }
+      leaf->GetPointData()->AddArray(neighbours);
     }
     vtkNew<vtkIdTypeArray> cellIds;
     cellIds->SetName("OriginalCellId");

@@ -51,7 +51,7 @@ void AddValue(vtkFieldData* fd, const char* name, double value)
 bool IsTreeArray(const char* name, bool points)
 {
   static const char* const pointNames[] = {
-    "OriginalPointId", "TearMask", "PlaneMask", "Projected"
+    "OriginalPointId", "TearMask", "PlaneMask", "Projected", "InputBorderNeighbors"
   };
   if (points)
   {
@@ -309,6 +309,9 @@ int vtkFoldingTreeUnfolder::RequestWholeData(vtkInformation*,
   options.respectErrorBudget = this->RespectErrorBudget;
   options.weldBoundaries = this->WeldBoundaries;
   options.weldToleranceScale = this->WeldToleranceScale;
+  options.closeHoles = this->CloseHoles;
+  options.holeToleranceScale = this->HoleToleranceScale;
+  options.maximumHoleEdges = this->MaximumHoleEdges;
   options.progress = [this](double p)
   {
     this->UpdateProgress(0.9 * p);
@@ -474,6 +477,16 @@ int vtkFoldingTreeUnfolder::RequestWholeData(vtkInformation*,
   AddValue(fd, "MisorientedEdges", mesh.misorientedEdges);
   AddValue(fd, "WeldedVertices", mesh.weld.stitchedVertices);
   AddValue(fd, "BudgetRejectedClusters", mesh.budgetRejectedClusters);
+  AddValue(fd, "RepairDroppedFaces", mesh.repair.droppedFaces);
+  AddValue(fd, "RepairFlippedFaces", mesh.repair.flippedFaces);
+  AddValue(fd, "FilledLoops", mesh.repair.filledLoops);
+  AddValue(fd, "BorderLoops", mesh.repair.borderLoops);
+  AddValue(fd, "BorderEdges", mesh.repair.borderEdges);
+  AddValue(fd, "BorderLength", mesh.repair.borderLength);
+  AddValue(fd, "OpenLoops", mesh.repair.openLoops);
+  AddValue(fd, "OpenLoopEdges", mesh.repair.openEdges);
+  AddValue(fd, "OpenLoopLength", mesh.repair.openLength);
+  AddValue(fd, "UnknownBorderLoops", mesh.repair.unknownLoops);
   AddValue(fd, "RootEpsilon", tree.rootEpsilon);
   AddValue(fd, "Diagonal", tree.diagonal);
 
@@ -502,6 +515,9 @@ void vtkFoldingTreeUnfolder::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "RespectErrorBudget: " << this->RespectErrorBudget << "\n";
   os << indent << "WeldBoundaries: " << this->WeldBoundaries << "\n";
   os << indent << "WeldToleranceScale: " << this->WeldToleranceScale << "\n";
+  os << indent << "CloseHoles: " << this->CloseHoles << "\n";
+  os << indent << "HoleToleranceScale: " << this->HoleToleranceScale << "\n";
+  os << indent << "MaximumHoleEdges: " << this->MaximumHoleEdges << "\n";
   os << indent << "OpenGapCount: " << this->OpenGapCount << "\n";
   os << indent << "OpenGapLength: " << this->OpenGapLength << "\n";
   os << indent << "StitchedVertices: " << this->StitchedVertices << "\n";

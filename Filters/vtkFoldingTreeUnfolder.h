@@ -28,8 +28,12 @@
  *   tear vertices), "OpenGapLength", "FilledFaces", "OpenEdges", "NonManifoldEdges",
  *   "MisorientedEdges" (edges whose two faces traverse them in the same direction),
  *   "WeldedVertices" (merged or zipped by the final boundary weld), "BudgetRejectedClusters"
- *   (stitches not made: no position within the error budgets) and the tree's "RootEpsilon"
- *   and "Diagonal".
+ *   (stitches not made: no position within the error budgets), the final repair's
+ *   (CloseHoles) "RepairDroppedFaces", "RepairFlippedFaces", "FilledLoops", "BorderLoops",
+ *   "BorderEdges" and "BorderLength" (the input's own border, kept open), "OpenLoops",
+ *   "OpenLoopEdges" and "OpenLoopLength" (gaps that could not be closed),
+ *   "UnknownBorderLoops" (not filled: the tree has no InputBoundary flags), and the tree's
+ *   "RootEpsilon" and "Diagonal".
  * Every vertex move (fold-line merges, stitching, zipper, smoothing and a final weld of the
  * open boundaries of different copies within half the root epsilon) is bounded by the error
  * budgets the builder stores in the leaves ("ErrorBudget"; UnfoldOptions in
@@ -142,6 +146,25 @@ public:
 
   ///@{
   /**
+   * Finally repair the mesh (default on): drop the faces that make an edge non-manifold,
+   * orient every connected component consistently, and fill each boundary loop that is not
+   * the input's own border (the leaves' "InputBoundary" point array; trees without it: no
+   * loop is filled) by a minimal-area triangulation of its vertices, when every new face
+   * stays within HoleToleranceScale x the root tolerance of the loop (default 1, range
+   * 0..10) and the loop has at most MaximumHoleEdges edges (default 400, range 3..100000).
+   * Loops left open are reported ("OpenLoops", "OpenLoopEdges", "OpenLoopLength").
+   */
+  vtkSetMacro(CloseHoles, bool);
+  vtkGetMacro(CloseHoles, bool);
+  vtkBooleanMacro(CloseHoles, bool);
+  vtkSetClampMacro(HoleToleranceScale, double, 0.0, 10.0);
+  vtkGetMacro(HoleToleranceScale, double);
+  vtkSetClampMacro(MaximumHoleEdges, int, 3, 100000);
+  vtkGetMacro(MaximumHoleEdges, int);
+  ///@}
+
+  ///@{
+  /**
    * The optional original mesh (input port 1) to measure the output against; see above.
    * SetOriginalData(nullptr) disconnects it.
    */
@@ -189,6 +212,9 @@ protected:
   bool RespectErrorBudget = true;
   bool WeldBoundaries = true;
   double WeldToleranceScale = 0.5;
+  bool CloseHoles = true;
+  double HoleToleranceScale = 1.0;
+  int MaximumHoleEdges = 400;
 
   int OpenGapCount = 0;
   double OpenGapLength = 0.0;

@@ -152,7 +152,8 @@ std::string FoldingTree::Validate() const
         const size_t np = m.points.size(), nt = m.triangles.size();
         if (m.originalPointIds.size() != np || m.tearMask.size() != np ||
           m.planeMask.size() != np || m.projected.size() != np ||
-          (!m.errorBudget.empty() && m.errorBudget.size() != np))
+          (!m.errorBudget.empty() && m.errorBudget.size() != np) ||
+          (!m.inputBoundary.empty() && m.inputBoundary.size() != np))
           return os.str() + "per-point arrays do not match the number of points";
         if (m.originalFaceIds.size() != nt)
           return os.str() + "per-triangle arrays do not match the number of triangles";

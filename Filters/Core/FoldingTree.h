@@ -7,6 +7,7 @@
 
 #include <cstdint>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace foldingmeshes
@@ -94,6 +95,10 @@ struct FoldingLeafMesh
   /// copies without breaking the root epsilon bound - the root epsilon minus the errors the
   /// folds on the way charged here (FoldingTreeOptions::errorBudget).
   std::vector<double> errorBudget;
+  /// Per point (or empty: unknown, e.g. files written before it existed): 1 when the input
+  /// point copied here lay on the input's own border (an edge used by one input face). The
+  /// unfolder never fills a boundary loop along such points (FoldingTreeBuilder sets it).
+  std::vector<char> inputBoundary;
 
   int NumberOfPoints() const { return static_cast<int>(points.size()); }
   int NumberOfFaces() const { return static_cast<int>(triangles.size()); }
@@ -144,6 +149,11 @@ struct FoldingTree
   double rootEpsilon = 0.0;
   double buildSeconds = 0.0;
   bool aborted = false;
+  /// The input's own border: its edges used by one face (after the root's weld of coincident
+  /// points), as sorted pairs of input point ids (FoldingLeafMesh::originalPointIds), sorted.
+  /// With the leaves' inputBoundary flags the unfolder tells the input's border from gaps.
+  /// Empty: no border, or unknown (older files) - then only the flags are used.
+  std::vector<std::pair<int, int>> inputBorderEdges;
 
   bool Empty() const { return this->nodes.empty(); }
   int NumberOfNodes() const { return static_cast<int>(this->nodes.size()); }

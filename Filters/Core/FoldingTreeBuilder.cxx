@@ -87,6 +87,13 @@ void Builder::MakeLeaf(int index, WorkMesh& w, LeafReason reason)
   m.projected = std::move(w.projected);
   if (this->Options.errorBudget)
     m.errorBudget = std::move(w.budget);
+  m.inputBoundary.resize(m.points.size(), 0);
+  for (size_t v = 0; v < m.points.size(); ++v)
+  {
+    const int id = m.originalPointIds[v];
+    m.inputBoundary[v] =
+      id >= 0 && id < static_cast<int>(this->InputBoundary.size()) && this->InputBoundary[id];
+  }
   for (int v = 0; v < static_cast<int>(w.mirrorFlags.size()); ++v)
   {
     auto entries = w.mirrorFlags[v];
@@ -132,7 +139,27 @@ int Builder::Build(WorkMesh w, int parent, int depth, double eps, int folds, uin
 {
   const std::vector<int> dropped = WeldAndDropCollapsed(w);
   if (parent < 0)
+  {
     this->Tree.numberOfDroppedFaces = static_cast<int>(dropped.size());
+    // The input's own border (edges of one face), by input point id: recorded in the
+    // leaves (FoldingLeafMesh::inputBoundary); does not change any folding decision.
+    std::map<std::pair<int, int>, int> uses;
+    for (const Triangle& t : w.triangles)
+      for (int k = 0; k < 3; ++k)
+        ++uses[{ std::min(t[k], t[(k + 1) % 3]), std::max(t[k], t[(k + 1) % 3]) }];
+    this->InputBoundary.assign(this->Tree.numberOfOriginalPoints, 0);
+    this->Tree.inputBorderEdges.clear();
+    for (const auto& e : uses)
+      if (e.second == 1)
+      {
+        const int a = w.pointOrig[e.first.first], b = w.pointOrig[e.first.second];
+        this->Tree.inputBorderEdges.push_back({ std::min(a, b), std::max(a, b) });
+        for (int v : { a, b })
+          if (v >= 0 && v < this->Tree.numberOfOriginalPoints)
+            this->InputBoundary[v] = 1;
+      }
+    std::sort(this->Tree.inputBorderEdges.begin(), this->Tree.inputBorderEdges.end());
+  }
   else if (!dropped.empty())
   {
     // Only projections onto a fold plane make points coincide below the root: the faces

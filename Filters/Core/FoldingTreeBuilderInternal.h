@@ -192,6 +192,8 @@ private:
   std::unique_ptr<SurfaceDistanceQuery> ToInput; ///< distances to the input surface
   std::vector<Plane> PlaneAtDepth;
   std::vector<double> EpsilonAtDepth;
+  /// Per input point id: 1 on the input's border (after the root's weld); see MakeLeaf.
+  std::vector<char> InputBoundary;
   int MaximumDepth = 48;
   double DoneFaces = 0.0;
   double LastProgress = 0.0;

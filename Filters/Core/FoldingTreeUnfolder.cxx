@@ -81,6 +81,10 @@ Piece Unfolder::FromLeaf(int index)
     piece.budget.assign(m.points.size(), std::numeric_limits<double>::infinity());
   else
     piece.budget = m.errorBudget;
+  if (m.inputBoundary.empty())
+    piece.border.assign(m.points.size(), 2);
+  else
+    piece.border = m.inputBoundary;
   piece.faceOrig = m.originalFaceIds;
   piece.faceCopy.assign(m.triangles.size(), id);
   piece.faceFilled.assign(m.triangles.size(), 0);
@@ -167,6 +171,7 @@ void Unfolder::Reflect(const FoldingNode& node, Piece& piece)
     piece.tear.push_back(std::move(reflected));
     piece.onPlane.push_back(0); // the copy's own fold-line flags come from `reflected`
     piece.budget.push_back(piece.budget[v]);
+    piece.border.push_back(piece.border[v]);
   }
   const int nf = piece.NumberOfFaces();
   for (int f = 0; f < nf; ++f)
@@ -250,6 +255,12 @@ bool UnfoldFoldingTree(const FoldingTree& tree,
     result.weld.node = -1;
     unfolder.WeldBoundaries(piece, result.weld);
   }
+  const int pointsBeforeRepair = piece.NumberOfPoints();
+  if (!unfolder.Aborted && options.stitch && options.closeHoles)
+    unfolder.Repair(piece, result.repair);
+  result.pointAdded.assign(piece.points.size(), 0);
+  for (int v = pointsBeforeRepair; v < piece.NumberOfPoints(); ++v)
+    result.pointAdded[v] = 1;
   result.aborted = unfolder.Aborted;
   result.points = std::move(piece.points);
   result.triangles = std::move(piece.triangles);

@@ -63,6 +63,26 @@ struct UnfoldOptions
    */
   bool weldBoundaries = true;
   double weldToleranceScale = 0.5;
+  /**
+   * Finally (with stitch on) repair the mesh (see RepairReport, FoldingTreeUnfolderRepair.cxx
+   * and FoldingTreeUnfolderHoles.cxx): drop degenerate faces and the faces that make an edge
+   * non-manifold (gap fills first, then the faces most folded against the rest), orient each
+   * connected component consistently (patches of consistently oriented faces flipped greedily,
+   * largest first; faces at a one-sided conflict dropped), and fill every boundary loop that
+   * is not the input's own border - an edge between copies of input border points
+   * (FoldingLeafMesh::inputBoundary) whose input ids form an input border edge
+   * (FoldingTree::inputBorderEdges); without flags (older tree files) nothing is filled - by a
+   * minimal-area triangulation of its vertices (a fan around a new point at its centroid when
+   * every diagonal would repeat an edge), when the centroid and edge midpoints of every new
+   * face lie within holeToleranceScale * root epsilon of the loop, or the loop is small and
+   * flat, and it has at most maximumHoleEdges edges. A gap that opens into the input's border
+   * is closed by a chord between two border vertices (within 2 * that tolerance). Loops left
+   * open are reported. FOLDINGMESHES_REPAIR_DEBUG set in the environment prints where the
+   * open, non-manifold and misoriented edges are before and after (stderr).
+   */
+  bool closeHoles = true;
+  double holeToleranceScale = 1.0;
+  int maximumHoleEdges = 400;
   /// Called with progress in [0,1]; return false to abort.
   std::function<bool(double)> progress;
 };
@@ -105,6 +125,32 @@ struct SeamReport
   int budgetRejectedClusters = 0;     ///< clusters left unmerged: no place within the budgets
 };
 
+/// The final repair (UnfoldOptions::closeHoles). Loops are counted after the repair.
+struct RepairReport
+{
+  int droppedFaces = 0; ///< faces removed at non-manifold edges
+  int flippedFaces = 0; ///< faces reversed to orient their component consistently
+  int filledLoops = 0;  ///< boundary loops closed by new faces
+  int filledFaces = 0;
+  /// Loops that no triangulation of their own vertices closes without repeating an edge are
+  /// filled by a fan around a new point at their centroid (point data of the nearest vertex).
+  int addedPoints = 0;
+  /// Loops left open because they are the input's own border (an edge between two copies of
+  /// input border points): kept, as they must be.
+  int borderLoops = 0;
+  int borderEdges = 0;
+  double borderLength = 0.0;
+  /// Loops left open without border information (trees written before inputBoundary).
+  int unknownLoops = 0;
+  int unknownEdges = 0;
+  double unknownLength = 0.0;
+  /// Gaps that could not be closed: no triangulation, too long, or the fill would leave the
+  /// tolerance (holeToleranceScale).
+  int openLoops = 0;
+  int openEdges = 0;
+  double openLength = 0.0;
+};
+
 struct UnfoldedMesh
 {
   std::vector<Vec3> points;
@@ -113,6 +159,9 @@ struct UnfoldedMesh
   std::vector<int> pointOriginalIds; ///< input point id of the leaf point copied
   std::vector<int> pointCopy;        ///< index into copies (a merged point: the lowest one)
   std::vector<char> pointMirrored;   ///< the copy was reflected an odd number of times
+  /// 1: a point added by the repair (RepairReport::addedPoints) at the centroid of a loop; not
+  /// an image of a leaf point (its ids and copy are those of the nearest loop vertex).
+  std::vector<char> pointAdded;
 
   /// Input triangle id of the stored (leaf) triangle copied: a mirrored copy carries the id
   /// of the kept face it reflects (the tree does not store which face was discarded).
@@ -132,6 +181,7 @@ struct UnfoldedMesh
   std::vector<SeamReport> seams; ///< one per segmentation node (postorder)
   /// The final boundary weld (weldBoundaries): tearVertices = vertices on open edges before.
   SeamReport weld;
+  RepairReport repair;      ///< the final repair (closeHoles)
   int stitchedVertices = 0; ///< sums over the seams
   int unmatchedTearVertices = 0;
   int gapEdges = 0;
@@ -173,7 +223,8 @@ struct UnfoldedMesh
  *   left unmatched and the boundary edges between tear vertices are reported per node
  *   (SeamReport) and in total - never hidden.
  * - finally (weldBoundaries) the open boundaries of different copies are stitched once more
- *   (UnfoldedMesh::weld).
+ *   (UnfoldedMesh::weld), and (closeHoles) the mesh is repaired: non-manifold faces dropped,
+ *   components oriented, holes that are not the input's border filled (UnfoldedMesh::repair).
  * With the builder's error budgets (FoldingTreeOptions::errorBudget) and respectErrorBudget,
  * no point ends farther from the affine image of its leaf point than that point's budget, so
  * the result stays within the root epsilon of the input the tree was built from.

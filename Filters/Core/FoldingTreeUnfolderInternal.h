@@ -7,6 +7,9 @@
 #include <algorithm>
 #include <cstddef>
 #include <cstdint>
+#include <functional>
+#include <unordered_map>
+#include <unordered_set>
 #include <utility>
 #include <vector>
 
@@ -50,6 +53,8 @@ struct Piece
   std::vector<TearList> tear;
   std::vector<uint64_t> onPlane;
   std::vector<double> budget; ///< how far the point may still move (infinite: unknown)
+  /// Copy of a point on the input's own border: 0 no, 1 yes, 2 unknown (older tree files).
+  std::vector<char> border;
   std::vector<int> faceOrig;
   std::vector<int> faceCopy;
   std::vector<char> faceFilled;
@@ -66,6 +71,7 @@ struct Piece
     tear.insert(tear.end(), o.tear.begin(), o.tear.end());
     onPlane.insert(onPlane.end(), o.onPlane.begin(), o.onPlane.end());
     budget.insert(budget.end(), o.budget.begin(), o.budget.end());
+    border.insert(border.end(), o.border.begin(), o.border.end());
     for (const Triangle& t : o.triangles)
       triangles.push_back({ t[0] + offset, t[1] + offset, t[2] + offset });
     faceOrig.insert(faceOrig.end(), o.faceOrig.begin(), o.faceOrig.end());
@@ -96,6 +102,17 @@ struct CellHash
     return static_cast<size_t>(k.x * 73856093LL ^ k.y * 19349663LL ^ k.z * 83492791LL);
   }
 };
+
+/// Hash of an edge (pair of point ids), for the repair's edge sets.
+struct EdgeHash
+{
+  size_t operator()(const std::pair<int, int>& e) const
+  {
+    return std::hash<long long>()(
+      (static_cast<long long>(e.first) << 32) ^ static_cast<unsigned int>(e.second));
+  }
+};
+using EdgeSet = std::unordered_set<std::pair<int, int>, EdgeHash>;
 
 /// The postorder unfolding of a folding tree (see UnfoldFoldingTree). The traversal, the
 /// copies and the fold lines are in FoldingTreeUnfolder.cxx; the seam repair in
@@ -145,6 +162,8 @@ private:
 
 public:
   void WeldBoundaries(Piece& piece, SeamReport& seam);
+  // FoldingTreeUnfolderRepair.cxx
+  void Repair(Piece& piece, RepairReport& report);
 
 private:
   void StitchVertices(Piece& piece,
@@ -154,6 +173,21 @@ private:
     double epsilon,
     bool fill,
     SeamReport& seam);
+
+  static int DropNonManifoldFaces(Piece& piece);
+  static int OrientComponents(Piece& piece, int& dropped);
+  static std::vector<std::vector<int>> BoundaryLoops(const Piece& piece);
+  static bool TriangulateLoop(const Piece& piece,
+    const std::vector<int>& loop,
+    const EdgeSet& existing,
+    std::vector<Triangle>& triangles);
+  int FillLoops(Piece& piece, RepairReport& report, bool apply);
+  bool FillWithinTolerance(const Piece& piece,
+    const std::vector<int>& loop,
+    const std::vector<Triangle>& fill) const;
+  bool IsInputBorderEdge(const Piece& piece, int a, int b) const;
+  static void AddPoint(Piece& piece, const Vec3& x, int like);
+  static void RemoveLastPoint(Piece& piece);
 
   const FoldingTree& Tree;
   const UnfoldOptions& Options;

@@ -59,7 +59,12 @@ int Unfolder::Zip(Piece& out,
     for (const auto& e : edgeFaces)
       if (e.second.size() == 1 && isTear[e.first.first] && isTear[e.first.second])
         open.push_back(e.first);
-    const double cell = std::max(tol, 1e-300);
+    // Cells of at least tol, and no smaller than an eighth of the longest open edge: an
+    // edge much longer than tol would otherwise cover (length / tol)^3 cells.
+    double longest = 0.0;
+    for (const Edge& e : open)
+      longest = std::max(longest, (out.points[e.first] - out.points[e.second]).norm());
+    const double cell = std::max({ tol, longest / 8.0, 1e-300 });
     auto cellOf = [cell](double x) { return static_cast<long long>(std::floor(x / cell)); };
     std::unordered_map<CellKey, std::vector<int>, CellHash> buckets;
     for (int i = 0; i < static_cast<int>(open.size()); ++i)
@@ -89,8 +94,9 @@ int Unfolder::Zip(Piece& out,
         if (e == edgeFaces.end() || e->second.size() != 1)
           continue;
         const int a = e->first.first, b = e->first.second, f = e->second[0];
-        if (a == u || b == u || !isTear[a] || !isTear[b] ||
-          std::binary_search(children[u].begin(), children[u].end(), faceChild[f]))
+        const Triangle& tf = out.triangles[f];
+        if (a == u || b == u || tf[0] == u || tf[1] == u || tf[2] == u || !isTear[a] ||
+          !isTear[b] || std::binary_search(children[u].begin(), children[u].end(), faceChild[f]))
           continue;
         const Vec3 ab = out.points[b] - out.points[a];
         const double len2 = ab.squaredNorm();

@@ -243,6 +243,7 @@ void Unfolder::StitchVertices(Piece& piece,
       into.insert(into.end(), piece.tear[v].begin(), piece.tear[v].end());
       Normalize(into);
       piece.onPlane[rep[v]] |= piece.onPlane[v];
+      piece.border[rep[v]] = std::max(piece.border[rep[v]], piece.border[v]);
     }
   seam.unmatchedTearVertices = seam.tearVertices - seam.stitchedVertices;
 
@@ -261,6 +262,7 @@ void Unfolder::StitchVertices(Piece& piece,
       out.tear.push_back(piece.tear[v]);
       out.onPlane.push_back(piece.onPlane[v]);
       out.budget.push_back(piece.budget[v]);
+      out.border.push_back(piece.border[v]);
       outCandidate.push_back(candidate[v]);
       auto it = childrenOfRoot.find(v);
       outChildren.push_back(
@@ -317,6 +319,7 @@ void Unfolder::StitchVertices(Piece& piece,
         compact.tear.push_back(out.tear[v]);
         compact.onPlane.push_back(out.onPlane[v]);
         compact.budget.push_back(out.budget[v]);
+        compact.border.push_back(out.border[v]);
         compactCandidate.push_back(outCandidate[v]);
         compactRough.push_back(rough[v]);
         compactMatched.push_back(outMatched[v]);

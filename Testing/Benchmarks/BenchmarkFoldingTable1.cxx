@@ -1,19 +1,22 @@
 // The paper's Table 1, side by side: per mesh, original faces, non-redundant (stored) faces,
 // compression, tree height, build time, unfold time, symmetric Hausdorff distance between
 // the input and unfold(fold(input)) as a fraction of the bounding-box diagonal (max, and the
-// mean over the vertices of both meshes), open edges before/after, and - for the Table 1
-// models, matched by file name - the paper's row. Default builder and unfolder options (root
-// epsilon 2% of the diagonal, keep the half with more faces, 5% area stop). Not a test:
-// numbers for humans and closing notes.
+// mean over the vertices of both meshes), open, non-manifold and misoriented edges before/after
+// (nm, mis), and - for the Table 1 models, matched by file name - the paper's row. Default builder
+// and unfolder options (root epsilon 2% of the diagonal, keep the half with more faces, 5% area
+// stop). Not a test: numbers for humans and closing notes.
 //
-//   BenchmarkFoldingTable1 [--threads N] [--keep fewer] [--tree] [--no-unfold] MESH_OR_FOLDER...
+//   BenchmarkFoldingTable1 [--threads N] [--keep fewer] [--tree] [--no-unfold]
+//                          [--no-close-holes] [--hole-tolerance F] MESH_OR_FOLDER...
 //
-// --tree prints each tree's outline (node kind, depth, faces, area share, symmetric area
-// fraction, why a leaf stopped); --no-unfold skips the unfolding columns.
+// --keep fewer: the builder keeps the half with fewer faces; --tree prints each tree's outline
+// (node kind, depth, faces, area share, symmetric area fraction, why a leaf stopped);
+// --no-unfold skips the unfolding columns; --no-close-holes: the unfolder without its final
+// repair; --hole-tolerance: its HoleToleranceScale.
 #include "MeshComparison.h"
 #include "MeshIO.h"
-#include "vtkFoldingTreeIO.h"
 #include "vtkFoldingTreeBuilder.h"
+#include "vtkFoldingTreeIO.h"
 #include "vtkFoldingTreeUnfolder.h"
 
 #include <vtkCellArray.h>
@@ -83,6 +86,8 @@ struct Settings
   bool keepFewer = false;
   bool printTree = false;
   bool unfold = true;
+  bool closeHoles = true;
+  double holeToleranceScale = -1.0; // < 0: the filter's default
 };
 
 void PrintOutline(vtkMultiBlockDataSet* blocks)
@@ -96,17 +101,23 @@ void PrintOutline(vtkMultiBlockDataSet* blocks)
   }
   for (const foldingmeshes::FoldingNode& node : tree.nodes)
   {
-    std::printf("  %*s%-12s faces %6d area %5.1f%%", 2 * node.depth, "",
-      foldingmeshes::ToString(node.kind), node.numberOfFaces,
+    std::printf("  %*s%-12s faces %6d area %5.1f%%",
+      2 * node.depth,
+      "",
+      foldingmeshes::ToString(node.kind),
+      node.numberOfFaces,
       100.0 * node.area / tree.originalArea);
     if (node.detectionRun)
       std::printf(" S %5.1f%%", 100.0 * node.symmetricAreaFraction);
     if (node.kind == foldingmeshes::FoldingNodeKind::Folding)
-      std::printf(" n (%6.3f %6.3f %6.3f) discarded %d", node.plane.normal.x(),
-        node.plane.normal.y(), node.plane.normal.z(), node.discardedFaces);
+      std::printf(" n (%6.3f %6.3f %6.3f) discarded %d",
+        node.plane.normal.x(),
+        node.plane.normal.y(),
+        node.plane.normal.z(),
+        node.discardedFaces);
     if (node.kind == foldingmeshes::FoldingNodeKind::Leaf)
-      std::printf(" stored %d (%s)", node.mesh.NumberOfFaces(),
-        foldingmeshes::ToString(node.leafReason));
+      std::printf(
+        " stored %d (%s)", node.mesh.NumberOfFaces(), foldingmeshes::ToString(node.leafReason));
     std::printf("\n");
   }
 }
@@ -130,11 +141,13 @@ void Run(const std::string& path, vtkPolyData* mesh, const Settings& settings)
   }
   if (!settings.unfold)
   {
-    std::printf("%-26s %7d %7d %6.1f%% %3d %7.3f\n", stem.c_str(),
+    std::printf("%-26s %7d %7d %6.1f%% %3d %7.3f\n",
+      stem.c_str(),
       static_cast<int>(TreeValue(tree, "OriginalFaces")),
       static_cast<int>(TreeValue(tree, "StoredFaces")),
       100.0 * TreeValue(tree, "Compression"),
-      static_cast<int>(TreeValue(tree, "TreeHeight")), build);
+      static_cast<int>(TreeValue(tree, "TreeHeight")),
+      build);
     if (settings.printTree)
       PrintOutline(tree);
     std::fflush(stdout);
@@ -142,6 +155,9 @@ void Run(const std::string& path, vtkPolyData* mesh, const Settings& settings)
   }
   vtkNew<vtkFoldingTreeUnfolder> unfolder;
   unfolder->SetInputData(tree);
+  unfolder->SetCloseHoles(settings.closeHoles);
+  if (settings.holeToleranceScale >= 0.0)
+    unfolder->SetHoleToleranceScale(settings.holeToleranceScale);
   const auto t1 = Clock::now();
   unfolder->Update();
   const double unfold = std::chrono::duration<double>(Clock::now() - t1).count();
@@ -163,7 +179,10 @@ void Run(const std::string& path, vtkPolyData* mesh, const Settings& settings)
   mean /= diagonal;
   const double epsilon = TreeValue(tree, "RootEpsilon") / diagonal;
 
-  std::printf("%-26s %7d %7d %6.1f%% %3d %7.3f %7.3f %7.4f%s %8.5f %6lld %6lld",
+  const foldingmeshes::EdgeCounts before = foldingmeshes::CountEdges(input);
+  const foldingmeshes::EdgeCounts after = foldingmeshes::CountEdges(unfolded);
+  std::printf(
+    "%-26s %7d %7d %6.1f%% %3d %7.3f %7.3f %7.4f%s %8.5f %6lld %6lld %4lld %4lld %4lld %4lld",
     stem.c_str(),
     static_cast<int>(TreeValue(tree, "OriginalFaces")),
     static_cast<int>(TreeValue(tree, "StoredFaces")),
@@ -174,8 +193,12 @@ void Run(const std::string& path, vtkPolyData* mesh, const Settings& settings)
     hausdorff,
     hausdorff <= epsilon ? " " : "!",
     mean,
-    foldingmeshes::CountOpenEdges(input),
-    foldingmeshes::CountOpenEdges(unfolded));
+    before.open,
+    after.open,
+    before.nonManifold,
+    after.nonManifold,
+    before.misoriented,
+    after.misoriented);
   if (const PaperRow* row = FindPaperRow(stem))
     std::printf("  | %-11s %6d %6d %5.1f%% %3d %5.0f",
       row->model,
@@ -198,7 +221,11 @@ int main(int argc, char* argv[])
   for (int i = 1; i < argc; ++i)
   {
     const std::string arg = argv[i];
-    if (arg == "--threads" && i + 1 < argc)
+    if (arg == "--no-close-holes")
+      settings.closeHoles = false;
+    else if (arg == "--hole-tolerance" && i + 1 < argc)
+      settings.holeToleranceScale = std::atof(argv[++i]);
+    else if (arg == "--threads" && i + 1 < argc)
     {
       vtkSMPTools::SetBackend("STDThread");
       vtkSMPTools::Initialize(std::atoi(argv[++i]));
@@ -228,7 +255,8 @@ int main(int argc, char* argv[])
               "Hausdorff distance: above it)\n",
     vtkSMPTools::GetBackend(),
     vtkSMPTools::GetEstimatedNumberOfThreads());
-  std::printf("%-26s %7s %7s %7s %3s %7s %7s %8s %8s %6s %6s  | %-11s %6s %6s %6s %3s %5s\n",
+  std::printf(
+    "%-26s %7s %7s %7s %3s %7s %7s %8s %8s %6s %6s %4s %4s %4s %4s  | %-11s %6s %6s %6s %3s %5s\n",
     "mesh",
     "faces",
     "stored",
@@ -240,6 +268,10 @@ int main(int argc, char* argv[])
     "mean/dg",
     "open<",
     "open>",
+    "nm<",
+    "nm>",
+    "mis<",
+    "mis>",
     "paper",
     "faces",
     "stored",

@@ -1,0 +1,494 @@
+// The hole filling of the final repair (UnfoldOptions::closeHoles): boundary loops, their
+// classification (the input's own border or a gap), minimal-area triangulation, the error
+// bound check.
+#include "FoldingTreeUnfolderRepairInternal.h"
+
+#include <Eigen/Dense>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <limits>
+#include <map>
+#include <set>
+
+namespace foldingmeshes
+{
+namespace unfolder_detail
+{
+using namespace repair;
+
+/**
+ * Boundary loops of the mesh, traced along hole half-edges (the reverses of the open face
+ * half-edges) and split at pinch vertices into simple loops.
+ */
+std::vector<std::vector<int>> Unfolder::BoundaryLoops(const Piece& piece)
+{
+  std::map<int, std::vector<int>> holeNext;          // hole half-edge a -> b, by a
+  std::unordered_map<Edge, int, EdgeHash> halfEdges; // directed face half-edge -> face
+  EdgeSet open;
+  halfEdges.reserve(3 * piece.triangles.size());
+  for (int f = 0; f < piece.NumberOfFaces(); ++f)
+    for (int k = 0; k < 3; ++k)
+      halfEdges[{ piece.triangles[f][k], piece.triangles[f][(k + 1) % 3] }] = f;
+  // Arrived at b by the hole edge a -> b (face half-edge b -> a): the next hole edge found by
+  // turning around b through its faces, so that at a pinch vertex (several openings) each
+  // opening is traced as its own loop; -1 if the fan is not consistently oriented.
+  auto turn = [&](int a, int b) -> int
+  {
+    auto it = halfEdges.find({ b, a });
+    for (int guard = 0; it != halfEdges.end() && guard < 256; ++guard)
+    {
+      const Triangle& t = piece.triangles[it->second];
+      int k = 0;
+      while (k < 3 && t[(k + 1) % 3] != b)
+        ++k;
+      if (k == 3)
+        return -1;
+      const int y = t[k]; // half-edge y -> b in this face
+      if (open.count(Key(y, b)))
+        return y;
+      it = halfEdges.find({ b, y });
+    }
+    return -1;
+  };
+  for (const auto& e : EdgeFaces(piece))
+    if (e.second.size() == 1)
+    {
+      open.insert(e.first);
+      const Triangle& t = piece.triangles[e.second[0]];
+      const int a = e.first.first, b = e.first.second;
+      if (Direction(t, a, b) == 1)
+        holeNext[b].push_back(a); // face a -> b: hole b -> a
+      else
+        holeNext[a].push_back(b);
+    }
+  std::vector<std::vector<int>> loops;
+  std::set<Edge> visited;
+  for (const auto& start : holeNext)
+    for (int firstNext : start.second)
+    {
+      if (visited.count({ start.first, firstNext }))
+        continue;
+      // Walk unused hole half-edges until none leaves the current vertex.
+      std::vector<int> walk;
+      int a = start.first, b = firstNext;
+      bool closed = false;
+      while (true)
+      {
+        visited.insert({ a, b });
+        walk.push_back(a);
+        auto it = holeNext.find(b);
+        if (it == holeNext.end())
+          break; // a dead end: inconsistent orientation around b
+        int next = turn(a, b);
+        if (next >= 0 && visited.count({ b, next }))
+          next = -1;
+        for (size_t i = 0; i < it->second.size() && next < 0; ++i)
+          if (!visited.count({ b, it->second[i] }))
+            next = it->second[i];
+        if (next < 0)
+        {
+          closed = b == start.first; // back where the walk began
+          break;
+        }
+        a = b;
+        b = next;
+      }
+      // Split at repeated vertices into simple loops.
+      std::vector<int> stack;
+      std::map<int, size_t> at;
+      for (int v : walk)
+      {
+        auto it = at.find(v);
+        if (it != at.end())
+        {
+          std::vector<int> loop(stack.begin() + it->second, stack.end());
+          for (size_t i = it->second; i < stack.size(); ++i)
+            at.erase(stack[i]);
+          stack.resize(it->second);
+          if (loop.size() >= 3)
+            loops.push_back(loop);
+        }
+        at[v] = stack.size();
+        stack.push_back(v);
+      }
+      if (closed && stack.size() >= 3)
+        loops.push_back(stack);
+    }
+  return loops;
+}
+
+/**
+ * Minimal-area triangulation of a loop (dynamic programming over its vertex sequence; new
+ * diagonals never repeat an existing edge), ear clipping for long loops. Triangles follow
+ * the loop's direction, i.e. they are oriented like the faces around the hole. Returns
+ * false when no triangulation exists.
+ */
+bool Unfolder::TriangulateLoop(const Piece& piece,
+  const std::vector<int>& loop,
+  const EdgeSet& existing,
+  std::vector<Triangle>& triangles)
+{
+  const int n = static_cast<int>(loop.size());
+  triangles.clear();
+  auto allowed = [&](int i, int j)
+  {
+    if ((j - i + n) % n == 1 || (i - j + n) % n == 1)
+      return true; // a loop edge
+    return !existing.count(Key(loop[i], loop[j]));
+  };
+  auto area = [&](int i, int j, int k) { return Area(piece, { loop[i], loop[j], loop[k] }); };
+  constexpr int maximumDynamic = 160;
+  if (n <= maximumDynamic)
+  {
+    const double inf = std::numeric_limits<double>::infinity();
+    std::vector<double> cost(n * n, inf);
+    std::vector<int> split(n * n, -1);
+    for (int i = 0; i + 1 < n; ++i)
+      cost[i * n + i + 1] = 0.0;
+    for (int len = 2; len < n; ++len)
+      for (int i = 0; i + len < n; ++i)
+      {
+        const int j = i + len;
+        if (!allowed(i, j))
+          continue;
+        for (int k = i + 1; k < j; ++k)
+        {
+          const double c = cost[i * n + k] + cost[k * n + j];
+          if (c == inf)
+            continue;
+          const double total = c + area(i, k, j);
+          if (total < cost[i * n + j])
+          {
+            cost[i * n + j] = total;
+            split[i * n + j] = k;
+          }
+        }
+      }
+    if (cost[n - 1] == inf)
+      return false;
+    std::vector<std::pair<int, int>> todo{ { 0, n - 1 } };
+    while (!todo.empty())
+    {
+      const auto [i, j] = todo.back();
+      todo.pop_back();
+      if (j - i < 2)
+        continue;
+      const int k = split[i * n + j];
+      triangles.push_back({ loop[i], loop[k], loop[j] });
+      todo.push_back({ i, k });
+      todo.push_back({ k, j });
+    }
+    return true;
+  }
+  // Ear clipping: the ear with the shortest new diagonal.
+  std::vector<int> poly(loop.begin(), loop.end());
+  EdgeSet added; // the new diagonals
+  auto used = [&](const Edge& e) { return existing.count(e) || added.count(e); };
+  while (poly.size() > 3)
+  {
+    const int m = static_cast<int>(poly.size());
+    int best = -1;
+    double bestLength = std::numeric_limits<double>::infinity();
+    for (int i = 0; i < m; ++i)
+    {
+      const int a = poly[i], c = poly[(i + 2) % m];
+      if (used(Key(a, c)))
+        continue;
+      const double length = (piece.points[a] - piece.points[c]).norm();
+      if (length < bestLength)
+      {
+        bestLength = length;
+        best = i;
+      }
+    }
+    if (best < 0)
+      return false;
+    const int a = poly[best], b = poly[(best + 1) % m], c = poly[(best + 2) % m];
+    triangles.push_back({ a, b, c });
+    added.insert(Key(a, c));
+    poly.erase(poly.begin() + (best + 1) % m);
+  }
+  triangles.push_back({ poly[0], poly[1], poly[2] });
+  return true;
+}
+
+/// Both end points are copies of input border points and, when the tree lists the input's
+/// border edges (FoldingTree::inputBorderEdges), their input ids form one.
+bool Unfolder::IsInputBorderEdge(const Piece& piece, int a, int b) const
+{
+  if (piece.border[a] != 1 || piece.border[b] != 1)
+    return false;
+  const auto& edges = this->Tree.inputBorderEdges;
+  if (edges.empty())
+    return true;
+  const int x = piece.pointOrig[a], y = piece.pointOrig[b];
+  return std::binary_search(
+    edges.begin(), edges.end(), std::make_pair(std::min(x, y), std::max(x, y)));
+}
+
+/// Appends a point at x with the data of point `like` (copy, ids); no budget left, no flags.
+void Unfolder::AddPoint(Piece& piece, const Vec3& x, int like)
+{
+  piece.points.push_back(x);
+  piece.pointOrig.push_back(piece.pointOrig[like]);
+  piece.pointCopy.push_back(piece.pointCopy[like]);
+  piece.tear.push_back({});
+  piece.onPlane.push_back(0);
+  piece.budget.push_back(0.0);
+  piece.border.push_back(0);
+}
+
+void Unfolder::RemoveLastPoint(Piece& piece)
+{
+  piece.points.pop_back();
+  piece.pointOrig.pop_back();
+  piece.pointCopy.pop_back();
+  piece.tear.pop_back();
+  piece.onPlane.pop_back();
+  piece.budget.pop_back();
+  piece.border.pop_back();
+}
+
+/**
+ * Whether the fill of `loop` stays within the error bound: either every new face is close
+ * to the loop itself (a narrow crack: its centroid and edge midpoints lie within the
+ * tolerance of the loop's edges, which are parts of the surface), or the loop is small and
+ * flat: its vertices within half the tolerance of their best-fit plane, no two farther apart
+ * than four times the tolerance or 2.5 mean loop edges (a missing face or two, on a coarse
+ * mesh, re-tessellated like its neighbours; flat, so not across a crease).
+ */
+bool Unfolder::FillWithinTolerance(const Piece& piece,
+  const std::vector<int>& loop,
+  const std::vector<Triangle>& fill) const
+{
+  const double tolerance = this->Options.holeToleranceScale * this->Tree.rootEpsilon;
+  const int n = static_cast<int>(loop.size());
+  bool narrow = true;
+  for (size_t f = 0; f < fill.size() && narrow; ++f)
+  {
+    const Triangle& t = fill[f];
+    const Vec3 c = (piece.points[t[0]] + piece.points[t[1]] + piece.points[t[2]]) / 3.0;
+    const Vec3 probes[4] = { c,
+      0.5 * (piece.points[t[0]] + piece.points[t[1]]),
+      0.5 * (piece.points[t[1]] + piece.points[t[2]]),
+      0.5 * (piece.points[t[2]] + piece.points[t[0]]) };
+    for (const Vec3& x : probes)
+    {
+      double d = std::numeric_limits<double>::infinity();
+      for (int i = 0; i < n && d > tolerance; ++i)
+        d = std::min(d, SegmentDistance(x, piece.points[loop[i]], piece.points[loop[(i + 1) % n]]));
+      narrow = narrow && d <= tolerance;
+    }
+  }
+  if (narrow)
+    return true;
+  Vec3 mean = Vec3::Zero();
+  for (int v : loop)
+    mean += piece.points[v];
+  mean /= n;
+  Eigen::Matrix3d cov = Eigen::Matrix3d::Zero();
+  double diameter = 0.0;
+  for (int i = 0; i < n; ++i)
+  {
+    const Vec3 d = piece.points[loop[i]] - mean;
+    cov += d * d.transpose();
+    for (int j = i + 1; j < n; ++j)
+      diameter = std::max(diameter, (piece.points[loop[i]] - piece.points[loop[j]]).norm());
+  }
+  double perimeter = 0.0;
+  for (int i = 0; i < n; ++i)
+    perimeter += (piece.points[loop[i]] - piece.points[loop[(i + 1) % n]]).norm();
+  if (diameter > std::max(4.0 * tolerance, 2.5 * perimeter / n))
+    return false;
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(cov);
+  const Vec3 normal = eig.eigenvectors().col(0);
+  for (int v : loop)
+    if (std::abs((piece.points[v] - mean).dot(normal)) > 0.5 * tolerance)
+      return false;
+  return true;
+}
+
+/**
+ * One pass over the boundary loops: the input's border (an edge whose two end points are
+ * copies of input border points) and loops with unknown border flags are left alone; the
+ * others are triangulated and filled when the fill stays within the tolerance. With
+ * `apply` false nothing is added and the loops are only classified into the report.
+ * Returns the number of loops filled (or fillable).
+ */
+int Unfolder::FillLoops(Piece& piece, RepairReport& report, bool apply)
+{
+  const auto loops = BoundaryLoops(piece);
+  EdgeSet existing;
+  std::unordered_map<Edge, int, EdgeHash> faceOfHalfEdge; // directed face half-edge -> face
+  existing.reserve(3 * piece.triangles.size());
+  faceOfHalfEdge.reserve(3 * piece.triangles.size());
+  for (int f = 0; f < piece.NumberOfFaces(); ++f)
+  {
+    const Triangle& t = piece.triangles[f];
+    for (int k = 0; k < 3; ++k)
+    {
+      existing.insert(Key(t[k], t[(k + 1) % 3]));
+      faceOfHalfEdge[{ t[k], t[(k + 1) % 3] }] = f;
+    }
+  }
+  int filled = 0;
+  for (const std::vector<int>& loop : loops)
+  {
+    const int n = static_cast<int>(loop.size());
+    double length = 0.0;
+    bool border = false, unknown = false;
+    for (int i = 0; i < n; ++i)
+    {
+      const int a = loop[i], b = loop[(i + 1) % n];
+      length += (piece.points[a] - piece.points[b]).norm();
+      border = border || this->IsInputBorderEdge(piece, a, b);
+      unknown = unknown || piece.border[a] == 2 || piece.border[b] == 2;
+    }
+    if (border && !unknown && apply && n <= this->Options.maximumHoleEdges)
+    {
+      // A gap that opens into the input's border: close each run of non-border edges
+      // between two border vertices p, q by the chord q -> p (a new border edge), when the
+      // chord is short (within twice the tolerance) and the fill within the tolerance.
+      const double tolerance = this->Options.holeToleranceScale * this->Tree.rootEpsilon;
+      auto isBorderEdge = [&](int i)
+      { return this->IsInputBorderEdge(piece, loop[i], loop[(i + 1) % n]); };
+      int first = 0;
+      while (first < n && !isBorderEdge(first))
+        ++first;
+      for (int k = 0; k < n;)
+      {
+        const int i = (first + k) % n;
+        if (isBorderEdge(i))
+        {
+          ++k;
+          continue;
+        }
+        // Run of non-border edges from loop[i] (a border vertex) to the next border vertex.
+        std::vector<int> run{ loop[i] };
+        int m = 0;
+        while (k + m < n && !isBorderEdge((first + k + m) % n))
+        {
+          run.push_back(loop[(first + k + m + 1) % n]);
+          ++m;
+        }
+        k += m;
+        const int p = run.front(), q = run.back();
+        std::vector<Triangle> fill;
+        if (run.size() < 3 || p == q || piece.border[p] != 1 || piece.border[q] != 1 ||
+          existing.count(Key(p, q)) ||
+          (piece.points[p] - piece.points[q]).norm() > 2.0 * tolerance ||
+          !TriangulateLoop(piece, run, existing, fill) ||
+          !this->FillWithinTolerance(piece, run, fill))
+          continue;
+        auto from = faceOfHalfEdge.find({ run[1], run[0] });
+        const int source = from != faceOfHalfEdge.end() ? from->second : 0;
+        for (const Triangle& t : fill)
+        {
+          piece.triangles.push_back(t);
+          piece.faceOrig.push_back(piece.faceOrig[source]);
+          piece.faceCopy.push_back(piece.faceCopy[source]);
+          piece.faceFilled.push_back(1);
+          for (int e = 0; e < 3; ++e)
+            existing.insert(Key(t[e], t[(e + 1) % 3]));
+        }
+        report.filledFaces += static_cast<int>(fill.size());
+        ++report.filledLoops;
+        ++filled;
+      }
+      continue;
+    }
+    if (border || unknown)
+    {
+      if (!apply && std::getenv("FOLDINGMESHES_REPAIR_DEBUG"))
+      {
+        int be = 0, bv = 0;
+        for (int i = 0; i < n; ++i)
+        {
+          be += this->IsInputBorderEdge(piece, loop[i], loop[(i + 1) % n]);
+          bv += piece.border[loop[i]] == 1;
+        }
+        std::fprintf(stderr,
+          "  border loop: %d edges (%d border edges, %d border vertices), length %.4g\n",
+          n,
+          be,
+          bv,
+          length);
+      }
+      if (!apply)
+      {
+        int& count = border ? report.borderLoops : report.unknownLoops;
+        ++count;
+        (border ? report.borderEdges : report.unknownEdges) += n;
+        (border ? report.borderLength : report.unknownLength) += length;
+      }
+      continue;
+    }
+    std::vector<Triangle> fill;
+    const bool shortEnough = n <= this->Options.maximumHoleEdges;
+    bool triangulated = shortEnough && TriangulateLoop(piece, loop, existing, fill);
+    // No triangulation of the loop's own vertices (every diagonal would repeat an edge of
+    // the mesh, e.g. a pocket between stitched copies): a fan around a new vertex at the
+    // loop's centroid, with the point data of the nearest loop vertex.
+    bool fan = false;
+    if (shortEnough && !triangulated)
+    {
+      Vec3 c = Vec3::Zero();
+      for (int v : loop)
+        c += piece.points[v];
+      c /= n;
+      int nearest = loop[0];
+      for (int v : loop)
+        if ((piece.points[v] - c).norm() < (piece.points[nearest] - c).norm())
+          nearest = v;
+      AddPoint(piece, c, nearest);
+      const int centre = piece.NumberOfPoints() - 1;
+      for (int i = 0; i < n; ++i)
+        fill.push_back({ loop[i], loop[(i + 1) % n], centre });
+      triangulated = fan = true;
+    }
+    bool ok = triangulated && this->FillWithinTolerance(piece, loop, fill);
+    if (fan && (!ok || !apply))
+      RemoveLastPoint(piece);
+    if (!ok || !apply)
+    {
+      if (!apply && std::getenv("FOLDINGMESHES_REPAIR_DEBUG"))
+        std::fprintf(stderr,
+          "  open loop: %d edges, length %.4g, %s\n",
+          n,
+          length,
+          !shortEnough ? "too long"
+            : fan      ? "fan beyond tolerance"
+                       : "beyond tolerance");
+      if (!apply)
+      {
+        ++report.openLoops;
+        report.openEdges += n;
+        report.openLength += length;
+      }
+      filled += ok;
+      continue;
+    }
+    // Attributes of the face across the loop's first edge (hole a -> b: face b -> a).
+    auto from = faceOfHalfEdge.find({ loop[1], loop[0] });
+    const int source = from != faceOfHalfEdge.end() ? from->second : 0;
+    for (const Triangle& t : fill)
+    {
+      piece.triangles.push_back(t);
+      piece.faceOrig.push_back(piece.faceOrig[source]);
+      piece.faceCopy.push_back(piece.faceCopy[source]);
+      piece.faceFilled.push_back(1);
+      for (int k = 0; k < 3; ++k)
+        existing.insert(Key(t[k], t[(k + 1) % 3]));
+    }
+    report.filledFaces += static_cast<int>(fill.size());
+    report.addedPoints += fan;
+    ++report.filledLoops;
+    ++filled;
+  }
+  return filled;
+}
+} // namespace unfolder_detail
+} // namespace foldingmeshes

@@ -1,0 +1,285 @@
+// The unfolder's final repair (UnfoldOptions::closeHoles) on small hand-made trees (one
+// leaf: a sphere of about 2000 faces):
+// - a hole (the faces around one vertex removed) whose vertices are not on the input's border
+//   is filled: no open, non-manifold or misoriented edge is left, the volume keeps its sign,
+//   every new face (FoldingFilled) lies within the root epsilon of the sphere; with
+//   closeHoles off the hole stays open;
+// - a hole on the input's border (inputBoundary set on its vertices) is kept and reported as
+//   border; with the border edges listed (inputBorderEdges) only listed edges count; without
+//   border information (older files) nothing is filled (unknown loops);
+// - a hole whose fill would leave the tolerance (tiny root epsilon) is left open and
+//   reported (loops, edges, length);
+// - faces flipped by hand are turned back (misoriented 0, the component keeps the
+//   orientation of its larger part); an extra face on an edge (non-manifold) is dropped.
+#include "CoreTestUtilities.h"
+#include "FoldingTreeUnfolder.h"
+#include "ProceduralMeshes.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <map>
+#include <set>
+
+using namespace foldingmeshes;
+namespace pm = foldingmeshes::testing;
+
+namespace
+{
+struct EdgeStats
+{
+  int open = 0, nonManifold = 0, misoriented = 0;
+};
+
+EdgeStats Count(const std::vector<Triangle>& triangles)
+{
+  std::map<std::pair<int, int>, std::pair<int, int>> edges;
+  for (const Triangle& t : triangles)
+    for (int k = 0; k < 3; ++k)
+    {
+      const int a = t[k], b = t[(k + 1) % 3];
+      auto& e = edges[{ std::min(a, b), std::max(a, b) }];
+      (a < b ? e.first : e.second)++;
+    }
+  EdgeStats s;
+  for (const auto& e : edges)
+  {
+    const int uses = e.second.first + e.second.second;
+    s.open += uses == 1;
+    s.nonManifold += uses > 2;
+    s.misoriented += uses == 2 && e.second.first != 1;
+  }
+  return s;
+}
+
+double SignedVolume(const std::vector<Vec3>& p, const std::vector<Triangle>& t)
+{
+  double v = 0.0;
+  for (const Triangle& f : t)
+    v += p[f[0]].dot(p[f[1]].cross(p[f[2]])) / 6.0;
+  return v;
+}
+
+/// A tree made of one leaf holding `m` (no flags, no budgets).
+FoldingTree LeafTree(const TriangleMesh& m, double rootEpsilon)
+{
+  FoldingTree t;
+  FoldingNode leaf;
+  leaf.kind = FoldingNodeKind::Leaf;
+  leaf.leafReason = LeafReason::MinimumFaces;
+  leaf.epsilon = rootEpsilon;
+  leaf.numberOfFaces = static_cast<int>(m.triangles.size());
+  FoldingLeafMesh& l = leaf.mesh;
+  l.points = m.points;
+  l.triangles = m.triangles;
+  const int np = static_cast<int>(m.points.size());
+  for (int v = 0; v < np; ++v)
+    l.originalPointIds.push_back(v);
+  for (int f = 0; f < static_cast<int>(m.triangles.size()); ++f)
+    l.originalFaceIds.push_back(f);
+  l.tearMask.assign(np, 0);
+  l.planeMask.assign(np, 0);
+  l.projected.assign(np, 0);
+  l.inputBoundary.assign(np, 0);
+  t.nodes.push_back(leaf);
+  t.numberOfOriginalFaces = leaf.numberOfFaces;
+  t.numberOfOriginalPoints = np;
+  t.diagonal = 2.0 * std::sqrt(3.0); // unit sphere
+  t.rootEpsilon = rootEpsilon;
+  return t;
+}
+
+UnfoldedMesh Unfold(const FoldingTree& tree, UnfoldOptions o = {})
+{
+  UnfoldedMesh u;
+  std::string error;
+  const bool ok = UnfoldFoldingTree(tree, o, u, error);
+  REQUIRE(ok, "UnfoldFoldingTree failed: " << error);
+  return u;
+}
+
+/// The sphere without the faces around vertex `center`; `loop` gets the hole's vertices.
+TriangleMesh Holed(const TriangleMesh& sphere, int center, std::set<int>& loop)
+{
+  TriangleMesh m;
+  m.points = sphere.points;
+  for (const Triangle& t : sphere.triangles)
+  {
+    if (std::find(t.begin(), t.end(), center) == t.end())
+    {
+      m.triangles.push_back(t);
+      continue;
+    }
+    for (int v : t)
+      if (v != center)
+        loop.insert(v);
+  }
+  return m;
+}
+
+void TestHoles(const TriangleMesh& sphere)
+{
+  const double volume = SignedVolume(sphere.points, sphere.triangles);
+  std::set<int> loop;
+  const TriangleMesh holed = Holed(sphere, 0, loop);
+  REQUIRE(loop.size() >= 3, "no hole made");
+  const int n = static_cast<int>(loop.size());
+
+  // Filled (root epsilon 0.2: the fill lies within 0.1 of the loop).
+  const FoldingTree tree = LeafTree(holed, 0.2);
+  const UnfoldedMesh u = Unfold(tree);
+  const EdgeStats s = Count(u.triangles);
+  std::printf("hole of %d edges: filled %d loops, %d faces; open %d non-manifold %d "
+              "misoriented %d\n",
+    n,
+    u.repair.filledLoops,
+    u.repair.filledFaces,
+    s.open,
+    s.nonManifold,
+    s.misoriented);
+  EXPECT(u.repair.filledLoops == 1 && u.repair.filledFaces == n - 2,
+    "hole: " << u.repair.filledLoops << " loops, " << u.repair.filledFaces << " faces filled");
+  EXPECT(s.open == 0 && s.nonManifold == 0 && s.misoriented == 0,
+    "hole: not closed and consistently oriented");
+  EXPECT(u.openEdges == s.open && u.nonManifoldEdges == s.nonManifold &&
+      u.misorientedEdges == s.misoriented,
+    "hole: the report differs from the mesh");
+  EXPECT(u.repair.openLoops == 0 && u.repair.borderLoops == 0, "hole: loops left open");
+  EXPECT(SignedVolume(u.points, u.triangles) * volume > 0.0, "hole: orientation reversed");
+  int filled = 0;
+  for (int f = 0; f < u.NumberOfFaces(); ++f)
+    if (u.faceFilled[f])
+    {
+      ++filled;
+      const Triangle& t = u.triangles[f];
+      const Vec3 c = (u.points[t[0]] + u.points[t[1]] + u.points[t[2]]) / 3.0;
+      EXPECT(std::abs(c.norm() - 1.0) <= tree.rootEpsilon,
+        "hole: a new face lies " << std::abs(c.norm() - 1.0) << " from the sphere");
+    }
+  EXPECT(filled == n - 2 && u.filledFaces == filled, "hole: FoldingFilled marks " << filled);
+
+  UnfoldOptions off;
+  off.closeHoles = false;
+  EXPECT(Count(Unfold(tree, off).triangles).open == n, "closeHoles off: the hole is not open");
+
+  // The input's own border: kept.
+  FoldingTree bordered = tree;
+  for (int v : loop)
+    bordered.nodes[0].mesh.inputBoundary[v] = 1;
+  const UnfoldedMesh b = Unfold(bordered);
+  EXPECT(Count(b.triangles).open == n && b.repair.filledLoops == 0,
+    "input border: filled (" << Count(b.triangles).open << " open edges)");
+  EXPECT(b.repair.borderLoops == 1 && b.repair.borderEdges == n && b.repair.borderLength > 0.0,
+    "input border: reported as " << b.repair.borderLoops << " loops, " << b.repair.borderEdges
+                                 << " edges");
+
+  // With the input's border edges listed (FoldingTree::inputBorderEdges): the flags alone do
+  // not make a border - a hole whose edges are not listed is filled, one whose edges are is
+  // kept.
+  {
+    std::vector<std::pair<int, int>> holeEdges;
+    for (const Triangle& t : holed.triangles)
+      for (int k = 0; k < 3; ++k)
+      {
+        const int a = t[k], b = t[(k + 1) % 3];
+        if (loop.count(a) && loop.count(b))
+          holeEdges.push_back({ std::min(a, b), std::max(a, b) });
+      }
+    std::sort(holeEdges.begin(), holeEdges.end());
+    holeEdges.erase(std::unique(holeEdges.begin(), holeEdges.end()), holeEdges.end());
+    FoldingTree listed = bordered;
+    listed.inputBorderEdges = holeEdges; // (contains the loop's edges, and maybe chords)
+    const UnfoldedMesh kept = Unfold(listed);
+    EXPECT(kept.repair.borderLoops == 1 && kept.repair.filledLoops == 0,
+      "listed border edges: the border was filled");
+    FoldingTree other = bordered;
+    other.inputBorderEdges = { { 1000000, 1000001 } }; // another border elsewhere
+    const UnfoldedMesh filledAnyway = Unfold(other);
+    EXPECT(filledAnyway.repair.borderLoops == 0 && filledAnyway.repair.filledLoops == 1 &&
+        Count(filledAnyway.triangles).open == 0,
+      "border flags without a listed border edge: the hole was not filled");
+  }
+
+  // Unknown border (a tree file without InputBoundary): nothing filled.
+  FoldingTree unknown = tree;
+  unknown.nodes[0].mesh.inputBoundary.clear();
+  const UnfoldedMesh k = Unfold(unknown);
+  EXPECT(Count(k.triangles).open == n && k.repair.unknownLoops == 1 && k.repair.filledLoops == 0,
+    "unknown border: filled or not reported");
+
+  // Beyond the tolerance: left open and reported.
+  const FoldingTree tight = LeafTree(holed, 1e-4);
+  const UnfoldedMesh r = Unfold(tight);
+  EXPECT(Count(r.triangles).open == n && r.repair.openLoops == 1 && r.repair.openEdges == n &&
+      r.repair.openLength > 0.0 && r.repair.filledLoops == 0,
+    "tolerance: " << r.repair.filledLoops << " loops filled, " << r.repair.openLoops
+                  << " reported open");
+}
+
+void TestOrientationAndNonManifold(const TriangleMesh& sphere)
+{
+  const double volume = SignedVolume(sphere.points, sphere.triangles);
+  // Flip the faces of a small cap around vertex 0 (its 1-ring) and one lone face.
+  TriangleMesh flipped = sphere;
+  int count = 0;
+  for (Triangle& t : flipped.triangles)
+    if (std::find(t.begin(), t.end(), 0) != t.end())
+    {
+      std::swap(t[1], t[2]);
+      ++count;
+    }
+  for (Triangle& t : flipped.triangles) // and the first face far from vertex 0
+    if ((sphere.points[t[0]] - sphere.points[0]).norm() > 1.0)
+    {
+      std::swap(t[1], t[2]);
+      ++count;
+      break;
+    }
+  const FoldingTree tree = LeafTree(flipped, 0.04);
+  UnfoldOptions off;
+  off.closeHoles = false;
+  const EdgeStats before = Count(Unfold(tree, off).triangles);
+  const UnfoldedMesh u = Unfold(tree);
+  const EdgeStats after = Count(u.triangles);
+  std::printf("orientation: %d faces flipped by hand, %d misoriented edges; repair flipped %d, "
+              "misoriented %d\n",
+    count,
+    before.misoriented,
+    u.repair.flippedFaces,
+    after.misoriented);
+  EXPECT(before.misoriented > 0, "flipped faces: no misoriented edge to repair");
+  EXPECT(after.misoriented == 0 && after.open == 0 && after.nonManifold == 0 &&
+      u.NumberOfFaces() == static_cast<int>(sphere.triangles.size()),
+    "orientation: not repaired");
+  EXPECT(u.repair.flippedFaces == count, "orientation: " << u.repair.flippedFaces << " flipped");
+  EXPECT(SignedVolume(u.points, u.triangles) * volume > 0.0, "orientation: the majority lost");
+
+  // A fin: an extra face on an edge of the sphere (to a far vertex).
+  TriangleMesh fin = sphere;
+  const Triangle& t0 = sphere.triangles[0];
+  int far = 0;
+  for (int v = 0; v < static_cast<int>(sphere.points.size()); ++v)
+    if ((sphere.points[v] - sphere.points[t0[0]]).norm() >
+      (sphere.points[far] - sphere.points[t0[0]]).norm())
+      far = v;
+  fin.triangles.push_back({ t0[0], t0[1], far });
+  const FoldingTree finTree = LeafTree(fin, 0.04);
+  EXPECT(Count(Unfold(finTree, off).triangles).nonManifold == 1, "fin: not non-manifold");
+  const UnfoldedMesh g = Unfold(finTree);
+  const EdgeStats gs = Count(g.triangles);
+  EXPECT(gs.nonManifold == 0 && gs.misoriented == 0 && gs.open == 0 &&
+      g.NumberOfFaces() == static_cast<int>(sphere.triangles.size()) && g.repair.droppedFaces == 1,
+    "fin: " << gs.nonManifold << " non-manifold, " << gs.open << " open edges, "
+            << g.repair.droppedFaces << " faces dropped");
+}
+}
+
+int main()
+{
+  const TriangleMesh sphere = coretest::ToTriangleMesh(pm::MakeSphere(2000).mesh);
+  REQUIRE(Count(sphere.triangles).open == 0 && Count(sphere.triangles).misoriented == 0,
+    "the sphere is not closed and oriented");
+  TestHoles(sphere);
+  TestOrientationAndNonManifold(sphere);
+  return coretest::Finish("TestUnfolderRepair");
+}
