@@ -24,6 +24,7 @@
 //   TestUnfoldingAccuracy [MESH...]
 #include "MeshIO.h"
 #include "ProceduralMeshes.h"
+#include "TestExpect.h"
 #include "vtkFoldingTreeBuilder.h"
 #include "vtkFoldingTreeUnfolder.h"
 
@@ -52,17 +53,7 @@
 namespace
 {
 int Failures = 0;
-#define EXPECT(cond, msg)                                                                          \
-  do                                                                                               \
-  {                                                                                                \
-    if (!(cond))                                                                                   \
-    {                                                                                              \
-      std::ostringstream os_;                                                                      \
-      os_ << msg;                                                                                  \
-      std::printf("FAIL (%s:%d): %s\n", __FILE__, __LINE__, os_.str().c_str());                    \
-      ++Failures;                                                                                  \
-    }                                                                                              \
-  } while (0)
+#define EXPECT(cond, msg) FOLDINGMESHES_EXPECT(Failures, cond, msg)
 
 double Field(vtkPolyData* pd, const char* name)
 {
