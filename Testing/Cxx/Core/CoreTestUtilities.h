@@ -12,11 +12,15 @@
 #include <vtkNew.h>
 #include <vtkPolyData.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
+#include <map>
 #include <sstream>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace coretest
 {
@@ -78,6 +82,45 @@ inline foldingmeshes::PreparedMesh Prepare(const foldingmeshes::TriangleMesh& so
 inline double Seconds(std::chrono::steady_clock::time_point since)
 {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - since).count();
+}
+
+/// Edges used by one triangle, by more than two, and by two running the same direction.
+struct EdgeStats
+{
+  int open = 0;
+  int nonManifold = 0;
+  int misoriented = 0;
+};
+
+inline EdgeStats CountEdges(const std::vector<foldingmeshes::Triangle>& triangles)
+{
+  std::map<std::pair<int, int>, std::pair<int, int>> edges; // (min,max) -> (forward, backward)
+  for (const foldingmeshes::Triangle& t : triangles)
+    for (int k = 0; k < 3; ++k)
+    {
+      const int a = t[k], b = t[(k + 1) % 3];
+      auto& e = edges[{ std::min(a, b), std::max(a, b) }];
+      (a < b ? e.first : e.second)++;
+    }
+  EdgeStats s;
+  for (const auto& e : edges)
+  {
+    const int uses = e.second.first + e.second.second;
+    s.open += uses == 1;
+    s.nonManifold += uses > 2;
+    s.misoriented += uses == 2 && e.second.first != 1;
+  }
+  return s;
+}
+
+/// Signed volume enclosed by a closed triangle mesh (positive: oriented outward).
+inline double SignedVolume(const std::vector<foldingmeshes::Vec3>& p,
+  const std::vector<foldingmeshes::Triangle>& t)
+{
+  double v = 0.0;
+  for (const foldingmeshes::Triangle& f : t)
+    v += p[f[0]].dot(p[f[1]].cross(p[f[2]])) / 6.0;
+  return v;
 }
 }
 

@@ -47,41 +47,6 @@ namespace pm = foldingmeshes::testing;
 
 namespace
 {
-struct EdgeStats
-{
-  int boundary = 0;
-  int nonManifold = 0;
-  int misoriented = 0; ///< edges used twice in the same direction
-};
-
-EdgeStats CountEdges(const std::vector<Triangle>& triangles)
-{
-  std::map<std::pair<int, int>, std::pair<int, int>> edges; // (min,max) -> (forward, backward)
-  for (const Triangle& t : triangles)
-    for (int k = 0; k < 3; ++k)
-    {
-      const int a = t[k], b = t[(k + 1) % 3];
-      auto& e = edges[{ std::min(a, b), std::max(a, b) }];
-      (a < b ? e.first : e.second)++;
-    }
-  EdgeStats s;
-  for (const auto& e : edges)
-  {
-    const int n = e.second.first + e.second.second;
-    s.boundary += n == 1;
-    s.nonManifold += n > 2;
-    s.misoriented += n == 2 && e.second.first != 1;
-  }
-  return s;
-}
-
-double SignedVolume(const std::vector<Vec3>& p, const std::vector<Triangle>& t)
-{
-  double v = 0.0;
-  for (const Triangle& f : t)
-    v += p[f[0]].dot(p[f[1]].cross(p[f[2]])) / 6.0;
-  return v;
-}
 
 /// Largest distance from the vertices and face centroids of A to the triangles of B.
 double OneSided(const std::vector<Vec3>& pa,
@@ -157,7 +122,7 @@ struct RoundTripResult
   FoldingTree tree;
   UnfoldedMesh unfolded;
   double hausdorff = 0.0; ///< relative to the diagonal
-  EdgeStats edges;
+  coretest::EdgeStats edges;
 };
 
 /// fold + unfold + measures; prints a Table-1-like line.
@@ -172,8 +137,9 @@ RoundTripResult RoundTrip(const char* name,
   r.unfolded = Unfold(r.tree);
   const UnfoldedMesh& u = r.unfolded;
   r.hausdorff = Hausdorff(m, u) / diagonal;
-  r.edges = CountEdges(u.triangles);
-  const double v0 = SignedVolume(m.points, m.triangles), v1 = SignedVolume(u.points, u.triangles);
+  r.edges = coretest::CountEdges(u.triangles);
+  const double v0 = coretest::SignedVolume(m.points, m.triangles),
+               v1 = coretest::SignedVolume(u.points, u.triangles);
   std::printf("%-26s faces %5d stored %5d (compression %.3f, height %d, folds %d) -> %5d faces "
               "%5d points (input %5zu); Hausdorff/diag %.2e; open %3d non-manifold %3d "
               "misoriented %d; volume ratio %.5f; stitched %3d unmatched %2d gap edges %2d "
@@ -188,7 +154,7 @@ RoundTripResult RoundTrip(const char* name,
     u.NumberOfPoints(),
     m.points.size(),
     r.hausdorff,
-    r.edges.boundary,
+    r.edges.open,
     r.edges.nonManifold,
     r.edges.misoriented,
     v1 / v0,
@@ -202,9 +168,9 @@ RoundTripResult RoundTrip(const char* name,
     name << ": " << r.edges.misoriented << " misoriented edges");
   EXPECT(v1 / v0 > 0.95 && v1 / v0 < 1.05, name << ": volume ratio " << v1 / v0);
   // The unfolder's own account of the result is the measured one.
-  EXPECT(u.openEdges == r.edges.boundary && u.nonManifoldEdges == r.edges.nonManifold,
+  EXPECT(u.openEdges == r.edges.open && u.nonManifoldEdges == r.edges.nonManifold,
     name << ": reported " << u.openEdges << " open / " << u.nonManifoldEdges
-         << " non-manifold edges, measured " << r.edges.boundary << " / " << r.edges.nonManifold);
+         << " non-manifold edges, measured " << r.edges.open << " / " << r.edges.nonManifold);
   EXPECT(std::count(u.faceFilled.begin(), u.faceFilled.end(), 1) == u.filledFaces,
     name << ": filled faces miscounted");
   return r;
@@ -213,9 +179,8 @@ RoundTripResult RoundTrip(const char* name,
 void ExpectExact(const char* name, const TriangleMesh& m, const RoundTripResult& r)
 {
   const UnfoldedMesh& u = r.unfolded;
-  EXPECT(r.edges.boundary == 0 && r.edges.nonManifold == 0,
-    name << ": " << r.edges.boundary << " open and " << r.edges.nonManifold
-         << " non-manifold edges");
+  EXPECT(r.edges.open == 0 && r.edges.nonManifold == 0,
+    name << ": " << r.edges.open << " open and " << r.edges.nonManifold << " non-manifold edges");
   EXPECT(u.NumberOfFaces() == static_cast<int>(m.triangles.size()),
     name << ": " << u.NumberOfFaces() << " faces, input " << m.triangles.size());
   EXPECT(u.NumberOfPoints() == static_cast<int>(m.points.size()),
@@ -483,7 +448,8 @@ void TestStitching()
   off.stitch = false;
   const UnfoldedMesh raw = Unfold(tree, off);
   const UnfoldedMesh stitched = Unfold(tree);
-  const EdgeStats er = CountEdges(raw.triangles), es = CountEdges(stitched.triangles);
+  const coretest::EdgeStats er = coretest::CountEdges(raw.triangles),
+                            es = coretest::CountEdges(stitched.triangles);
   int tears = 0;
   for (const SeamReport& s : raw.seams)
     tears += s.tearVertices;
@@ -492,10 +458,10 @@ void TestStitching()
               "%zu, %zu)\n",
     raw.seams.size(),
     tears,
-    er.boundary,
+    er.open,
     raw.unmatchedTearVertices,
     raw.gapEdges,
-    es.boundary,
+    es.open,
     stitched.stitchedVertices,
     stitched.unmatchedTearVertices,
     stitched.NumberOfFaces(),
@@ -503,11 +469,11 @@ void TestStitching()
     blob1.mesh.triangles.size(),
     blob1.mesh.points.size());
   EXPECT(raw.seams.size() == 1 && tears > 10, "stitching: no seam in the split tree");
-  EXPECT(er.boundary > 0 && raw.unmatchedTearVertices == tears && raw.gapEdges > 0 &&
-      raw.gapLength > 0 && raw.openEdges == er.boundary,
+  EXPECT(er.open > 0 && raw.unmatchedTearVertices == tears && raw.gapEdges > 0 &&
+      raw.gapLength > 0 && raw.openEdges == er.open,
     "stitching off: the raw union's gaps are not all reported");
   EXPECT(raw.NumberOfPoints() > stitched.NumberOfPoints(), "stitching off: no duplicate points");
-  EXPECT(es.boundary == 0 && es.nonManifold == 0 && es.misoriented == 0 &&
+  EXPECT(es.open == 0 && es.nonManifold == 0 && es.misoriented == 0 &&
       stitched.unmatchedTearVertices == 0 && stitched.stitchedVertices == tears &&
       stitched.NumberOfFaces() == static_cast<int>(blob1.mesh.triangles.size()) &&
       stitched.NumberOfPoints() == static_cast<int>(blob1.mesh.points.size()),
@@ -527,20 +493,21 @@ void TestStitching()
   int tears2 = 0;
   for (const SeamReport& s : st2.seams)
     tears2 += s.tearVertices;
-  const EdgeStats er2 = CountEdges(raw2.triangles), es2 = CountEdges(st2.triangles);
+  const coretest::EdgeStats er2 = coretest::CountEdges(raw2.triangles),
+                            es2 = coretest::CountEdges(st2.triangles);
   std::printf("stitching, attachment: tear vertices %d; raw open %d; stitched %d, unmatched %d, "
               "gap edges %d (length/diag %.4f), smoothed %d; open %d\n",
     tears2,
-    er2.boundary,
+    er2.open,
     st2.stitchedVertices,
     st2.unmatchedTearVertices,
     st2.gapEdges,
     st2.gapLength / blob.diagonal,
     st2.seams.empty() ? 0 : st2.seams.back().smoothedVertices,
-    es2.boundary);
+    es2.open);
   EXPECT(st2.stitchedVertices >= 0.8 * tears2,
     "attachment: only " << st2.stitchedVertices << " of " << tears2 << " tear vertices stitched");
-  EXPECT(es2.boundary < er2.boundary, "attachment: stitching did not reduce the open edges");
+  EXPECT(es2.open < er2.open, "attachment: stitching did not reduce the open edges");
   EXPECT(st2.unmatchedTearVertices == tears2 - st2.stitchedVertices,
     "attachment: unmatched count inconsistent");
 }

@@ -26,39 +26,6 @@ namespace pm = foldingmeshes::testing;
 
 namespace
 {
-struct EdgeStats
-{
-  int open = 0, nonManifold = 0, misoriented = 0;
-};
-
-EdgeStats Count(const std::vector<Triangle>& triangles)
-{
-  std::map<std::pair<int, int>, std::pair<int, int>> edges;
-  for (const Triangle& t : triangles)
-    for (int k = 0; k < 3; ++k)
-    {
-      const int a = t[k], b = t[(k + 1) % 3];
-      auto& e = edges[{ std::min(a, b), std::max(a, b) }];
-      (a < b ? e.first : e.second)++;
-    }
-  EdgeStats s;
-  for (const auto& e : edges)
-  {
-    const int uses = e.second.first + e.second.second;
-    s.open += uses == 1;
-    s.nonManifold += uses > 2;
-    s.misoriented += uses == 2 && e.second.first != 1;
-  }
-  return s;
-}
-
-double SignedVolume(const std::vector<Vec3>& p, const std::vector<Triangle>& t)
-{
-  double v = 0.0;
-  for (const Triangle& f : t)
-    v += p[f[0]].dot(p[f[1]].cross(p[f[2]])) / 6.0;
-  return v;
-}
 
 /// A tree made of one leaf holding `m` (no flags, no budgets).
 FoldingTree LeafTree(const TriangleMesh& m, double rootEpsilon)
@@ -119,7 +86,7 @@ TriangleMesh Holed(const TriangleMesh& sphere, int center, std::set<int>& loop)
 
 void TestHoles(const TriangleMesh& sphere)
 {
-  const double volume = SignedVolume(sphere.points, sphere.triangles);
+  const double volume = coretest::SignedVolume(sphere.points, sphere.triangles);
   std::set<int> loop;
   const TriangleMesh holed = Holed(sphere, 0, loop);
   REQUIRE(loop.size() >= 3, "no hole made");
@@ -128,7 +95,7 @@ void TestHoles(const TriangleMesh& sphere)
   // Filled (root epsilon 0.2: the fill lies within 0.1 of the loop).
   const FoldingTree tree = LeafTree(holed, 0.2);
   const UnfoldedMesh u = Unfold(tree);
-  const EdgeStats s = Count(u.triangles);
+  const coretest::EdgeStats s = coretest::CountEdges(u.triangles);
   std::printf("hole of %d edges: filled %d loops, %d faces; open %d non-manifold %d "
               "misoriented %d\n",
     n,
@@ -145,7 +112,8 @@ void TestHoles(const TriangleMesh& sphere)
       u.misorientedEdges == s.misoriented,
     "hole: the report differs from the mesh");
   EXPECT(u.repair.openLoops == 0 && u.repair.borderLoops == 0, "hole: loops left open");
-  EXPECT(SignedVolume(u.points, u.triangles) * volume > 0.0, "hole: orientation reversed");
+  EXPECT(
+    coretest::SignedVolume(u.points, u.triangles) * volume > 0.0, "hole: orientation reversed");
   int filled = 0;
   for (int f = 0; f < u.NumberOfFaces(); ++f)
     if (u.faceFilled[f])
@@ -160,15 +128,16 @@ void TestHoles(const TriangleMesh& sphere)
 
   UnfoldOptions off;
   off.closeHoles = false;
-  EXPECT(Count(Unfold(tree, off).triangles).open == n, "closeHoles off: the hole is not open");
+  EXPECT(coretest::CountEdges(Unfold(tree, off).triangles).open == n,
+    "closeHoles off: the hole is not open");
 
   // The input's own border: kept.
   FoldingTree bordered = tree;
   for (int v : loop)
     bordered.nodes[0].mesh.inputBoundary[v] = 1;
   const UnfoldedMesh b = Unfold(bordered);
-  EXPECT(Count(b.triangles).open == n && b.repair.filledLoops == 0,
-    "input border: filled (" << Count(b.triangles).open << " open edges)");
+  EXPECT(coretest::CountEdges(b.triangles).open == n && b.repair.filledLoops == 0,
+    "input border: filled (" << coretest::CountEdges(b.triangles).open << " open edges)");
   EXPECT(b.repair.borderLoops == 1 && b.repair.borderEdges == n && b.repair.borderLength > 0.0,
     "input border: reported as " << b.repair.borderLoops << " loops, " << b.repair.borderEdges
                                  << " edges");
@@ -196,7 +165,7 @@ void TestHoles(const TriangleMesh& sphere)
     other.inputBorderEdges = { { 1000000, 1000001 } }; // another border elsewhere
     const UnfoldedMesh filledAnyway = Unfold(other);
     EXPECT(filledAnyway.repair.borderLoops == 0 && filledAnyway.repair.filledLoops == 1 &&
-        Count(filledAnyway.triangles).open == 0,
+        coretest::CountEdges(filledAnyway.triangles).open == 0,
       "border flags without a listed border edge: the hole was not filled");
   }
 
@@ -204,21 +173,22 @@ void TestHoles(const TriangleMesh& sphere)
   FoldingTree unknown = tree;
   unknown.nodes[0].mesh.inputBoundary.clear();
   const UnfoldedMesh k = Unfold(unknown);
-  EXPECT(Count(k.triangles).open == n && k.repair.unknownLoops == 1 && k.repair.filledLoops == 0,
+  EXPECT(coretest::CountEdges(k.triangles).open == n && k.repair.unknownLoops == 1 &&
+      k.repair.filledLoops == 0,
     "unknown border: filled or not reported");
 
   // Beyond the tolerance: left open and reported.
   const FoldingTree tight = LeafTree(holed, 1e-4);
   const UnfoldedMesh r = Unfold(tight);
-  EXPECT(Count(r.triangles).open == n && r.repair.openLoops == 1 && r.repair.openEdges == n &&
-      r.repair.openLength > 0.0 && r.repair.filledLoops == 0,
+  EXPECT(coretest::CountEdges(r.triangles).open == n && r.repair.openLoops == 1 &&
+      r.repair.openEdges == n && r.repair.openLength > 0.0 && r.repair.filledLoops == 0,
     "tolerance: " << r.repair.filledLoops << " loops filled, " << r.repair.openLoops
                   << " reported open");
 }
 
 void TestOrientationAndNonManifold(const TriangleMesh& sphere)
 {
-  const double volume = SignedVolume(sphere.points, sphere.triangles);
+  const double volume = coretest::SignedVolume(sphere.points, sphere.triangles);
   // Flip the faces of a small cap around vertex 0 (its 1-ring) and one lone face.
   TriangleMesh flipped = sphere;
   int count = 0;
@@ -238,9 +208,9 @@ void TestOrientationAndNonManifold(const TriangleMesh& sphere)
   const FoldingTree tree = LeafTree(flipped, 0.04);
   UnfoldOptions off;
   off.closeHoles = false;
-  const EdgeStats before = Count(Unfold(tree, off).triangles);
+  const coretest::EdgeStats before = coretest::CountEdges(Unfold(tree, off).triangles);
   const UnfoldedMesh u = Unfold(tree);
-  const EdgeStats after = Count(u.triangles);
+  const coretest::EdgeStats after = coretest::CountEdges(u.triangles);
   std::printf("orientation: %d faces flipped by hand, %d misoriented edges; repair flipped %d, "
               "misoriented %d\n",
     count,
@@ -252,7 +222,8 @@ void TestOrientationAndNonManifold(const TriangleMesh& sphere)
       u.NumberOfFaces() == static_cast<int>(sphere.triangles.size()),
     "orientation: not repaired");
   EXPECT(u.repair.flippedFaces == count, "orientation: " << u.repair.flippedFaces << " flipped");
-  EXPECT(SignedVolume(u.points, u.triangles) * volume > 0.0, "orientation: the majority lost");
+  EXPECT(
+    coretest::SignedVolume(u.points, u.triangles) * volume > 0.0, "orientation: the majority lost");
 
   // A fin: an extra face on an edge of the sphere (to a far vertex).
   TriangleMesh fin = sphere;
@@ -264,9 +235,10 @@ void TestOrientationAndNonManifold(const TriangleMesh& sphere)
       far = v;
   fin.triangles.push_back({ t0[0], t0[1], far });
   const FoldingTree finTree = LeafTree(fin, 0.04);
-  EXPECT(Count(Unfold(finTree, off).triangles).nonManifold == 1, "fin: not non-manifold");
+  EXPECT(
+    coretest::CountEdges(Unfold(finTree, off).triangles).nonManifold == 1, "fin: not non-manifold");
   const UnfoldedMesh g = Unfold(finTree);
-  const EdgeStats gs = Count(g.triangles);
+  const coretest::EdgeStats gs = coretest::CountEdges(g.triangles);
   EXPECT(gs.nonManifold == 0 && gs.misoriented == 0 && gs.open == 0 &&
       g.NumberOfFaces() == static_cast<int>(sphere.triangles.size()) && g.repair.droppedFaces == 1,
     "fin: " << gs.nonManifold << " non-manifold, " << gs.open << " open edges, "
@@ -277,7 +249,8 @@ void TestOrientationAndNonManifold(const TriangleMesh& sphere)
 int main()
 {
   const TriangleMesh sphere = coretest::ToTriangleMesh(pm::MakeSphere(2000).mesh);
-  REQUIRE(Count(sphere.triangles).open == 0 && Count(sphere.triangles).misoriented == 0,
+  REQUIRE(coretest::CountEdges(sphere.triangles).open == 0 &&
+      coretest::CountEdges(sphere.triangles).misoriented == 0,
     "the sphere is not closed and oriented");
   TestHoles(sphere);
   TestOrientationAndNonManifold(sphere);
