@@ -334,6 +334,24 @@ int Unfolder::FillLoops(Piece& piece, RepairReport& report, bool apply)
       faceOfHalfEdge[{ t[k], t[(k + 1) % 3] }] = f;
     }
   }
+  // Appends the fill of a loop whose first edge is a -> b, with the attributes (ids, copy) of
+  // the face across that edge (hole a -> b: face b -> a).
+  auto appendFill = [&](const std::vector<Triangle>& fill, int a, int b)
+  {
+    auto from = faceOfHalfEdge.find({ b, a });
+    const int source = from != faceOfHalfEdge.end() ? from->second : 0;
+    for (const Triangle& t : fill)
+    {
+      piece.triangles.push_back(t);
+      piece.faceOrig.push_back(piece.faceOrig[source]);
+      piece.faceCopy.push_back(piece.faceCopy[source]);
+      piece.faceFilled.push_back(1);
+      for (int k = 0; k < 3; ++k)
+        existing.insert(Key(t[k], t[(k + 1) % 3]));
+    }
+    report.filledFaces += static_cast<int>(fill.size());
+    ++report.filledLoops;
+  };
   int filled = 0;
   for (const std::vector<int>& loop : loops)
   {
@@ -383,19 +401,7 @@ int Unfolder::FillLoops(Piece& piece, RepairReport& report, bool apply)
           !TriangulateLoop(piece, run, existing, fill) ||
           !this->FillWithinTolerance(piece, run, fill))
           continue;
-        auto from = faceOfHalfEdge.find({ run[1], run[0] });
-        const int source = from != faceOfHalfEdge.end() ? from->second : 0;
-        for (const Triangle& t : fill)
-        {
-          piece.triangles.push_back(t);
-          piece.faceOrig.push_back(piece.faceOrig[source]);
-          piece.faceCopy.push_back(piece.faceCopy[source]);
-          piece.faceFilled.push_back(1);
-          for (int e = 0; e < 3; ++e)
-            existing.insert(Key(t[e], t[(e + 1) % 3]));
-        }
-        report.filledFaces += static_cast<int>(fill.size());
-        ++report.filledLoops;
+        appendFill(fill, run[0], run[1]);
         ++filled;
       }
       continue;
@@ -471,21 +477,8 @@ int Unfolder::FillLoops(Piece& piece, RepairReport& report, bool apply)
       filled += ok;
       continue;
     }
-    // Attributes of the face across the loop's first edge (hole a -> b: face b -> a).
-    auto from = faceOfHalfEdge.find({ loop[1], loop[0] });
-    const int source = from != faceOfHalfEdge.end() ? from->second : 0;
-    for (const Triangle& t : fill)
-    {
-      piece.triangles.push_back(t);
-      piece.faceOrig.push_back(piece.faceOrig[source]);
-      piece.faceCopy.push_back(piece.faceCopy[source]);
-      piece.faceFilled.push_back(1);
-      for (int k = 0; k < 3; ++k)
-        existing.insert(Key(t[k], t[(k + 1) % 3]));
-    }
-    report.filledFaces += static_cast<int>(fill.size());
+    appendFill(fill, loop[0], loop[1]);
     report.addedPoints += fan;
-    ++report.filledLoops;
     ++filled;
   }
   return filled;
