@@ -57,7 +57,7 @@ original and stored faces, compression, tree height, folds, leaves and time.
 unfold: reconstructs the mesh from a tree written by fold (section 4.3) and writes, in
 --outdir, STEM_unfolded.vtp and STEM_unfolded.png (coloured by FoldingLeafId), where STEM is
 the tree's file stem without a trailing "_tree"; prints faces, open edges, stitched vertices
-and open gaps.
+and stitch gaps (before the final repair).
   --no-stitch              the raw union of the copies: no stitching or smoothing of tears
   --no-close-holes         no final repair (non-manifold faces dropped, orientation made
                            consistent, holes that are not the input's border filled)

@@ -524,7 +524,8 @@ int Unfold(int argc, char* argv[])
       openLoopLength,
       closeHoles && stitch ? "" : " (off)");
     std::printf("stitched vertices:       %d%s\n", stitched, stitch ? "" : " (stitching off)");
-    std::printf("open gaps:               %d (length %.6g)\n", gaps, gapLength);
+    std::printf(
+      "stitch gaps:             %d (length %.6g; before the final repair)\n", gaps, gapLength);
     if (original)
       std::printf("distance to original:    Hausdorff %.6g (%.4f of its diagonal), mean %.5f\n",
         hausdorff,
@@ -657,7 +658,8 @@ int Roundtrip(int argc, char* argv[])
       mean * scale,
       epsilon * scale,
       within ? "ok" : "VIOLATED");
-    std::printf("open edges:              %lld before, %lld after (%d open gaps)\n",
+    std::printf(
+      "open edges:              %lld before, %lld after (%d stitch gaps before the repair)\n",
       openBefore,
       openAfter,
       static_cast<int>(FieldValue(unfolded, "OpenGapCount")));

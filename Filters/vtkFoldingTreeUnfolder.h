@@ -25,7 +25,7 @@
  *   neighbouring face).
  * - field data: "UnfoldedFaces", "UnfoldedPoints", "NumberOfCopies", "PlaneMergedVertices",
  *   "StitchedVertices", "UnmatchedTearVertices", "OpenGapCount" (boundary edges left between
- *   tear vertices), "OpenGapLength", "FilledFaces", "OpenEdges", "NonManifoldEdges",
+ *   tear vertices by stitching, before the final repair), "OpenGapLength", "FilledFaces", "OpenEdges", "NonManifoldEdges",
  *   "MisorientedEdges" (edges whose two faces traverse them in the same direction),
  *   "WeldedVertices" (merged or zipped by the final boundary weld), "BudgetRejectedClusters"
  *   (stitches not made: no position within the error budgets), the final repair's
