@@ -4,7 +4,7 @@
 // union, fold-line slab merge, stitching, zipper, gap filling, smoothing), with open edges.
 // Not a test: numbers to find which step breaks the error bound.
 //
-//   BenchmarkUnfoldingError MESH...
+//   BenchmarkUnfoldingError [--tolerance F] MESH...   (F: root epsilon / diagonal, default 0.02)
 #include "Core/FoldingTreeUnfolder.h"
 #include "Core/SurfaceDistance.h"
 #include "MeshIO.h"
@@ -18,6 +18,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <map>
 #include <string>
@@ -160,14 +161,21 @@ void Report(const char* label,
 
 int main(int argc, char* argv[])
 {
+  double tolerance = 0.02;
   for (int i = 1; i < argc; ++i)
   {
+    if (std::string(argv[i]) == "--tolerance" && i + 1 < argc)
+    {
+      tolerance = std::atof(argv[++i]);
+      continue;
+    }
     std::string error;
     auto mesh = ReadMesh(argv[i], error);
     if (!mesh)
       continue;
     vtkNew<vtkFoldingTreeBuilder> builder;
     builder->SetInputData(mesh);
+    builder->SetTolerance(tolerance);
     builder->Update();
     auto* blocks = vtkMultiBlockDataSet::SafeDownCast(builder->GetOutputDataObject(0));
     FoldingTree tree;
