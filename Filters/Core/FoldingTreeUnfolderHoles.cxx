@@ -186,31 +186,17 @@ bool Unfolder::TriangulateLoop(const Piece& piece,
   // Ear clipping: the ear with the shortest new diagonal.
   std::vector<int> poly(loop.begin(), loop.end());
   EdgeSet added; // the new diagonals
-  auto used = [&](const Edge& e) { return existing.count(e) || added.count(e); };
-  while (poly.size() > 3)
-  {
-    const int m = static_cast<int>(poly.size());
-    int best = -1;
-    double bestLength = std::numeric_limits<double>::infinity();
-    for (int i = 0; i < m; ++i)
+  const bool clipped = ClipShortestEars(
+    piece.points,
+    poly,
+    [&](int a, int c) { return !existing.count(Key(a, c)) && !added.count(Key(a, c)); },
+    [&](int a, int b, int c)
     {
-      const int a = poly[i], c = poly[(i + 2) % m];
-      if (used(Key(a, c)))
-        continue;
-      const double length = (piece.points[a] - piece.points[c]).norm();
-      if (length < bestLength)
-      {
-        bestLength = length;
-        best = i;
-      }
-    }
-    if (best < 0)
-      return false;
-    const int a = poly[best], b = poly[(best + 1) % m], c = poly[(best + 2) % m];
-    triangles.push_back({ a, b, c });
-    added.insert(Key(a, c));
-    poly.erase(poly.begin() + (best + 1) % m);
-  }
+      triangles.push_back({ a, b, c });
+      added.insert(Key(a, c));
+    });
+  if (!clipped)
+    return false;
   triangles.push_back({ poly[0], poly[1], poly[2] });
   return true;
 }

@@ -8,6 +8,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <functional>
+#include <limits>
 #include <unordered_map>
 #include <unordered_set>
 #include <utility>
@@ -62,6 +63,18 @@ struct Piece
   int NumberOfPoints() const { return static_cast<int>(points.size()); }
   int NumberOfFaces() const { return static_cast<int>(triangles.size()); }
 
+  /// Appends point v of `from` with everything it carries.
+  void AppendPoint(const Piece& from, int v)
+  {
+    points.push_back(from.points[v]);
+    pointOrig.push_back(from.pointOrig[v]);
+    pointCopy.push_back(from.pointCopy[v]);
+    tear.push_back(from.tear[v]);
+    onPlane.push_back(from.onPlane[v]);
+    budget.push_back(from.budget[v]);
+    border.push_back(from.border[v]);
+  }
+
   void Append(const Piece& o)
   {
     const int offset = NumberOfPoints();
@@ -79,6 +92,44 @@ struct Piece
     faceFilled.insert(faceFilled.end(), o.faceFilled.begin(), o.faceFilled.end());
   }
 };
+
+/**
+ * Ear clipping of the polygon `poly` (indices into `points`) by the shortest new diagonal:
+ * cuts off, again and again, the ear (a, b, c) whose diagonal a-c is the shortest that
+ * allowed(a, c) accepts, calling cut(a, b, c) (which records the triangle and makes a-c
+ * unavailable), until a triangle is left in poly (true) or no ear is allowed (false; poly
+ * keeps what is left).
+ */
+template <typename Allowed, typename Cut>
+bool ClipShortestEars(const std::vector<Vec3>& points,
+  std::vector<int>& poly,
+  Allowed allowed,
+  Cut cut)
+{
+  while (poly.size() > 3)
+  {
+    const int m = static_cast<int>(poly.size());
+    int best = -1;
+    double bestLength = std::numeric_limits<double>::infinity();
+    for (int i = 0; i < m; ++i)
+    {
+      const int a = poly[i], c = poly[(i + 2) % m];
+      if (!allowed(a, c))
+        continue;
+      const double length = (points[a] - points[c]).norm();
+      if (length < bestLength)
+      {
+        bestLength = length;
+        best = i;
+      }
+    }
+    if (best < 0)
+      return false;
+    cut(poly[best], poly[(best + 1) % m], poly[(best + 2) % m]);
+    poly.erase(poly.begin() + (best + 1) % m);
+  }
+  return poly.size() == 3;
+}
 
 inline int FindRoot(std::vector<int>& parent, int a)
 {

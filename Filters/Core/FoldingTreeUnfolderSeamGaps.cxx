@@ -274,31 +274,18 @@ void Unfolder::FillSeamGaps(Piece& out,
     std::vector<int> poly = loop;
     std::vector<Triangle> added;
     std::vector<int> addedFace;
-    while (poly.size() > 3)
-    {
-      const int m = static_cast<int>(poly.size());
-      int best = -1;
-      double bestLength = std::numeric_limits<double>::infinity();
-      for (int i = 0; i < m; ++i)
+    ClipShortestEars(
+      out.points,
+      poly,
+      [&](int a, int c) {
+        return !uses.count({ std::min(a, c), std::max(a, c) });
+      },
+      [&](int a, int b, int c)
       {
-        const int a = poly[i], c = poly[(i + 2) % m];
-        if (uses.count({ std::min(a, c), std::max(a, c) }))
-          continue;
-        const double length = (out.points[a] - out.points[c]).norm();
-        if (length < bestLength)
-        {
-          bestLength = length;
-          best = i;
-        }
-      }
-      if (best < 0)
-        break;
-      const int a = poly[best], b = poly[(best + 1) % m], c = poly[(best + 2) % m];
-      added.push_back({ a, b, c });
-      addedFace.push_back(halfEdges.count({ b, a }) ? halfEdges[{ b, a }] : -1);
-      ++uses[{ std::min(a, c), std::max(a, c) }];
-      poly.erase(poly.begin() + (best + 1) % m);
-    }
+        added.push_back({ a, b, c });
+        addedFace.push_back(halfEdges.count({ b, a }) ? halfEdges[{ b, a }] : -1);
+        ++uses[{ std::min(a, c), std::max(a, c) }];
+      });
     std::array<int, 3> last{
       poly[0], poly.size() > 1 ? poly[1] : -1, poly.size() > 2 ? poly[2] : -1
     };

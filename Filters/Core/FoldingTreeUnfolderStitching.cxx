@@ -256,13 +256,7 @@ void Unfolder::StitchVertices(Piece& piece,
     if (rep[v] == v)
     {
       newId[v] = out.NumberOfPoints();
-      out.points.push_back(piece.points[v]);
-      out.pointOrig.push_back(piece.pointOrig[v]);
-      out.pointCopy.push_back(piece.pointCopy[v]);
-      out.tear.push_back(piece.tear[v]);
-      out.onPlane.push_back(piece.onPlane[v]);
-      out.budget.push_back(piece.budget[v]);
-      out.border.push_back(piece.border[v]);
+      out.AppendPoint(piece, v);
       outCandidate.push_back(candidate[v]);
       auto it = childrenOfRoot.find(v);
       outChildren.push_back(
@@ -313,13 +307,7 @@ void Unfolder::StitchVertices(Piece& piece,
       if (used[v])
       {
         id[v] = compact.NumberOfPoints();
-        compact.points.push_back(out.points[v]);
-        compact.pointOrig.push_back(out.pointOrig[v]);
-        compact.pointCopy.push_back(out.pointCopy[v]);
-        compact.tear.push_back(out.tear[v]);
-        compact.onPlane.push_back(out.onPlane[v]);
-        compact.budget.push_back(out.budget[v]);
-        compact.border.push_back(out.border[v]);
+        compact.AppendPoint(out, v);
         compactCandidate.push_back(outCandidate[v]);
         compactRough.push_back(rough[v]);
         compactMatched.push_back(outMatched[v]);

@@ -35,13 +35,7 @@ WorkMesh Extract(const WorkMesh& w, const std::vector<char>& mask)
     if (newId[v] == 0)
     {
       newId[v] = out.NumberOfPoints();
-      out.points.push_back(w.points[v]);
-      out.pointOrig.push_back(w.pointOrig[v]);
-      out.tear.push_back(w.tear[v]);
-      out.onPlane.push_back(w.onPlane[v]);
-      out.projected.push_back(w.projected[v]);
-      out.mirrorFlags.push_back(w.mirrorFlags[v]);
-      out.budget.push_back(w.budget[v]);
+      out.AppendPoint(w, v);
     }
   for (int f = 0; f < w.NumberOfFaces(); ++f)
     if (mask[f])
@@ -62,15 +56,7 @@ WorkMesh ExtractFaces(const WorkMesh& w, const std::vector<int>& faces)
   points.erase(std::unique(points.begin(), points.end()), points.end());
   WorkMesh out;
   for (int v : points)
-  {
-    out.points.push_back(w.points[v]);
-    out.pointOrig.push_back(w.pointOrig[v]);
-    out.tear.push_back(w.tear[v]);
-    out.onPlane.push_back(w.onPlane[v]);
-    out.projected.push_back(w.projected[v]);
-    out.mirrorFlags.push_back(w.mirrorFlags[v]);
-    out.budget.push_back(w.budget[v]);
-  }
+    out.AppendPoint(w, v);
   auto id = [&](int v)
   { return static_cast<int>(std::lower_bound(points.begin(), points.end(), v) - points.begin()); };
   for (int f : faces)

@@ -29,6 +29,18 @@ struct WorkMesh
 
   int NumberOfFaces() const { return static_cast<int>(triangles.size()); }
   int NumberOfPoints() const { return static_cast<int>(points.size()); }
+
+  /// Appends point v of `from` with everything it carries.
+  void AppendPoint(const WorkMesh& from, int v)
+  {
+    points.push_back(from.points[v]);
+    pointOrig.push_back(from.pointOrig[v]);
+    tear.push_back(from.tear[v]);
+    onPlane.push_back(from.onPlane[v]);
+    projected.push_back(from.projected[v]);
+    mirrorFlags.push_back(from.mirrorFlags[v]);
+    budget.push_back(from.budget[v]);
+  }
 };
 
 double TriangleArea(const WorkMesh& w, const Triangle& t);

@@ -55,77 +55,94 @@ void ExpectUnfoldFailure(vtkMultiBlockDataSet* tree,
   std::printf(
     "%s -> %s", label.c_str(), log.errors.empty() ? "(no error)\n" : log.errors[0].c_str());
 }
+enum class Must
+{
+  Exist,  ///< a missing block is a failure of its own
+  MayMiss ///< the damage is skipped without the block
+};
+
+/// A copy of `good` whose first plane block (leaf false) or leaf block (leaf true) is damaged by
+/// damage(parent, index) must fail to unfold with an error naming `mustContain`.
+template <typename Damage>
+void ExpectDamagedTreeFails(vtkMultiBlockDataSet* good,
+  bool leaf,
+  Must must,
+  const std::string& label,
+  const std::string& mustContain,
+  Damage damage)
+{
+  vtkNew<vtkMultiBlockDataSet> tree;
+  tree->DeepCopy(good);
+  vtkMultiBlockDataSet* parent = nullptr;
+  unsigned int index = 0;
+  const bool found = FindBlock(tree, leaf, parent, index);
+  if (must == Must::Exist)
+    EXPECT(found, (leaf ? "no leaf block to replace" : "no plane block to damage"));
+  if (!found)
+    return;
+  damage(parent, index);
+  ExpectUnfoldFailure(tree, label, mustContain);
+}
 } // namespace
 
 void TestMalformed(vtkMultiBlockDataSet* good)
 {
-  {
-    vtkNew<vtkMultiBlockDataSet> tree;
-    tree->DeepCopy(good);
-    vtkMultiBlockDataSet* parent = nullptr;
-    unsigned int index = 0;
-    EXPECT(FindBlock(tree, false, parent, index), "no plane block to damage");
-    if (parent)
+  ExpectDamagedTreeFails(good,
+    false,
+    Must::Exist,
+    "fold without plane metadata",
+    "plane metadata",
+    [](vtkMultiBlockDataSet* parent, unsigned int index)
     {
       vtkNew<vtkFieldData> empty;
       vtkPolyData::SafeDownCast(parent->GetBlock(index))->SetFieldData(empty);
-      ExpectUnfoldFailure(tree, "fold without plane metadata", "plane metadata");
-    }
-  }
-  {
-    vtkNew<vtkMultiBlockDataSet> tree;
-    tree->DeepCopy(good);
-    vtkMultiBlockDataSet* parent = nullptr;
-    unsigned int index = 0;
-    EXPECT(FindBlock(tree, false, parent, index), "no plane block to damage");
-    if (parent)
+    });
+  ExpectDamagedTreeFails(good,
+    false,
+    Must::Exist,
+    "fold without its normal",
+    "FoldingPlaneNormal",
+    [](vtkMultiBlockDataSet* parent, unsigned int index)
     {
-      vtkPolyData* plane = vtkPolyData::SafeDownCast(parent->GetBlock(index));
-      plane->GetFieldData()->RemoveArray("FoldingPlaneNormal");
-      ExpectUnfoldFailure(tree, "fold without its normal", "FoldingPlaneNormal");
-    }
-  }
-  {
-    vtkNew<vtkMultiBlockDataSet> tree;
-    tree->DeepCopy(good);
-    vtkMultiBlockDataSet* parent = nullptr;
-    unsigned int index = 0;
-    EXPECT(FindBlock(tree, true, parent, index), "no leaf block to replace");
-    if (parent)
+      vtkPolyData::SafeDownCast(parent->GetBlock(index))
+        ->GetFieldData()
+        ->RemoveArray("FoldingPlaneNormal");
+    });
+  ExpectDamagedTreeFails(good,
+    true,
+    Must::Exist,
+    "leaf replaced by vtkImageData",
+    "vtkImageData",
+    [](vtkMultiBlockDataSet* parent, unsigned int index)
     {
       vtkNew<vtkImageData> image;
       image->SetDimensions(2, 2, 2);
       parent->SetBlock(index, image);
-      ExpectUnfoldFailure(tree, "leaf replaced by vtkImageData", "vtkImageData");
-    }
-  }
-  {
-    vtkNew<vtkMultiBlockDataSet> tree;
-    tree->DeepCopy(good);
-    vtkMultiBlockDataSet* parent = nullptr;
-    unsigned int index = 0;
-    if (FindBlock(tree, true, parent, index))
+    });
+  ExpectDamagedTreeFails(good,
+    true,
+    Must::MayMiss,
+    "leaf with a wrong node kind",
+    "FoldingNodeKind",
+    [](vtkMultiBlockDataSet* parent, unsigned int index)
     {
-      vtkPolyData* leaf = vtkPolyData::SafeDownCast(parent->GetBlock(index));
       vtkNew<vtkIntArray> kind;
       kind->SetName("FoldingNodeKind");
       kind->InsertNextValue(2);
-      leaf->GetFieldData()->AddArray(kind);
-      ExpectUnfoldFailure(tree, "leaf with a wrong node kind", "FoldingNodeKind");
-    }
-  }
-  {
-    vtkNew<vtkMultiBlockDataSet> tree;
-    tree->DeepCopy(good);
-    vtkMultiBlockDataSet* parent = nullptr;
-    unsigned int index = 0;
-    if (FindBlock(tree, true, parent, index))
+      vtkPolyData::SafeDownCast(parent->GetBlock(index))->GetFieldData()->AddArray(kind);
+    });
+  ExpectDamagedTreeFails(good,
+    true,
+    Must::MayMiss,
+    "leaf with a short TearMask",
+    "TearMask",
+    [](vtkMultiBlockDataSet* parent, unsigned int index)
     {
-      vtkPolyData* leaf = vtkPolyData::SafeDownCast(parent->GetBlock(index));
-      leaf->GetPointData()->GetAbstractArray("TearMask")->SetNumberOfTuples(3);
-      ExpectUnfoldFailure(tree, "leaf with a short TearMask", "TearMask");
-    }
-  }
+      vtkPolyData::SafeDownCast(parent->GetBlock(index))
+        ->GetPointData()
+        ->GetAbstractArray("TearMask")
+        ->SetNumberOfTuples(3);
+    });
   {
     vtkNew<vtkMultiBlockDataSet> tree;
     ExpectUnfoldFailure(tree, "empty multiblock", "two top-level blocks");

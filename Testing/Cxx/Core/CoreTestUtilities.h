@@ -4,6 +4,7 @@
 #define foldingmeshes_CoreTestUtilities_h
 
 #include "../TestExpect.h"
+#include "FoldingTreeUnfolder.h"
 #include "MeshPreparation.h"
 #include "TriangleMesh.h"
 
@@ -82,6 +83,17 @@ inline foldingmeshes::PreparedMesh Prepare(const foldingmeshes::TriangleMesh& so
 inline double Seconds(std::chrono::steady_clock::time_point since)
 {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - since).count();
+}
+
+/// UnfoldFoldingTree; exits on failure.
+inline foldingmeshes::UnfoldedMesh Unfold(const foldingmeshes::FoldingTree& tree,
+  const foldingmeshes::UnfoldOptions& options = {})
+{
+  foldingmeshes::UnfoldedMesh u;
+  std::string error;
+  const bool ok = foldingmeshes::UnfoldFoldingTree(tree, options, u, error);
+  REQUIRE(ok, "UnfoldFoldingTree failed: " << error);
+  return u;
 }
 
 /// Edges used by one triangle, by more than two, and by two running the same direction.

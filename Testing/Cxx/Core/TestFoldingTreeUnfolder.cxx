@@ -103,15 +103,6 @@ FoldingTree Fold(const TriangleMesh& m, double epsilon, FoldingTreeOptions o = {
   return tree;
 }
 
-UnfoldedMesh Unfold(const FoldingTree& tree, UnfoldOptions o = {})
-{
-  UnfoldedMesh u;
-  std::string error;
-  const bool ok = UnfoldFoldingTree(tree, o, u, error);
-  REQUIRE(ok, "UnfoldFoldingTree failed: " << error);
-  return u;
-}
-
 Vec3 FaceNormal(const std::vector<Vec3>& p, const Triangle& t)
 {
   return (p[t[1]] - p[t[0]]).cross(p[t[2]] - p[t[0]]);
@@ -134,7 +125,7 @@ RoundTripResult RoundTrip(const char* name,
   RoundTripResult r;
   const double eps = 0.02 * diagonal;
   r.tree = Fold(m, eps, options);
-  r.unfolded = Unfold(r.tree);
+  r.unfolded = coretest::Unfold(r.tree);
   const UnfoldedMesh& u = r.unfolded;
   r.hausdorff = Hausdorff(m, u) / diagonal;
   r.edges = coretest::CountEdges(u.triangles);
@@ -446,8 +437,8 @@ void TestStitching()
   REQUIRE(problem.empty(), "stitching: split tree invalid: " << problem);
   UnfoldOptions off;
   off.stitch = false;
-  const UnfoldedMesh raw = Unfold(tree, off);
-  const UnfoldedMesh stitched = Unfold(tree);
+  const UnfoldedMesh raw = coretest::Unfold(tree, off);
+  const UnfoldedMesh stitched = coretest::Unfold(tree);
   const coretest::EdgeStats er = coretest::CountEdges(raw.triangles),
                             es = coretest::CountEdges(stitched.triangles);
   int tears = 0;
@@ -488,8 +479,8 @@ void TestStitching()
   // Blob with attachment: approximate seams.
   const Shape blob = MakeShape(pm::MakeBlobWithAsymmetricPart(4000, 0.1));
   const FoldingTree t2 = Fold(blob.mesh, 0.02 * blob.diagonal);
-  const UnfoldedMesh raw2 = Unfold(t2, off);
-  const UnfoldedMesh st2 = Unfold(t2);
+  const UnfoldedMesh raw2 = coretest::Unfold(t2, off);
+  const UnfoldedMesh st2 = coretest::Unfold(t2);
   int tears2 = 0;
   for (const SeamReport& s : st2.seams)
     tears2 += s.tearVertices;
@@ -547,18 +538,18 @@ void TestErrorBudgets()
     }
     return worst;
   };
-  const UnfoldedMesh bounded = Unfold(tree);
+  const UnfoldedMesh bounded = coretest::Unfold(tree);
   EXPECT(excess(tree, bounded) <= 1e-9 * s.diagonal,
     "a point moved beyond its error budget by " << excess(tree, bounded));
   UnfoldOptions free;
   free.respectErrorBudget = false;
-  const UnfoldedMesh unbounded = Unfold(tree, free);
+  const UnfoldedMesh unbounded = coretest::Unfold(tree, free);
   EXPECT(excess(tree, unbounded) > 1e-9 * s.diagonal,
     "without the bound no point moves beyond its budget: the test cannot tell");
   FoldingTree frozen = tree;
   for (FoldingNode& n : frozen.nodes)
     std::fill(n.mesh.errorBudget.begin(), n.mesh.errorBudget.end(), 0.0);
-  const UnfoldedMesh still = Unfold(frozen);
+  const UnfoldedMesh still = coretest::Unfold(frozen);
   EXPECT(excess(frozen, still) <= 1e-9 * s.diagonal, "zero budgets: a point moved");
   std::printf("error budgets: open edges %d (zero budgets %d, unbounded %d), Hausdorff/diag %.4f "
               "(unbounded %.4f), rejected clusters %d\n",
@@ -571,7 +562,8 @@ void TestErrorBudgets()
   // Stitching alone (the final repair fills what the stitches leave either way).
   UnfoldOptions stitchOnly;
   stitchOnly.closeHoles = false;
-  EXPECT(Unfold(frozen, stitchOnly).openEdges >= Unfold(tree, stitchOnly).openEdges,
+  EXPECT(
+    coretest::Unfold(frozen, stitchOnly).openEdges >= coretest::Unfold(tree, stitchOnly).openEdges,
     "zero budgets close more than the budgets");
 }
 
@@ -623,13 +615,13 @@ void TestDeterminismAbort()
 {
   const Shape blob = MakeShape(pm::MakeBlobWithAsymmetricPart(3000, 0.1));
   const FoldingTree t = Fold(blob.mesh, 0.02 * blob.diagonal);
-  const UnfoldedMesh a = Unfold(t), b = Unfold(t);
+  const UnfoldedMesh a = coretest::Unfold(t), b = coretest::Unfold(t);
   EXPECT(a.points == b.points && a.triangles == b.triangles && a.faceCopy == b.faceCopy &&
       a.pointOriginalIds == b.pointOriginalIds,
     "unfolding is not deterministic");
   UnfoldOptions o;
   o.progress = [](double) { return false; };
-  const UnfoldedMesh c = Unfold(t, o);
+  const UnfoldedMesh c = coretest::Unfold(t, o);
   EXPECT(c.aborted, "abort: not reported");
 }
 }

@@ -56,15 +56,6 @@ FoldingTree LeafTree(const TriangleMesh& m, double rootEpsilon)
   return t;
 }
 
-UnfoldedMesh Unfold(const FoldingTree& tree, UnfoldOptions o = {})
-{
-  UnfoldedMesh u;
-  std::string error;
-  const bool ok = UnfoldFoldingTree(tree, o, u, error);
-  REQUIRE(ok, "UnfoldFoldingTree failed: " << error);
-  return u;
-}
-
 /// The sphere without the faces around vertex `center`; `loop` gets the hole's vertices.
 TriangleMesh Holed(const TriangleMesh& sphere, int center, std::set<int>& loop)
 {
@@ -94,7 +85,7 @@ void TestHoles(const TriangleMesh& sphere)
 
   // Filled (root epsilon 0.2: the fill lies within 0.1 of the loop).
   const FoldingTree tree = LeafTree(holed, 0.2);
-  const UnfoldedMesh u = Unfold(tree);
+  const UnfoldedMesh u = coretest::Unfold(tree);
   const coretest::EdgeStats s = coretest::CountEdges(u.triangles);
   std::printf("hole of %d edges: filled %d loops, %d faces; open %d non-manifold %d "
               "misoriented %d\n",
@@ -128,14 +119,14 @@ void TestHoles(const TriangleMesh& sphere)
 
   UnfoldOptions off;
   off.closeHoles = false;
-  EXPECT(coretest::CountEdges(Unfold(tree, off).triangles).open == n,
+  EXPECT(coretest::CountEdges(coretest::Unfold(tree, off).triangles).open == n,
     "closeHoles off: the hole is not open");
 
   // The input's own border: kept.
   FoldingTree bordered = tree;
   for (int v : loop)
     bordered.nodes[0].mesh.inputBoundary[v] = 1;
-  const UnfoldedMesh b = Unfold(bordered);
+  const UnfoldedMesh b = coretest::Unfold(bordered);
   EXPECT(coretest::CountEdges(b.triangles).open == n && b.repair.filledLoops == 0,
     "input border: filled (" << coretest::CountEdges(b.triangles).open << " open edges)");
   EXPECT(b.repair.borderLoops == 1 && b.repair.borderEdges == n && b.repair.borderLength > 0.0,
@@ -158,12 +149,12 @@ void TestHoles(const TriangleMesh& sphere)
     holeEdges.erase(std::unique(holeEdges.begin(), holeEdges.end()), holeEdges.end());
     FoldingTree listed = bordered;
     listed.inputBorderEdges = holeEdges; // (contains the loop's edges, and maybe chords)
-    const UnfoldedMesh kept = Unfold(listed);
+    const UnfoldedMesh kept = coretest::Unfold(listed);
     EXPECT(kept.repair.borderLoops == 1 && kept.repair.filledLoops == 0,
       "listed border edges: the border was filled");
     FoldingTree other = bordered;
     other.inputBorderEdges = { { 1000000, 1000001 } }; // another border elsewhere
-    const UnfoldedMesh filledAnyway = Unfold(other);
+    const UnfoldedMesh filledAnyway = coretest::Unfold(other);
     EXPECT(filledAnyway.repair.borderLoops == 0 && filledAnyway.repair.filledLoops == 1 &&
         coretest::CountEdges(filledAnyway.triangles).open == 0,
       "border flags without a listed border edge: the hole was not filled");
@@ -172,14 +163,14 @@ void TestHoles(const TriangleMesh& sphere)
   // Unknown border (a tree file without InputBoundary): nothing filled.
   FoldingTree unknown = tree;
   unknown.nodes[0].mesh.inputBoundary.clear();
-  const UnfoldedMesh k = Unfold(unknown);
+  const UnfoldedMesh k = coretest::Unfold(unknown);
   EXPECT(coretest::CountEdges(k.triangles).open == n && k.repair.unknownLoops == 1 &&
       k.repair.filledLoops == 0,
     "unknown border: filled or not reported");
 
   // Beyond the tolerance: left open and reported.
   const FoldingTree tight = LeafTree(holed, 1e-4);
-  const UnfoldedMesh r = Unfold(tight);
+  const UnfoldedMesh r = coretest::Unfold(tight);
   EXPECT(coretest::CountEdges(r.triangles).open == n && r.repair.openLoops == 1 &&
       r.repair.openEdges == n && r.repair.openLength > 0.0 && r.repair.filledLoops == 0,
     "tolerance: " << r.repair.filledLoops << " loops filled, " << r.repair.openLoops
@@ -208,8 +199,8 @@ void TestOrientationAndNonManifold(const TriangleMesh& sphere)
   const FoldingTree tree = LeafTree(flipped, 0.04);
   UnfoldOptions off;
   off.closeHoles = false;
-  const coretest::EdgeStats before = coretest::CountEdges(Unfold(tree, off).triangles);
-  const UnfoldedMesh u = Unfold(tree);
+  const coretest::EdgeStats before = coretest::CountEdges(coretest::Unfold(tree, off).triangles);
+  const UnfoldedMesh u = coretest::Unfold(tree);
   const coretest::EdgeStats after = coretest::CountEdges(u.triangles);
   std::printf("orientation: %d faces flipped by hand, %d misoriented edges; repair flipped %d, "
               "misoriented %d\n",
@@ -235,9 +226,9 @@ void TestOrientationAndNonManifold(const TriangleMesh& sphere)
       far = v;
   fin.triangles.push_back({ t0[0], t0[1], far });
   const FoldingTree finTree = LeafTree(fin, 0.04);
-  EXPECT(
-    coretest::CountEdges(Unfold(finTree, off).triangles).nonManifold == 1, "fin: not non-manifold");
-  const UnfoldedMesh g = Unfold(finTree);
+  EXPECT(coretest::CountEdges(coretest::Unfold(finTree, off).triangles).nonManifold == 1,
+    "fin: not non-manifold");
+  const UnfoldedMesh g = coretest::Unfold(finTree);
   const coretest::EdgeStats gs = coretest::CountEdges(g.triangles);
   EXPECT(gs.nonManifold == 0 && gs.misoriented == 0 && gs.open == 0 &&
       g.NumberOfFaces() == static_cast<int>(sphere.triangles.size()) && g.repair.droppedFaces == 1,
