@@ -8,9 +8,9 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 #include <cstdio>
 #include <cstdlib>
+#include <limits>
 #include <map>
 #include <string>
 
@@ -33,8 +33,8 @@ double DistanceToTriangles(const Vec3& x,
 {
   double best = std::numeric_limits<double>::infinity();
   for (const Triangle& t : triangles)
-    best = std::min(best,
-      ClosestPointTriangle(x, points[t[0]], points[t[1]], points[t[2]]).squaredDistance);
+    best = std::min(
+      best, ClosestPointTriangle(x, points[t[0]], points[t[1]], points[t[2]]).squaredDistance);
   return std::sqrt(best);
 }
 
@@ -154,8 +154,8 @@ bool Unfolder::RetriangulateRing(const Piece& piece,
   };
   auto regular = [&](int a, int b, int c)
   {
-    const double longest =
-      std::max({ (x[a] - x[b]).squaredNorm(), (x[b] - x[c]).squaredNorm(), (x[c] - x[a]).squaredNorm() });
+    const double longest = std::max(
+      { (x[a] - x[b]).squaredNorm(), (x[b] - x[c]).squaredNorm(), (x[c] - x[a]).squaredNorm() });
     return (x[b] - x[a]).cross(x[c] - x[a]).norm() > 1e-6 * longest;
   };
   std::vector<int> poly = ring;
@@ -222,15 +222,12 @@ bool Unfolder::RetriangulateRing(const Piece& piece,
     moved = std::max(moved, DistanceToTriangles((x[t[0]] + x[t[1]] + x[t[2]]) / 3.0, x, old));
     for (int j = 0; j < 3; ++j)
       if (diagonals.count({ std::min(t[j], t[(j + 1) % 3]), std::max(t[j], t[(j + 1) % 3]) }))
-        moved =
-          std::max(moved, DistanceToTriangles(0.5 * (x[t[j]] + x[t[(j + 1) % 3]]), x, old));
+        moved = std::max(moved, DistanceToTriangles(0.5 * (x[t[j]] + x[t[(j + 1) % 3]]), x, old));
   }
   return moved <= limit;
 }
 
-int Unfolder::RemoveProjectedPoints(const FoldingNode* node,
-  Piece& piece,
-  std::vector<char>* added)
+int Unfolder::RemoveProjectedPoints(const FoldingNode* node, Piece& piece, std::vector<char>* added)
 {
   const uint64_t bit = node ? uint64_t(1) << node->depth : 0;
   const uint64_t above = bit - 1;
@@ -260,10 +257,10 @@ int Unfolder::RemoveProjectedPoints(const FoldingNode* node,
     // it helps close), no pending tear or fold-line flag (the stitching above needs them).
     // Always: not on the input's border.
     const char* keep = piece.border[v] == 1 ? "border"
-      : !node                                ? nullptr
-      : (piece.onPlane[v] & above)           ? "plane above"
-      : !piece.tear[v].empty()               ? "tear"
-                                             : nullptr;
+      : !node                               ? nullptr
+      : (piece.onPlane[v] & above)          ? "plane above"
+      : !piece.tear[v].empty()              ? "tear"
+                                            : nullptr;
     if (keep)
     {
       if (debug)
@@ -306,8 +303,8 @@ int Unfolder::RemoveProjectedPoints(const FoldingNode* node,
     for (int a : ring)
     {
       auto& list = facesOf[a];
-      list.erase(std::remove_if(list.begin(), list.end(), [&](int f) { return !alive[f]; }),
-        list.end());
+      list.erase(
+        std::remove_if(list.begin(), list.end(), [&](int f) { return !alive[f]; }), list.end());
       piece.budget[a] = std::max(0.0, piece.budget[a] - moved);
     }
     facesOf[v].clear();
@@ -316,7 +313,10 @@ int Unfolder::RemoveProjectedPoints(const FoldingNode* node,
   }
   if (debug)
   {
-    std::printf("[projected] %s %d: removed %d", node ? "fold at depth" : "final pass, points", node ? node->depth : n, count);
+    std::printf("[projected] %s %d: removed %d",
+      node ? "fold at depth" : "final pass, points",
+      node ? node->depth : n,
+      count);
     for (const auto& r : reasons)
       std::printf(", %s %d", r.first.c_str(), r.second);
     std::printf("\n");

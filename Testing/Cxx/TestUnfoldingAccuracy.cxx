@@ -484,10 +484,10 @@ int main(int argc, char* argv[])
     // bearing +25% / +45%, queen +18% / +52%, hammer_dec4360 +22% / +41% (the last ones
     // have differently tessellated halves: the denser half is doubled).
     const std::string stem = std::filesystem::path(argv[i]).stem().string();
-    const double excess =
-      stem == "anchor_cgal" || stem == "dino_cgal" || stem == "teapot_newell" ? 0.065
-      : stem == "wingnut_oded" || stem == "triceratops_cgal"                  ? 0.15
-                                                                              : 0.28;
+    const double excess = stem == "anchor_cgal" || stem == "dino_cgal" || stem == "teapot_newell"
+      ? 0.065
+      : stem == "wingnut_oded" || stem == "triceratops_cgal" ? 0.15
+                                                             : 0.28;
     RoundTrip(stem, mesh, false, &seconds, true, excess);
     std::printf("  (%.1f s)\n", seconds);
   }

@@ -713,17 +713,16 @@ void TestRemovedProjectedPoints()
                                                     << without.NumberOfFaces() << " faces");
   EXPECT(without.removedProjectedPoints == 0 && with.removedProjectedPoints > 0 &&
       with.projectedPoints < without.projectedPoints,
-    "straddling ellipsoid: removed " << with.removedProjectedPoints << " (off: "
-                                     << without.removedProjectedPoints << "), left "
-                                     << with.projectedPoints << " (off: "
-                                     << without.projectedPoints << ")");
+    "straddling ellipsoid: removed "
+      << with.removedProjectedPoints << " (off: " << without.removedProjectedPoints << "), left "
+      << with.projectedPoints << " (off: " << without.projectedPoints << ")");
   for (const UnfoldedMesh* u : { &with, &without })
   {
     const char* name = u == &with ? "removed" : "kept";
     const coretest::EdgeStats e = coretest::CountEdges(u->triangles);
     const double h = Hausdorff(m, *u) / diagonal;
-    const double volume =
-      coretest::SignedVolume(u->points, u->triangles) / coretest::SignedVolume(m.points, m.triangles);
+    const double volume = coretest::SignedVolume(u->points, u->triangles) /
+      coretest::SignedVolume(m.points, m.triangles);
     std::printf("  %s: open %d non-manifold %d misoriented %d, Hausdorff/diag %.2e, volume ratio "
                 "%.5f\n",
       name,
@@ -736,7 +735,8 @@ void TestRemovedProjectedPoints()
       "straddling ellipsoid (" << name << "): " << e.open << " open, " << e.nonManifold
                                << " non-manifold, " << e.misoriented << " misoriented edges");
     EXPECT(h <= 0.02, "straddling ellipsoid (" << name << "): Hausdorff/diag " << h);
-    EXPECT(std::abs(volume - 1.0) < 0.01, "straddling ellipsoid (" << name << "): volume ratio " << volume);
+    EXPECT(std::abs(volume - 1.0) < 0.01,
+      "straddling ellipsoid (" << name << "): volume ratio " << volume);
     // Every per-point and per-face array follows the points and faces.
     const size_t p = u->points.size(), f = u->triangles.size();
     EXPECT(u->pointOriginalIds.size() == p && u->pointCopy.size() == p &&
