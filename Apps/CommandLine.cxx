@@ -50,17 +50,21 @@ original and stored faces, compression, tree height, folds, leaves and time.
   --max-folds N            leaf when N folds lie above a region (default 8, at most 63)
   --tight-symmetry         fold only clear symmetries (RMS mirror distance <= 0.35 epsilon);
                            default: every epsilon-symmetric region of >= 10% area, as the paper
+  --keep-projected-points  (roundtrip only) as for unfold
   --outdir DIR             folder for the outputs (default: current folder)
   --json                   print the result as JSON
   --quiet                  no progress on stderr
 
 unfold: reconstructs the mesh from a tree written by fold (section 4.3) and writes, in
 --outdir, STEM_unfolded.vtp and STEM_unfolded.png (coloured by FoldingLeafId), where STEM is
-the tree's file stem without a trailing "_tree"; prints faces, open edges, stitched vertices
-and stitch gaps (before the final repair).
+the tree's file stem without a trailing "_tree"; prints faces, open edges, stitched vertices,
+projected points removed and left, and stitch gaps (before the final repair).
   --no-stitch              the raw union of the copies: no stitching or smoothing of tears
   --no-close-holes         no final repair (non-manifold faces dropped, orientation made
                            consistent, holes that are not the input's border filled)
+  --keep-projected-points  keep the vertices the builder projected onto fold planes (default:
+                           removed after mirroring and their 1-rings re-triangulated where the
+                           error budget allows, so the vertex count stays close to the input's)
   --original MESH          also measure the distance to MESH (the folded input): Hausdorff
                            and mean distance, also as fractions of its diagonal (-1 without)
   --outdir DIR             folder for the outputs (default: current folder)
@@ -70,9 +74,9 @@ roundtrip: folds MESH (fold options), writes STEM_tree.vtm, reads it back, unfol
 STEM_unfolded.vtp and reports the symmetric Hausdorff distance between the (triangulated)
 input and the unfolded mesh as a fraction of the input's bounding-box diagonal: the maximum
 and the mean over the vertices of both meshes of the distance to the other surface. Also
-prints the open (boundary) edges before and after (vertices at identical positions counted
-as one). Fails with exit code 4 when the Hausdorff distance exceeds the root epsilon. No
-pictures.
+prints the open (boundary) edges and the vertices before and after (vertices at identical
+positions counted as one). Fails with exit code 4 when the Hausdorff distance exceeds the root
+epsilon. No pictures.
 
 Pictures need a display: without $DISPLAY they are skipped with a message (use xvfb-run -a).
 

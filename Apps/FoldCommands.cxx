@@ -46,6 +46,7 @@ struct FoldSettings
   double minAreaFraction = 0.05;
   int maxFolds = 8;
   bool tightSymmetry = false;
+  bool keepProjectedPoints = false; // roundtrip's unfolder: RemoveProjectedPoints off
 };
 
 double ParseNumber(const std::string& what,
@@ -113,6 +114,8 @@ FoldSettings ParseFoldArguments(int argc, char* argv[])
     }
     else if (arg == "--tight-symmetry")
       f.tightSymmetry = true;
+    else if (arg == "--keep-projected-points")
+      f.keepProjectedPoints = true;
     else if (arg == "--outdir")
       f.outdir = value("--outdir");
     else if (arg == "--json")
@@ -285,6 +288,8 @@ bool MakeOutdir(const std::string& outdir, std::string& error)
 int Fold(int argc, char* argv[])
 {
   const FoldSettings f = ParseFoldArguments(argc, argv);
+  if (f.keepProjectedPoints)
+    throw std::runtime_error("--keep-projected-points is an option of unfold and roundtrip");
   std::string error;
   vtkSmartPointer<vtkPolyData> mesh = foldingmeshes::ReadMesh(f.meshPath, error);
   if (!mesh)
@@ -375,7 +380,7 @@ int Fold(int argc, char* argv[])
 int Unfold(int argc, char* argv[])
 {
   std::string treePath, outdir = ".", originalPath;
-  bool json = false, quiet = false, stitch = true, closeHoles = true;
+  bool json = false, quiet = false, stitch = true, closeHoles = true, removeProjected = true;
   for (int i = 0; i < argc; ++i)
   {
     const std::string arg = argv[i];
@@ -394,6 +399,8 @@ int Unfold(int argc, char* argv[])
       stitch = false;
     else if (arg == "--no-close-holes")
       closeHoles = false;
+    else if (arg == "--keep-projected-points")
+      removeProjected = false;
     else if (arg == "--original")
     {
       if (i + 1 >= argc)
@@ -424,6 +431,7 @@ int Unfold(int argc, char* argv[])
   vtkNew<vtkFoldingTreeUnfolder> unfolder;
   unfolder->SetStitch(stitch);
   unfolder->SetCloseHoles(closeHoles);
+  unfolder->SetRemoveProjectedPoints(removeProjected);
   unfolder->SetInputData(tree);
   vtkSmartPointer<vtkPolyData> original;
   if (!originalPath.empty())
@@ -465,6 +473,8 @@ int Unfold(int argc, char* argv[])
   const int openLoops = static_cast<int>(FieldValue(mesh, "OpenLoops"));
   const double openLoopLength = FieldValue(mesh, "OpenLoopLength");
   const int stitched = static_cast<int>(FieldValue(mesh, "StitchedVertices"));
+  const int removedProjected = static_cast<int>(FieldValue(mesh, "RemovedProjectedPoints"));
+  const int projectedLeft = static_cast<int>(FieldValue(mesh, "ProjectedPoints"));
   const int gaps = static_cast<int>(FieldValue(mesh, "OpenGapCount"));
   const double gapLength = FieldValue(mesh, "OpenGapLength");
   // With --original: the symmetric Hausdorff distance to it, absolute and / its diagonal.
@@ -476,7 +486,8 @@ int Unfold(int argc, char* argv[])
   if (json)
   {
     std::printf("{\n  \"tree\": %s,\n  \"stitch\": %s,\n  \"faces\": %lld,\n"
-                "  \"points\": %lld,\n  \"openEdges\": %d,\n  \"nonManifoldEdges\": %d,\n"
+                "  \"points\": %lld,\n  \"removedProjectedPoints\": %d,\n"
+                "  \"projectedPoints\": %d,\n  \"openEdges\": %d,\n  \"nonManifoldEdges\": %d,\n"
                 "  \"misorientedEdges\": %d,\n  \"closeHoles\": %s,\n  \"filledLoops\": %d,\n"
                 "  \"borderLoops\": %d,\n  \"openLoops\": %d,\n  \"openLoopLength\": %.9g,\n"
                 "  \"stitchedVertices\": %d,\n  \"openGapCount\": %d,\n"
@@ -488,6 +499,8 @@ int Unfold(int argc, char* argv[])
       stitch ? "true" : "false",
       faces,
       static_cast<long long>(mesh->GetNumberOfPoints()),
+      removedProjected,
+      projectedLeft,
       openEdges,
       nonManifold,
       misoriented,
@@ -512,6 +525,10 @@ int Unfold(int argc, char* argv[])
     std::printf("faces:                   %lld (%lld points)\n",
       faces,
       static_cast<long long>(mesh->GetNumberOfPoints()));
+    std::printf("projected points:        %d removed, %d left%s\n",
+      removedProjected,
+      projectedLeft,
+      removeProjected ? "" : " (--keep-projected-points)");
     std::printf("open edges:              %d (non-manifold %d, misoriented %d)\n",
       openEdges,
       nonManifold,
@@ -579,6 +596,7 @@ int Roundtrip(int argc, char* argv[])
     return 2;
   }
   vtkNew<vtkFoldingTreeUnfolder> unfolder;
+  unfolder->SetRemoveProjectedPoints(!f.keepProjectedPoints);
   unfolder->SetInputData(readBack);
   t0 = std::chrono::steady_clock::now();
   if (!RunFilter(unfolder, "unfolding", f.quiet, error))
@@ -604,8 +622,10 @@ int Roundtrip(int argc, char* argv[])
   foldingmeshes::SymmetricSurfaceDistance(input, unfolded, hausdorff, mean);
   const double epsilon = TreeValue(tree, "RootEpsilon");
   const bool within = hausdorff <= epsilon;
-  const long long openBefore = foldingmeshes::CountOpenEdges(input),
-                  openAfter = foldingmeshes::CountOpenEdges(unfolded);
+  const foldingmeshes::EdgeCounts before = foldingmeshes::CountEdges(input),
+                                  after = foldingmeshes::CountEdges(unfolded);
+  const long long openBefore = before.open, openAfter = after.open;
+  const int removedProjected = static_cast<int>(FieldValue(unfolded, "RemovedProjectedPoints"));
   const double scale = diagonal > 0 ? 1.0 / diagonal : 0.0;
   const int original = static_cast<int>(TreeValue(tree, "OriginalFaces"));
   const int stored = static_cast<int>(TreeValue(tree, "StoredFaces"));
@@ -615,6 +635,8 @@ int Roundtrip(int argc, char* argv[])
   {
     std::printf("{\n  \"mesh\": %s,\n  \"originalFaces\": %d,\n  \"storedFaces\": %d,\n"
                 "  \"compression\": %.6f,\n  \"treeHeight\": %d,\n  \"unfoldedFaces\": %lld,\n"
+                "  \"originalVertices\": %lld,\n  \"unfoldedVertices\": %lld,\n"
+                "  \"removedProjectedPoints\": %d,\n"
                 "  \"diagonal\": %.9g,\n  \"rootEpsilon\": %.9g,\n"
                 "  \"rootEpsilonFraction\": %.9g,\n  \"hausdorff\": %.9g,\n"
                 "  \"hausdorffFraction\": %.9g,\n  \"meanDistanceFraction\": %.9g,\n"
@@ -628,6 +650,9 @@ int Roundtrip(int argc, char* argv[])
       compression,
       height,
       static_cast<long long>(unfolded->GetNumberOfCells()),
+      before.vertices,
+      after.vertices,
+      removedProjected,
       diagonal,
       epsilon,
       epsilon * scale,
@@ -652,6 +677,13 @@ int Roundtrip(int argc, char* argv[])
       stored,
       100.0 * compression,
       static_cast<long long>(unfolded->GetNumberOfCells()));
+    std::printf("vertices:                %lld original, %lld unfolded (%+.1f%%; %d projected "
+                "points removed%s)\n",
+      before.vertices,
+      after.vertices,
+      before.vertices > 0 ? 100.0 * (after.vertices - before.vertices) / before.vertices : 0.0,
+      removedProjected,
+      f.keepProjectedPoints ? ", --keep-projected-points" : "");
     std::printf("tree height:             %d\n", height);
     std::printf("hausdorff / diagonal:    %.6f max, %.6f mean (bound: root epsilon %.6f) %s\n",
       hausdorff * scale,

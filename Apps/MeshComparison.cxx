@@ -37,10 +37,13 @@ EdgeCounts CountEdges(vtkPolyData* mesh)
     return counts;
   vtkIdType n = 0;
   const vtkIdType* pts = nullptr;
+  std::vector<char> used(unique.size(), 0);
   for (polys->InitTraversal(); polys->GetNextCell(n, pts);)
     for (vtkIdType k = 0; k < n; ++k)
     {
       const vtkIdType a = id[pts[k]], b = id[pts[(k + 1) % n]];
+      counts.vertices += !used[a];
+      used[a] = 1;
       if (a != b)
       {
         auto it =

@@ -13,12 +13,14 @@ namespace foldingmeshes
 long long CountOpenEdges(vtkPolyData* mesh);
 
 /// Edge statistics (vertices at identical positions counted as one): edges of one polygon,
-/// of more than two, and of two that traverse the edge in the same direction.
+/// of more than two, and of two that traverse the edge in the same direction; and the
+/// vertices (distinct positions) the polygons use.
 struct EdgeCounts
 {
   long long open = 0;
   long long nonManifold = 0;
   long long misoriented = 0;
+  long long vertices = 0;
 };
 EdgeCounts CountEdges(vtkPolyData* mesh);
 

@@ -307,6 +307,7 @@ int vtkFoldingTreeUnfolder::RequestWholeData(vtkInformation*,
   options.smoothingIterations = this->SmoothingIterations;
   options.smoothingWeight = this->SmoothingWeight;
   options.respectErrorBudget = this->RespectErrorBudget;
+  options.removeProjectedPoints = this->RemoveProjectedPoints;
   options.weldBoundaries = this->WeldBoundaries;
   options.weldToleranceScale = this->WeldToleranceScale;
   options.closeHoles = this->CloseHoles;
@@ -467,6 +468,8 @@ int vtkFoldingTreeUnfolder::RequestWholeData(vtkInformation*,
   AddValue(fd, "UnfoldedPoints", static_cast<double>(np));
   AddValue(fd, "NumberOfCopies", static_cast<double>(mesh.copies.size()));
   AddValue(fd, "PlaneMergedVertices", mesh.planeMergedVertices);
+  AddValue(fd, "RemovedProjectedPoints", mesh.removedProjectedPoints);
+  AddValue(fd, "ProjectedPoints", mesh.projectedPoints);
   AddValue(fd, "StitchedVertices", mesh.stitchedVertices);
   AddValue(fd, "UnmatchedTearVertices", mesh.unmatchedTearVertices);
   AddValue(fd, "OpenGapCount", mesh.gapEdges);
@@ -513,6 +516,7 @@ void vtkFoldingTreeUnfolder::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "SmoothingIterations: " << this->SmoothingIterations << "\n";
   os << indent << "SmoothingWeight: " << this->SmoothingWeight << "\n";
   os << indent << "RespectErrorBudget: " << this->RespectErrorBudget << "\n";
+  os << indent << "RemoveProjectedPoints: " << this->RemoveProjectedPoints << "\n";
   os << indent << "WeldBoundaries: " << this->WeldBoundaries << "\n";
   os << indent << "WeldToleranceScale: " << this->WeldToleranceScale << "\n";
   os << indent << "CloseHoles: " << this->CloseHoles << "\n";

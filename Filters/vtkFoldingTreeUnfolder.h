@@ -24,6 +24,7 @@
  *   "FoldingFilled" (1: a triangle added to fill a seam gap; its ids and copy are those of a
  *   neighbouring face).
  * - field data: "UnfoldedFaces", "UnfoldedPoints", "NumberOfCopies", "PlaneMergedVertices",
+ *   "RemovedProjectedPoints" and "ProjectedPoints" (RemoveProjectedPoints: removed, left),
  *   "StitchedVertices", "UnmatchedTearVertices", "OpenGapCount" (boundary edges left between
  *   tear vertices by stitching, before the final repair), "OpenGapLength", "FilledFaces", "OpenEdges", "NonManifoldEdges",
  *   "MisorientedEdges" (edges whose two faces traverse them in the same direction),
@@ -133,6 +134,21 @@ public:
 
   ///@{
   /**
+   * After mirroring at a fold, remove the vertices the builder projected onto its plane
+   * (the leaves' "Projected" point array) and re-triangulate their 1-rings (default on): a
+   * face straddling the fold line then comes back as one face across it, as in the input,
+   * instead of two (itself with a vertex on the plane, and its mirror image). A vertex stays
+   * where the new faces would flip, repeat an edge, or move the surface by more than the
+   * point's error budget (UnfoldOptions::removeProjectedPoints). Reported in the field data
+   * ("RemovedProjectedPoints", and "ProjectedPoints": copies of projected points left).
+   */
+  vtkSetMacro(RemoveProjectedPoints, bool);
+  vtkGetMacro(RemoveProjectedPoints, bool);
+  vtkBooleanMacro(RemoveProjectedPoints, bool);
+  ///@}
+
+  ///@{
+  /**
    * Finally weld the open boundaries of different copies once more (default on): a vertex on
    * an open edge may merge with, or be zipped into, one of another copy within
    * WeldToleranceScale x the root tolerance (default 0.5, range 0..10). No gaps are filled.
@@ -210,6 +226,7 @@ protected:
   int SmoothingIterations = 3;
   double SmoothingWeight = 0.5;
   bool RespectErrorBudget = true;
+  bool RemoveProjectedPoints = true;
   bool WeldBoundaries = true;
   double WeldToleranceScale = 0.5;
   bool CloseHoles = true;

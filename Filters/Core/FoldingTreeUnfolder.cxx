@@ -85,6 +85,7 @@ Piece Unfolder::FromLeaf(int index)
     piece.border.assign(m.points.size(), 2);
   else
     piece.border = m.inputBoundary;
+  piece.projected = m.projected;
   piece.faceOrig = m.originalFaceIds;
   piece.faceCopy.assign(m.triangles.size(), id);
   piece.faceFilled.assign(m.triangles.size(), 0);
@@ -172,6 +173,7 @@ void Unfolder::Reflect(const FoldingNode& node, Piece& piece)
     piece.onPlane.push_back(0); // the copy's own fold-line flags come from `reflected`
     piece.budget.push_back(piece.budget[v]);
     piece.border.push_back(piece.border[v]);
+    piece.projected.push_back(piece.projected[v]);
   }
   const int nf = piece.NumberOfFaces();
   for (int f = 0; f < nf; ++f)
@@ -188,6 +190,8 @@ void Unfolder::Reflect(const FoldingNode& node, Piece& piece)
     piece.faceFilled.push_back(piece.faceFilled[f]);
   }
   Consume(piece, 2 * node.depth + 1);
+  if (this->Options.removeProjectedPoints)
+    this->Result.removedProjectedPoints += this->RemoveProjectedPoints(&node, piece, nullptr);
 }
 
 void Unfolder::CountTears(const FoldingNode& node, Piece& piece, SeamReport& seam)
@@ -261,6 +265,13 @@ bool UnfoldFoldingTree(const FoldingTree& tree,
   result.pointAdded.assign(piece.points.size(), 0);
   for (int v = pointsBeforeRepair; v < piece.NumberOfPoints(); ++v)
     result.pointAdded[v] = 1;
+  // Projected points whose rings were still open at their fold (fold-line cracks closed by
+  // the weld or the repair since, tear or fold-line flags of levels above).
+  if (!unfolder.Aborted && options.removeProjectedPoints)
+    result.removedProjectedPoints +=
+      unfolder.RemoveProjectedPoints(nullptr, piece, &result.pointAdded);
+  result.projectedPoints =
+    static_cast<int>(std::count(piece.projected.begin(), piece.projected.end(), char(1)));
   result.aborted = unfolder.Aborted;
   result.points = std::move(piece.points);
   result.triangles = std::move(piece.triangles);

@@ -46,6 +46,27 @@ struct UnfoldOptions
   /// only flags copies within its snap distance). 0 turns this off.
   double foldLineToleranceScale = 0.5;
   /**
+   * After the reflection at a folding node, remove the vertices the builder projected onto
+   * its plane (FoldingLeafMesh::projected, with the planeMask bit of the node's depth): the
+   * fold rule keeps a face straddling the plane with its far vertices projected onto it, so
+   * without this every such face comes back as two (itself and its mirror image) and every
+   * projected vertex is an extra vertex on the fold line. Each removed vertex's closed 1-ring
+   * is re-triangulated (ear clipping, shortest diagonal first), which gives back edges across
+   * the fold line as in the input. A vertex stays when it is not interior (its ring is not
+   * one closed loop), carries a tear or fold-line flag of a level above, lies on a plane of a
+   * fold above or on the input's border, or when the new faces would repeat an edge or a
+   * face, flip (the star must project one-to-one onto the plane perpendicular to its mean
+   * normal, every ear convex there and empty), be degenerate, or move the surface by more
+   * than the error budget left at the vertex and its ring (sampled: the vertex, the star's
+   * face centroids and spoke midpoints against the new faces, the new faces' centroids and
+   * diagonal midpoints against the star; the ring's budgets are charged what it moved). With
+   * the budget used up only stars planar within planeTolerance * diagonal qualify (the same
+   * polygon, triangulated differently); without budgets (respectErrorBudget off, older trees)
+   * the folding node's epsilon is the limit. Points are tried in index order (deterministic).
+   * See UnfoldedMesh::removedProjectedPoints.
+   */
+  bool removeProjectedPoints = true;
+  /**
    * Bound every vertex move (fold-line merges, stitching, zipper, smoothing, boundary weld)
    * by the leaf point's error budget (FoldingLeafMesh::errorBudget, written by the builder):
    * what the folds above left of the root epsilon there, so unfold(fold(M)) stays within it.
@@ -178,6 +199,11 @@ struct UnfoldedMesh
   // Report.
   int planeMergedVertices = 0;   ///< vertices shared by a copy and its mirror image (fold lines)
   int droppedMirrorFaces = 0;    ///< faces lying in a fold plane, not duplicated
+  /// Vertices projected onto a fold plane by the builder and removed again after the
+  /// reflection (UnfoldOptions::removeProjectedPoints), and the copies of projected points
+  /// left in the result (not removable, or the option off).
+  int removedProjectedPoints = 0;
+  int projectedPoints = 0;
   std::vector<SeamReport> seams; ///< one per segmentation node (postorder)
   /// The final boundary weld (weldBoundaries): tearVertices = vertices on open edges before.
   SeamReport weld;

@@ -225,6 +225,7 @@ void Unfolder::AddPoint(Piece& piece, const Vec3& x, int like)
   piece.onPlane.push_back(0);
   piece.budget.push_back(0.0);
   piece.border.push_back(0);
+  piece.projected.push_back(0);
 }
 
 void Unfolder::RemoveLastPoint(Piece& piece)
@@ -236,6 +237,7 @@ void Unfolder::RemoveLastPoint(Piece& piece)
   piece.onPlane.pop_back();
   piece.budget.pop_back();
   piece.border.pop_back();
+  piece.projected.pop_back();
 }
 
 /**

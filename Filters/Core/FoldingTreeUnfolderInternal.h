@@ -56,6 +56,9 @@ struct Piece
   std::vector<double> budget; ///< how far the point may still move (infinite: unknown)
   /// Copy of a point on the input's own border: 0 no, 1 yes, 2 unknown (older tree files).
   std::vector<char> border;
+  /// 1: a copy of a leaf point the builder projected onto a fold plane (FoldingLeafMesh::
+  /// projected); such points may be removed again (FoldingTreeUnfolderProjectedPoints.cxx).
+  std::vector<char> projected;
   std::vector<int> faceOrig;
   std::vector<int> faceCopy;
   std::vector<char> faceFilled;
@@ -73,6 +76,7 @@ struct Piece
     onPlane.push_back(from.onPlane[v]);
     budget.push_back(from.budget[v]);
     border.push_back(from.border[v]);
+    projected.push_back(from.projected[v]);
   }
 
   void Append(const Piece& o)
@@ -85,6 +89,7 @@ struct Piece
     onPlane.insert(onPlane.end(), o.onPlane.begin(), o.onPlane.end());
     budget.insert(budget.end(), o.budget.begin(), o.budget.end());
     border.insert(border.end(), o.border.begin(), o.border.end());
+    projected.insert(projected.end(), o.projected.begin(), o.projected.end());
     for (const Triangle& t : o.triangles)
       triangles.push_back({ t[0] + offset, t[1] + offset, t[2] + offset });
     faceOrig.insert(faceOrig.end(), o.faceOrig.begin(), o.faceOrig.end());
@@ -166,7 +171,8 @@ struct EdgeHash
 using EdgeSet = std::unordered_set<std::pair<int, int>, EdgeHash>;
 
 /// The postorder unfolding of a folding tree (see UnfoldFoldingTree). The traversal, the
-/// copies and the fold lines are in FoldingTreeUnfolder.cxx; the seam repair in
+/// copies and the fold lines are in FoldingTreeUnfolder.cxx (the removal of projected
+/// points in FoldingTreeUnfolderProjectedPoints.cxx); the seam repair in
 /// FoldingTreeUnfolderStitching.cxx (vertex pairing, clusters, smoothing, final weld) and
 /// FoldingTreeUnfolderSeamGaps.cxx (zipper, gap filling).
 class Unfolder
@@ -188,6 +194,26 @@ private:
   void Reflect(const FoldingNode& node, Piece& piece);
   void CountTears(const FoldingNode& node, Piece& piece, SeamReport& seam);
   static void Consume(Piece& piece, int code);
+
+  // FoldingTreeUnfolderProjectedPoints.cxx
+public:
+  /// Removes the projected points of `piece` (UnfoldOptions::removeProjectedPoints) that can
+  /// go: after the reflection at `node`, those on its plane; with node == nullptr (after the
+  /// traversal) any. `added` (optional, per point) is compacted with the points. Returns
+  /// the number removed.
+  int RemoveProjectedPoints(const FoldingNode* node, Piece& piece, std::vector<char>* added);
+
+private:
+  bool RetriangulateRing(const Piece& piece,
+    const std::vector<std::vector<int>>& facesOf,
+    const std::vector<char>& alive,
+    int v,
+    double limit,
+    std::vector<int>& ring,
+    std::vector<int>& ringFace,
+    std::vector<Triangle>& created,
+    double& moved,
+    const char*& why) const;
   static void CountGaps(const Piece& piece, const std::vector<char>& isTear, SeamReport& seam);
 
   // FoldingTreeUnfolderSeamGaps.cxx

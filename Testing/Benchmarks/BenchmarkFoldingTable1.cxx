@@ -2,17 +2,21 @@
 // compression, tree height, build time, unfold time, symmetric Hausdorff distance between
 // the input and unfold(fold(input)) as a fraction of the bounding-box diagonal (max, and the
 // mean over the vertices of both meshes), open, non-manifold and misoriented edges before/after
-// (nm, mis), and - for the Table 1 models, matched by file name - the paper's row. Default builder
-// and unfolder options (root epsilon 2% of the diagonal, keep the half with more faces, 5% area
-// stop). Not a test: numbers for humans and closing notes.
+// (nm, mis), vertices before/after (pts, distinct positions) and the change, the unfolded
+// faces and their change, the projected points the unfolder removed (rmvd) and the copies of
+// projected points left (proj), and - for the Table 1 models, matched by file name - the paper's
+// row. Default builder and unfolder options (root epsilon 2% of the diagonal, keep the half
+// with more faces, 5% area stop). Not a test: numbers for humans and closing notes.
 //
 //   BenchmarkFoldingTable1 [--threads N] [--keep fewer] [--tree] [--no-unfold]
-//                          [--no-close-holes] [--hole-tolerance F] MESH_OR_FOLDER...
+//                          [--no-close-holes] [--hole-tolerance F] [--keep-projected-points]
+//                          MESH_OR_FOLDER...
 //
 // --keep fewer: the builder keeps the half with fewer faces; --tree prints each tree's outline
 // (node kind, depth, faces, area share, symmetric area fraction, why a leaf stopped);
 // --no-unfold skips the unfolding columns; --no-close-holes: the unfolder without its final
-// repair; --hole-tolerance: its HoleToleranceScale.
+// repair; --hole-tolerance: its HoleToleranceScale; --keep-projected-points: the unfolder
+// keeps the vertices the builder projected onto fold planes (RemoveProjectedPoints off).
 #include "MeshComparison.h"
 #include "MeshIO.h"
 #include "vtkFoldingTreeBuilder.h"
@@ -81,12 +85,19 @@ double TreeValue(vtkMultiBlockDataSet* tree, const char* name)
   return a && a->GetNumberOfTuples() > 0 ? a->GetTuple1(0) : 0.0;
 }
 
+double FieldValue(vtkPolyData* mesh, const char* name)
+{
+  vtkDataArray* a = mesh->GetFieldData()->GetArray(name);
+  return a && a->GetNumberOfTuples() > 0 ? a->GetTuple1(0) : 0.0;
+}
+
 struct Settings
 {
   bool keepFewer = false;
   bool printTree = false;
   bool unfold = true;
   bool closeHoles = true;
+  bool removeProjectedPoints = true;
   double holeToleranceScale = -1.0; // < 0: the filter's default
 };
 
@@ -156,6 +167,7 @@ void Run(const std::string& path, vtkPolyData* mesh, const Settings& settings)
   vtkNew<vtkFoldingTreeUnfolder> unfolder;
   unfolder->SetInputData(tree);
   unfolder->SetCloseHoles(settings.closeHoles);
+  unfolder->SetRemoveProjectedPoints(settings.removeProjectedPoints);
   if (settings.holeToleranceScale >= 0.0)
     unfolder->SetHoleToleranceScale(settings.holeToleranceScale);
   const auto t1 = Clock::now();
@@ -182,7 +194,8 @@ void Run(const std::string& path, vtkPolyData* mesh, const Settings& settings)
   const foldingmeshes::EdgeCounts before = foldingmeshes::CountEdges(input);
   const foldingmeshes::EdgeCounts after = foldingmeshes::CountEdges(unfolded);
   std::printf(
-    "%-26s %7d %7d %6.1f%% %3d %7.3f %7.3f %7.4f%s %8.5f %6lld %6lld %4lld %4lld %4lld %4lld",
+    "%-26s %7d %7d %6.1f%% %3d %7.3f %7.3f %7.4f%s %8.5f %6lld %6lld %4lld %4lld %4lld %4lld "
+    "%6lld %6lld %+6.1f%% %7lld %+6.1f%% %5d %5d",
     stem.c_str(),
     static_cast<int>(TreeValue(tree, "OriginalFaces")),
     static_cast<int>(TreeValue(tree, "StoredFaces")),
@@ -198,7 +211,15 @@ void Run(const std::string& path, vtkPolyData* mesh, const Settings& settings)
     before.nonManifold,
     after.nonManifold,
     before.misoriented,
-    after.misoriented);
+    after.misoriented,
+    before.vertices,
+    after.vertices,
+    before.vertices > 0 ? 100.0 * (after.vertices - before.vertices) / before.vertices : 0.0,
+    static_cast<long long>(unfolded->GetNumberOfCells()),
+    100.0 * (unfolded->GetNumberOfCells() - input->GetNumberOfCells()) /
+      std::max<vtkIdType>(1, input->GetNumberOfCells()),
+    static_cast<int>(FieldValue(unfolded, "RemovedProjectedPoints")),
+    static_cast<int>(FieldValue(unfolded, "ProjectedPoints")));
   if (const PaperRow* row = FindPaperRow(stem))
     std::printf("  | %-11s %6d %6d %5.1f%% %3d %5.0f",
       row->model,
@@ -223,6 +244,8 @@ int main(int argc, char* argv[])
     const std::string arg = argv[i];
     if (arg == "--no-close-holes")
       settings.closeHoles = false;
+    else if (arg == "--keep-projected-points")
+      settings.removeProjectedPoints = false;
     else if (arg == "--hole-tolerance" && i + 1 < argc)
       settings.holeToleranceScale = std::atof(argv[++i]);
     else if (arg == "--threads" && i + 1 < argc)
@@ -256,7 +279,8 @@ int main(int argc, char* argv[])
     vtkSMPTools::GetBackend(),
     vtkSMPTools::GetEstimatedNumberOfThreads());
   std::printf(
-    "%-26s %7s %7s %7s %3s %7s %7s %8s %8s %6s %6s %4s %4s %4s %4s  | %-11s %6s %6s %6s %3s %5s\n",
+    "%-26s %7s %7s %7s %3s %7s %7s %8s %8s %6s %6s %4s %4s %4s %4s %6s %6s %7s %7s %7s %5s %5s  | "
+    "%-11s %6s %6s %6s %3s %5s\n",
     "mesh",
     "faces",
     "stored",
@@ -272,6 +296,13 @@ int main(int argc, char* argv[])
     "nm>",
     "mis<",
     "mis>",
+    "pts<",
+    "pts>",
+    "pts+",
+    "faces>",
+    "faces+",
+    "rmvd",
+    "proj",
     "paper",
     "faces",
     "stored",

@@ -19,7 +19,11 @@
 //   reported loop (OpenLoopEdges +
 //   BorderEdges); an M with a border (teapot, queen) keeps it: at least as many border loops
 //   as M has, at least 90% of its length (never filled); with CloseHoles off the closed inputs
-//   have more open edges (the repair is what closes them), with it the Hausdorff bound holds.
+//   have more open edges (the repair is what closes them), with it the Hausdorff bound holds;
+// - vertex count (RemoveProjectedPoints, default on): the real meshes come back with at most
+//   6.5% (anchor, dino, teapot), 15% (wingnut, triceratops) or 28% (bearing, queen, hammer:
+//   differently tessellated halves) more points than M; all but dino exceed that with the
+//   projected points kept.
 //
 //   TestUnfoldingAccuracy [MESH...]
 #include "MeshIO.h"
@@ -259,7 +263,8 @@ vtkSmartPointer<vtkPolyData> RoundTrip(const std::string& name,
   vtkPolyData* mesh,
   bool exact,
   double* seconds = nullptr,
-  bool closesCompletely = false)
+  bool closesCompletely = false,
+  double maximumPointExcess = -1.0)
 {
   const auto start = std::chrono::steady_clock::now();
   vtkNew<vtkFoldingTreeBuilder> builder;
@@ -312,6 +317,13 @@ vtkSmartPointer<vtkPolyData> RoundTrip(const std::string& name,
     name << ": " << density << " points per face, M " << inputDensity);
   if (exact)
     EXPECT(points == welded, name << ": exact case, " << points << " points, M " << welded);
+  // Vertex count (RemoveProjectedPoints): the vertices the builder projected onto fold
+  // planes are removed again, so what is left above M's count comes from approximate folds
+  // whose halves are tessellated differently (the denser half is doubled).
+  if (maximumPointExcess >= 0.0)
+    EXPECT(points <= (1.0 + maximumPointExcess) * welded,
+      name << ": " << points << " points, M " << welded << " (more than +"
+           << 100.0 * maximumPointExcess << "%)");
   EXPECT(edges.open <= input.open + 0.05 * edges.edges,
     name << ": " << edges.open << " open edges of " << edges.edges);
   if (exact)
@@ -466,8 +478,17 @@ int main(int argc, char* argv[])
     if (!mesh)
       continue;
     double seconds = 0.0;
-    // The shared real meshes: closed inputs come back closed (measured on all 29).
-    RoundTrip(std::filesystem::path(argv[i]).stem().string(), mesh, false, &seconds, true);
+    // The shared real meshes: closed inputs come back closed (measured on all 29). Vertex
+    // count (measured with the projected points removed / kept): anchor +5.6% / +32%, dino
+    // +2.1% / +5.6%, teapot +2.1% / +10%; wingnut +7.1% / +23%, triceratops +11% / +21%;
+    // bearing +25% / +45%, queen +18% / +52%, hammer_dec4360 +22% / +41% (the last ones
+    // have differently tessellated halves: the denser half is doubled).
+    const std::string stem = std::filesystem::path(argv[i]).stem().string();
+    const double excess = stem == "anchor_cgal" || stem == "dino_cgal" || stem == "teapot_newell"
+      ? 0.065
+      : stem == "wingnut_oded" || stem == "triceratops_cgal" ? 0.15
+                                                             : 0.28;
+    RoundTrip(stem, mesh, false, &seconds, true, excess);
     std::printf("  (%.1f s)\n", seconds);
   }
   if (Failures > 0)
