@@ -99,32 +99,29 @@ struct Piece
 };
 
 /**
- * Ear clipping of the polygon `poly` (indices into `points`) by the shortest new diagonal:
- * cuts off, again and again, the ear (a, b, c) whose diagonal a-c is the shortest that
- * allowed(a, c) accepts, calling cut(a, b, c) (which records the triangle and makes a-c
- * unavailable), until a triangle is left in poly (true) or no ear is allowed (false; poly
- * keeps what is left).
+ * Ear clipping of the polygon `poly` (indices into `points`) by the lowest cost: cuts off,
+ * again and again, the ear (a, b, c) with the lowest cost(a, b, c) among those whose diagonal
+ * a-c allowed(a, c) accepts (the first in polygon order on a tie), calling cut(a, b, c)
+ * (which records the triangle and makes a-c unavailable), until a triangle is left in poly
+ * (true) or no ear is allowed (false; poly keeps what is left).
  */
-template <typename Allowed, typename Cut>
-bool ClipShortestEars(const std::vector<Vec3>& points,
-  std::vector<int>& poly,
-  Allowed allowed,
-  Cut cut)
+template <typename Allowed, typename Cost, typename Cut>
+bool ClipCheapestEars(std::vector<int>& poly, Allowed allowed, Cost cost, Cut cut)
 {
   while (poly.size() > 3)
   {
     const int m = static_cast<int>(poly.size());
     int best = -1;
-    double bestLength = std::numeric_limits<double>::infinity();
+    double bestCost = std::numeric_limits<double>::infinity();
     for (int i = 0; i < m; ++i)
     {
-      const int a = poly[i], c = poly[(i + 2) % m];
+      const int a = poly[i], b = poly[(i + 1) % m], c = poly[(i + 2) % m];
       if (!allowed(a, c))
         continue;
-      const double length = (points[a] - points[c]).norm();
-      if (length < bestLength)
+      const double value = cost(a, b, c);
+      if (value < bestCost)
       {
-        bestLength = length;
+        bestCost = value;
         best = i;
       }
     }
@@ -134,6 +131,17 @@ bool ClipShortestEars(const std::vector<Vec3>& points,
     poly.erase(poly.begin() + (best + 1) % m);
   }
   return poly.size() == 3;
+}
+
+/// ClipCheapestEars with the length of the new diagonal as the cost.
+template <typename Allowed, typename Cut>
+bool ClipShortestEars(const std::vector<Vec3>& points,
+  std::vector<int>& poly,
+  Allowed allowed,
+  Cut cut)
+{
+  return ClipCheapestEars(
+    poly, allowed, [&](int a, int, int c) { return (points[a] - points[c]).norm(); }, cut);
 }
 
 inline int FindRoot(std::vector<int>& parent, int a)

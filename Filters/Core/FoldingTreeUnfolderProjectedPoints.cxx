@@ -183,7 +183,20 @@ bool Unfolder::RetriangulateRing(const Piece& piece,
     created.push_back({ a, b, c });
     diagonals.insert({ std::min(a, c), std::max(a, c) });
   };
-  if (!ClipShortestEars(x, poly, allowed, cut))
+  // The ear that departs least from the old star first (sampled at its centroid and the
+  // midpoint of its new diagonal), the shorter diagonal on (near) ties: on a crease, the
+  // diagonals follow the crease instead of cutting across it.
+  std::vector<Triangle> old;
+  for (int f : star)
+    old.push_back(piece.triangles[f]);
+  const double lengthWeight = 1e-3;
+  auto deviation = [&](int a, int b, int c)
+  {
+    return std::max(DistanceToTriangles((x[a] + x[b] + x[c]) / 3.0, x, old),
+             DistanceToTriangles(0.5 * (x[a] + x[c]), x, old)) +
+      lengthWeight * (x[a] - x[c]).norm();
+  };
+  if (!ClipCheapestEars(poly, allowed, deviation, cut))
     return false;
   if (Orientation(flat[poly[0]], flat[poly[1]], flat[poly[2]]) <= 0.0 ||
     !regular(poly[0], poly[1], poly[2]))
@@ -205,9 +218,6 @@ bool Unfolder::RetriangulateRing(const Piece& piece,
   // Deviation between the old star and the new faces, sampled: v, the star's face
   // centroids and spoke midpoints against the new faces; the new faces' centroids and
   // diagonal midpoints against the star (the ring edges belong to both).
-  std::vector<Triangle> old;
-  for (int f : star)
-    old.push_back(piece.triangles[f]);
   moved = DistanceToTriangles(x[v], x, created);
   for (int i = 0; i < m && moved <= limit; ++i)
   {
