@@ -7,12 +7,14 @@
 // stop). Not a test: numbers for humans and closing notes.
 //
 //   BenchmarkFoldingTable1 [--threads N] [--keep fewer] [--tree] [--no-unfold]
-//                          [--no-close-holes] [--hole-tolerance F] MESH_OR_FOLDER...
+//                          [--no-close-holes] [--hole-tolerance F] [--tolerance F]
+//                          MESH_OR_FOLDER...
 //
 // --keep fewer: the builder keeps the half with fewer faces; --tree prints each tree's outline
 // (node kind, depth, faces, area share, symmetric area fraction, why a leaf stopped);
 // --no-unfold skips the unfolding columns; --no-close-holes: the unfolder without its final
-// repair; --hole-tolerance: its HoleToleranceScale.
+// repair; --hole-tolerance: its HoleToleranceScale; --tolerance: the root epsilon as a
+// fraction of the diagonal (the builder's Tolerance, default 0.02).
 #include "MeshComparison.h"
 #include "MeshIO.h"
 #include "vtkFoldingTreeBuilder.h"
@@ -88,6 +90,7 @@ struct Settings
   bool unfold = true;
   bool closeHoles = true;
   double holeToleranceScale = -1.0; // < 0: the filter's default
+  double tolerance = -1.0;          // root epsilon / diagonal; < 0: the builder's default
 };
 
 void PrintOutline(vtkMultiBlockDataSet* blocks)
@@ -129,6 +132,8 @@ void Run(const std::string& path, vtkPolyData* mesh, const Settings& settings)
   builder->SetInputData(mesh);
   if (settings.keepFewer)
     builder->SetKeepSide(vtkFoldingTreeBuilder::FEWER_FACES);
+  if (settings.tolerance >= 0.0)
+    builder->SetTolerance(settings.tolerance);
   const auto t0 = Clock::now();
   builder->Update();
   const double build = std::chrono::duration<double>(Clock::now() - t0).count();
@@ -225,6 +230,8 @@ int main(int argc, char* argv[])
       settings.closeHoles = false;
     else if (arg == "--hole-tolerance" && i + 1 < argc)
       settings.holeToleranceScale = std::atof(argv[++i]);
+    else if (arg == "--tolerance" && i + 1 < argc)
+      settings.tolerance = std::atof(argv[++i]);
     else if (arg == "--threads" && i + 1 < argc)
     {
       vtkSMPTools::SetBackend("STDThread");
@@ -251,10 +258,11 @@ int main(int argc, char* argv[])
     else
       meshes.push_back(arg);
   }
-  std::printf("SMP backend %s, %d threads; root epsilon 2%% of the diagonal ('!' after the "
+  std::printf("SMP backend %s, %d threads; root epsilon %g%% of the diagonal ('!' after the "
               "Hausdorff distance: above it)\n",
     vtkSMPTools::GetBackend(),
-    vtkSMPTools::GetEstimatedNumberOfThreads());
+    vtkSMPTools::GetEstimatedNumberOfThreads(),
+    100.0 * (settings.tolerance >= 0.0 ? settings.tolerance : 0.02));
   std::printf(
     "%-26s %7s %7s %7s %3s %7s %7s %8s %8s %6s %6s %4s %4s %4s %4s  | %-11s %6s %6s %6s %3s %5s\n",
     "mesh",
