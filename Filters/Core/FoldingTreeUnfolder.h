@@ -26,7 +26,9 @@ struct UnfoldOptions
   /// closes seams whose two sides are tessellated differently.
   bool zipper = true;
   /// Then fill the small boundary loops left between two children along the seam (saw-tooth
-  /// gaps of approximately symmetric folds) by ear clipping; see SeamReport::filledFaces.
+  /// gaps of approximately symmetric folds) by ear clipping, when the fill stays within the
+  /// stitching tolerance of the loop (the final repair's test, FillWithinTolerance: a narrow
+  /// crack, or small and flat); see SeamReport::filledFaces.
   bool fillSeamGaps = true;
   /// Constrained Laplacian smoothing of the seam after stitching: only the merged vertices
   /// whose cluster spread exceeds exactStitchFraction * epsilon move (exactly coincident

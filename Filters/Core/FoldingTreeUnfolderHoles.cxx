@@ -248,26 +248,26 @@ void Unfolder::RemoveLastPoint(Piece& piece)
  * than four times the tolerance or 2.5 mean loop edges (a missing face or two, on a coarse
  * mesh, re-tessellated like its neighbours; flat, so not across a crease).
  */
-bool Unfolder::FillWithinTolerance(const Piece& piece,
+bool FillWithinTolerance(const std::vector<Vec3>& points,
   const std::vector<int>& loop,
-  const std::vector<Triangle>& fill) const
+  const std::vector<Triangle>& fill,
+  double tolerance)
 {
-  const double tolerance = this->Options.holeToleranceScale * this->Tree.rootEpsilon;
   const int n = static_cast<int>(loop.size());
   bool narrow = true;
   for (size_t f = 0; f < fill.size() && narrow; ++f)
   {
     const Triangle& t = fill[f];
-    const Vec3 c = (piece.points[t[0]] + piece.points[t[1]] + piece.points[t[2]]) / 3.0;
+    const Vec3 c = (points[t[0]] + points[t[1]] + points[t[2]]) / 3.0;
     const Vec3 probes[4] = { c,
-      0.5 * (piece.points[t[0]] + piece.points[t[1]]),
-      0.5 * (piece.points[t[1]] + piece.points[t[2]]),
-      0.5 * (piece.points[t[2]] + piece.points[t[0]]) };
+      0.5 * (points[t[0]] + points[t[1]]),
+      0.5 * (points[t[1]] + points[t[2]]),
+      0.5 * (points[t[2]] + points[t[0]]) };
     for (const Vec3& x : probes)
     {
       double d = std::numeric_limits<double>::infinity();
       for (int i = 0; i < n && d > tolerance; ++i)
-        d = std::min(d, SegmentDistance(x, piece.points[loop[i]], piece.points[loop[(i + 1) % n]]));
+        d = std::min(d, SegmentDistance(x, points[loop[i]], points[loop[(i + 1) % n]]));
       narrow = narrow && d <= tolerance;
     }
   }
@@ -275,28 +275,36 @@ bool Unfolder::FillWithinTolerance(const Piece& piece,
     return true;
   Vec3 mean = Vec3::Zero();
   for (int v : loop)
-    mean += piece.points[v];
+    mean += points[v];
   mean /= n;
   Eigen::Matrix3d cov = Eigen::Matrix3d::Zero();
   double diameter = 0.0;
   for (int i = 0; i < n; ++i)
   {
-    const Vec3 d = piece.points[loop[i]] - mean;
+    const Vec3 d = points[loop[i]] - mean;
     cov += d * d.transpose();
     for (int j = i + 1; j < n; ++j)
-      diameter = std::max(diameter, (piece.points[loop[i]] - piece.points[loop[j]]).norm());
+      diameter = std::max(diameter, (points[loop[i]] - points[loop[j]]).norm());
   }
   double perimeter = 0.0;
   for (int i = 0; i < n; ++i)
-    perimeter += (piece.points[loop[i]] - piece.points[loop[(i + 1) % n]]).norm();
+    perimeter += (points[loop[i]] - points[loop[(i + 1) % n]]).norm();
   if (diameter > std::max(4.0 * tolerance, 2.5 * perimeter / n))
     return false;
   const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(cov);
   const Vec3 normal = eig.eigenvectors().col(0);
   for (int v : loop)
-    if (std::abs((piece.points[v] - mean).dot(normal)) > 0.5 * tolerance)
+    if (std::abs((points[v] - mean).dot(normal)) > 0.5 * tolerance)
       return false;
   return true;
+}
+
+bool Unfolder::FillWithinTolerance(const Piece& piece,
+  const std::vector<int>& loop,
+  const std::vector<Triangle>& fill) const
+{
+  return unfolder_detail::FillWithinTolerance(
+    piece.points, loop, fill, this->Options.holeToleranceScale * this->Tree.rootEpsilon);
 }
 
 /**

@@ -144,6 +144,17 @@ bool ClipShortestEars(const std::vector<Vec3>& points,
     poly, allowed, [&](int a, int, int c) { return (points[a] - points[c]).norm(); }, cut);
 }
 
+/**
+ * Whether the fill of a boundary loop (triangles over the loop's vertices, or a fan around a
+ * new point) stays within `tolerance` of the surface (FoldingTreeUnfolderHoles.cxx): every
+ * new face's centroid and edge midpoints within it of the loop's edges (a narrow crack), or
+ * the loop small and flat (see there).
+ */
+bool FillWithinTolerance(const std::vector<Vec3>& points,
+  const std::vector<int>& loop,
+  const std::vector<Triangle>& fill,
+  double tolerance);
+
 inline int FindRoot(std::vector<int>& parent, int a)
 {
   while (parent[a] != a)

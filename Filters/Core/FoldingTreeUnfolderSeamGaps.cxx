@@ -156,8 +156,10 @@ int Unfolder::Zip(Piece& out,
  * filled when it has 3..maximumGapLoop vertices, touches two children, at least half of its
  * vertices are tear vertices of this level, and every vertex has a vertex of another child
  * on the loop within 2 * max(tol, mean loop edge): loops that include an ancestor's open
- * fold line or the input's own border fail that test and stay open. New triangles take the
- * attributes of the face across their first loop edge.
+ * fold line or the input's own border fail that test and stay open; so does a loop whose
+ * fill would not stay within `tol` of it (FillWithinTolerance: a narrow crack, or small and
+ * flat), which bounds the fill by the seam's tolerance. New triangles take the attributes of
+ * the face across their first loop edge.
  */
 void Unfolder::FillSeamGaps(Piece& out,
   std::vector<int>& faceChild,
@@ -300,6 +302,15 @@ void Unfolder::FillSeamGaps(Piece& out,
     added.push_back({ poly[0], poly[1], poly[2] });
     addedFace.push_back(
       halfEdges.count({ poly[1], poly[0] }) ? halfEdges[{ poly[1], poly[0] }] : -1);
+    if (!unfolder_detail::FillWithinTolerance(out.points, loop, added, tol))
+    {
+      // Not a narrow crack (nor small and flat): a flat fill may leave the surface by more
+      // than the tolerance (a missing patch of a curved surface). Left to the final repair,
+      // which tests it the same way against the root epsilon.
+      for (size_t k = 0; k + 1 < added.size(); ++k)
+        --uses[{ std::min(added[k][0], added[k][2]), std::max(added[k][0], added[k][2]) }];
+      continue;
+    }
     for (size_t k = 0; k < added.size(); ++k)
     {
       int from = addedFace[k];

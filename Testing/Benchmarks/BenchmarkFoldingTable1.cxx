@@ -10,13 +10,15 @@
 //
 //   BenchmarkFoldingTable1 [--threads N] [--keep fewer] [--tree] [--no-unfold]
 //                          [--no-close-holes] [--hole-tolerance F] [--keep-projected-points]
-//                          MESH_OR_FOLDER...
+//                          [--tolerance F] MESH_OR_FOLDER...
 //
 // --keep fewer: the builder keeps the half with fewer faces; --tree prints each tree's outline
 // (node kind, depth, faces, area share, symmetric area fraction, why a leaf stopped);
 // --no-unfold skips the unfolding columns; --no-close-holes: the unfolder without its final
 // repair; --hole-tolerance: its HoleToleranceScale; --keep-projected-points: the unfolder
-// keeps the vertices the builder projected onto fold planes (RemoveProjectedPoints off).
+// keeps the vertices the builder projected onto fold planes (RemoveProjectedPoints off);
+// --tolerance: the root epsilon as a fraction of the diagonal (the builder's Tolerance,
+// default 0.02).
 #include "MeshComparison.h"
 #include "MeshIO.h"
 #include "vtkFoldingTreeBuilder.h"
@@ -99,6 +101,7 @@ struct Settings
   bool closeHoles = true;
   bool removeProjectedPoints = true;
   double holeToleranceScale = -1.0; // < 0: the filter's default
+  double tolerance = -1.0;          // root epsilon / diagonal; < 0: the builder's default
 };
 
 void PrintOutline(vtkMultiBlockDataSet* blocks)
@@ -140,6 +143,8 @@ void Run(const std::string& path, vtkPolyData* mesh, const Settings& settings)
   builder->SetInputData(mesh);
   if (settings.keepFewer)
     builder->SetKeepSide(vtkFoldingTreeBuilder::FEWER_FACES);
+  if (settings.tolerance >= 0.0)
+    builder->SetTolerance(settings.tolerance);
   const auto t0 = Clock::now();
   builder->Update();
   const double build = std::chrono::duration<double>(Clock::now() - t0).count();
@@ -248,6 +253,8 @@ int main(int argc, char* argv[])
       settings.removeProjectedPoints = false;
     else if (arg == "--hole-tolerance" && i + 1 < argc)
       settings.holeToleranceScale = std::atof(argv[++i]);
+    else if (arg == "--tolerance" && i + 1 < argc)
+      settings.tolerance = std::atof(argv[++i]);
     else if (arg == "--threads" && i + 1 < argc)
     {
       vtkSMPTools::SetBackend("STDThread");
@@ -274,10 +281,11 @@ int main(int argc, char* argv[])
     else
       meshes.push_back(arg);
   }
-  std::printf("SMP backend %s, %d threads; root epsilon 2%% of the diagonal ('!' after the "
+  std::printf("SMP backend %s, %d threads; root epsilon %g%% of the diagonal ('!' after the "
               "Hausdorff distance: above it)\n",
     vtkSMPTools::GetBackend(),
-    vtkSMPTools::GetEstimatedNumberOfThreads());
+    vtkSMPTools::GetEstimatedNumberOfThreads(),
+    100.0 * (settings.tolerance >= 0.0 ? settings.tolerance : 0.02));
   std::printf(
     "%-26s %7s %7s %7s %3s %7s %7s %8s %8s %6s %6s %4s %4s %4s %4s %6s %6s %7s %7s %7s %5s %5s  | "
     "%-11s %6s %6s %6s %3s %5s\n",

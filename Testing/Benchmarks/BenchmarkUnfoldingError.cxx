@@ -4,7 +4,11 @@
 // union, fold-line slab merge, stitching, zipper, gap filling, smoothing), with open edges.
 // Not a test: numbers to find which step breaks the error bound.
 //
-//   BenchmarkUnfoldingError [--tolerance F] MESH...   (F: root epsilon / diagonal, default 0.02)
+//   BenchmarkUnfoldingError [--tolerance F] [--explain] MESH...
+//
+// F: root epsilon / diagonal, default 0.02. --explain: only where the default unfolding
+// exceeds epsilon (the worst samples each way, the fill patch around the worst, the distance
+// measured on 28 samples per face instead of vertices and centroids).
 #include "Core/FoldingTreeUnfolder.h"
 #include "Core/SurfaceDistance.h"
 #include "MeshIO.h"
@@ -28,6 +32,14 @@ using namespace foldingmeshes;
 
 namespace
 {
+double SegmentDistance(const Vec3& x, const Vec3& a, const Vec3& b)
+{
+  const Vec3 ab = b - a;
+  const double len2 = ab.squaredNorm();
+  const double t = len2 > 0.0 ? std::clamp((x - a).dot(ab) / len2, 0.0, 1.0) : 0.0;
+  return (x - (a + t * ab)).norm();
+}
+
 void Report(const char* label,
   const FoldingTree& tree,
   const TriangleMesh& original,
@@ -157,16 +169,221 @@ void Report(const char* label,
     local >= 0 ? int(leaf.projected[local]) : -1,
     leafDistance);
 }
+/// Where the distance exceeds epsilon: per side, the samples above it (vertices and
+/// centroids, filled faces apart), the worst one, the patch of filled faces around it (its
+/// faces, border edges, how far its points are from M), and a denser measure (6 x 6
+/// barycentric samples per face) to see what vertices + centroids miss.
+void Explain(const char* label,
+  const FoldingTree& tree,
+  const TriangleMesh& original,
+  const UnfoldOptions& options)
+{
+  UnfoldedMesh m;
+  std::string error;
+  if (!UnfoldFoldingTree(tree, options, m, error))
+    return;
+  TriangleMesh u;
+  u.points = m.points;
+  u.triangles = m.triangles;
+  const double eps = tree.rootEpsilon, diag = tree.diagonal;
+  const SurfaceDistanceQuery toM(original), toU(u);
+  auto centroid = [](const TriangleMesh& s, int f)
+  {
+    const Triangle& t = s.triangles[f];
+    return Vec3((s.points[t[0]] + s.points[t[1]] + s.points[t[2]]) / 3.0);
+  };
+  // Unfolded -> M.
+  const std::vector<double> dv = toM.Distances(u.points);
+  std::vector<Vec3> cu;
+  for (int f = 0; f < m.NumberOfFaces(); ++f)
+    cu.push_back(centroid(u, f));
+  const std::vector<double> dc = toM.Distances(cu);
+  int overFilled = 0, overReal = 0, overVertex = 0, overAdded = 0, worstFace = -1;
+  double worst = 0.0;
+  for (int f = 0; f < m.NumberOfFaces(); ++f)
+  {
+    if (dc[f] > eps)
+      ++(m.faceFilled[f] ? overFilled : overReal);
+    if (dc[f] > worst)
+    {
+      worst = dc[f];
+      worstFace = f;
+    }
+    for (int k = 0; k < 3; ++k)
+      if (dv[u.triangles[f][k]] > worst)
+      {
+        worst = dv[u.triangles[f][k]];
+        worstFace = f;
+      }
+  }
+  for (int v = 0; v < m.NumberOfPoints(); ++v)
+    if (dv[v] > eps)
+      ++(m.pointAdded[v] ? overAdded : overVertex);
+  std::printf("  %-10s u->M %.4f: above eps: centroids of fills %d, of copied faces %d, "
+              "vertices %d (added %d)\n",
+    label,
+    worst / diag,
+    overFilled,
+    overReal,
+    overVertex,
+    overAdded);
+  if (worstFace >= 0 && m.faceFilled[worstFace])
+  {
+    // The patch of filled faces connected (by edges) to the worst one.
+    std::map<std::pair<int, int>, std::vector<int>> edgeFaces;
+    for (int f = 0; f < m.NumberOfFaces(); ++f)
+      for (int k = 0; k < 3; ++k)
+      {
+        const int a = u.triangles[f][k], b = u.triangles[f][(k + 1) % 3];
+        edgeFaces[{ std::min(a, b), std::max(a, b) }].push_back(f);
+      }
+    std::vector<int> patch{ worstFace }, stack{ worstFace };
+    std::vector<char> in(m.NumberOfFaces(), 0);
+    in[worstFace] = 1;
+    while (!stack.empty())
+    {
+      const int f = stack.back();
+      stack.pop_back();
+      for (int k = 0; k < 3; ++k)
+      {
+        const int a = u.triangles[f][k], b = u.triangles[f][(k + 1) % 3];
+        for (int g : edgeFaces[{ std::min(a, b), std::max(a, b) }])
+          if (!in[g] && m.faceFilled[g])
+          {
+            in[g] = 1;
+            patch.push_back(g);
+            stack.push_back(g);
+          }
+      }
+    }
+    std::map<std::pair<int, int>, int> uses;
+    double loopLength = 0.0, loopWorst = 0.0, patchWorst = 0.0;
+    int added = 0;
+    for (int f : patch)
+    {
+      patchWorst = std::max(patchWorst, dc[f]);
+      for (int k = 0; k < 3; ++k)
+      {
+        const int a = u.triangles[f][k], b = u.triangles[f][(k + 1) % 3];
+        ++uses[{ std::min(a, b), std::max(a, b) }];
+        added += m.pointAdded[a];
+      }
+    }
+    int loopEdges = 0;
+    for (const auto& e : uses)
+      if (e.second == 1)
+      {
+        ++loopEdges;
+        loopLength += (u.points[e.first.first] - u.points[e.first.second]).norm();
+        loopWorst = std::max({ loopWorst, dv[e.first.first], dv[e.first.second] });
+      }
+    // Each fill face: centroid distance to M and to the patch's loop edges; each loop edge:
+    // its end points' and midpoint's distances to M, its length.
+    std::vector<std::pair<int, int>> loop;
+    for (const auto& e : uses)
+      if (e.second == 1)
+        loop.push_back(e.first);
+    for (int f : patch)
+    {
+      double toLoop = 1e300;
+      for (const auto& e : loop)
+        toLoop = std::min(toLoop, SegmentDistance(cu[f], u.points[e.first], u.points[e.second]));
+      std::printf("  %-10s     fill face %d: centroid %.4f from M, %.4f from the loop\n",
+        label, f, dc[f] / diag, toLoop / diag);
+    }
+    for (const auto& e : loop)
+      std::printf("  %-10s     loop edge %d-%d: length %.4f, ends %.4f %.4f, middle %.4f "
+                  "from M\n",
+        label, e.first, e.second,
+        (u.points[e.first] - u.points[e.second]).norm() / diag, dv[e.first] / diag,
+        dv[e.second] / diag,
+        toM.Distance(0.5 * (u.points[e.first] + u.points[e.second])) / diag);
+    const Vec3 c = cu[worstFace];
+    std::printf("  %-10s   worst is a fill: patch of %zu faces, %d loop edges (length %.4f "
+                "diag), loop vertices up to %.4f from M, fill centroids up to %.4f, "
+                "added-point corners %d, at (%.4g %.4g %.4g)\n",
+      label,
+      patch.size(),
+      loopEdges,
+      loopLength / diag,
+      loopWorst / diag,
+      patchWorst / diag,
+      added,
+      c.x(),
+      c.y(),
+      c.z());
+  }
+  // M -> unfolded.
+  const std::vector<double> mv = toU.Distances(original.points);
+  std::vector<Vec3> cm;
+  for (int f = 0; f < static_cast<int>(original.triangles.size()); ++f)
+    cm.push_back(centroid(original, f));
+  const std::vector<double> mc = toU.Distances(cm);
+  int overM = 0, worstM = -1;
+  double worstMDistance = 0.0;
+  for (int f = 0; f < static_cast<int>(original.triangles.size()); ++f)
+  {
+    double d = mc[f];
+    for (int v : original.triangles[f])
+      d = std::max(d, mv[v]);
+    overM += d > eps;
+    if (d > worstMDistance)
+    {
+      worstMDistance = d;
+      worstM = f;
+    }
+  }
+  if (worstM >= 0)
+  {
+    const Vec3 c = cm[worstM];
+    std::printf("  %-10s M->u %.4f: %d faces of M with a sample above eps; worst face %d at "
+                "(%.4g %.4g %.4g)\n",
+      label,
+      worstMDistance / diag,
+      overM,
+      worstM,
+      c.x(),
+      c.y(),
+      c.z());
+  }
+  // Denser samples: 6 x 6 barycentric grid per face, both ways.
+  auto dense = [](const TriangleMesh& s)
+  {
+    std::vector<Vec3> x;
+    constexpr int k = 6;
+    for (const Triangle& t : s.triangles)
+      for (int i = 0; i <= k; ++i)
+        for (int j = 0; i + j <= k; ++j)
+          x.push_back(((k - i - j) * s.points[t[0]] + i * s.points[t[1]] + j * s.points[t[2]]) /
+            double(k));
+    return x;
+  };
+  double du = 0.0, dm = 0.0;
+  for (double d : toM.Distances(dense(u)))
+    du = std::max(du, d);
+  for (double d : toU.Distances(dense(original)))
+    dm = std::max(dm, d);
+  std::printf("  %-10s dense (28 samples per face): u->M %.4f M->u %.4f\n",
+    label,
+    du / diag,
+    dm / diag);
+}
 }
 
 int main(int argc, char* argv[])
 {
   double tolerance = 0.02;
+  bool explainOnly = false;
   for (int i = 1; i < argc; ++i)
   {
     if (std::string(argv[i]) == "--tolerance" && i + 1 < argc)
     {
       tolerance = std::atof(argv[++i]);
+      continue;
+    }
+    if (std::string(argv[i]) == "--explain")
+    {
+      explainOnly = true;
       continue;
     }
     std::string error;
@@ -192,6 +409,12 @@ int main(int argc, char* argv[])
       tree.rootEpsilon / tree.diagonal,
       tree.NumberOfNodes(),
       static_cast<int>(original.points.size()));
+    if (explainOnly)
+    {
+      Explain("default", tree, original, UnfoldOptions());
+      std::fflush(stdout);
+      continue;
+    }
     // Leaf points.
     const SurfaceDistanceQuery toOriginal(original);
     double worst[3] = { 0, 0, 0 };
@@ -232,6 +455,10 @@ int main(int argc, char* argv[])
     o.weldBoundaries = false;
     Report("noweld", tree, original, o);
     Report("default", tree, original, UnfoldOptions());
+    Explain("default", tree, original, UnfoldOptions());
+    o = UnfoldOptions();
+    o.closeHoles = false;
+    Explain("noclose", tree, original, o);
     o.weldBoundaries = true;
     o.weldToleranceScale = 1.0;
     Report("weld1", tree, original, o);
