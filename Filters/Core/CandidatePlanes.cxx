@@ -2,6 +2,8 @@
 
 #include <Eigen/Eigenvalues>
 
+#include <vtkSMPTools.h>
+
 #include <algorithm>
 #include <cmath>
 #include <random>
@@ -157,23 +159,31 @@ std::vector<Plane> VotedPlanes(const PreparedMesh& mesh, int count, double epsil
   // Partners are drawn mostly among vertices of similar curvature (mirror images have the
   // same): a discrete mean normal curvature per vertex, ranked; q is sampled within a window
   // of p's rank. One vote in four pairs p with a uniformly sampled q.
+  // Per-vertex and per-vote loops below run through vtkSMPTools: each element is computed
+  // alone, in a fixed order, so the result does not depend on the thread count.
   std::vector<double> curvature(nv, 0.0);
-  for (int v = 0; v < nv; ++v)
-  {
-    double sum = 0.0;
-    int count = 0;
-    for (int k = mesh.vertexFaceOffsets[v]; k < mesh.vertexFaceOffsets[v + 1]; ++k)
-      for (int w : mesh.triangles[mesh.vertexFaces[k]])
+  vtkSMPTools::For(0,
+    nv,
+    1024,
+    [&](vtkIdType first, vtkIdType last)
+    {
+      for (int v = static_cast<int>(first); v < static_cast<int>(last); ++v)
       {
-        const Vec3 e = mesh.points[v] - mesh.points[w];
-        const double len2 = e.squaredNorm();
-        if (w == v || !(len2 > 0.0))
-          continue;
-        sum += (mesh.vertexNormals[v] - mesh.vertexNormals[w]).dot(e) / len2;
-        ++count;
+        double sum = 0.0;
+        int n = 0;
+        for (int k = mesh.vertexFaceOffsets[v]; k < mesh.vertexFaceOffsets[v + 1]; ++k)
+          for (int w : mesh.triangles[mesh.vertexFaces[k]])
+          {
+            const Vec3 e = mesh.points[v] - mesh.points[w];
+            const double len2 = e.squaredNorm();
+            if (w == v || !(len2 > 0.0))
+              continue;
+            sum += (mesh.vertexNormals[v] - mesh.vertexNormals[w]).dot(e) / len2;
+            ++n;
+          }
+        curvature[v] = n > 0 ? sum / n : 0.0;
       }
-    curvature[v] = count > 0 ? sum / count : 0.0;
-  }
+    });
   std::vector<int> byCurvature(nv), rank(nv);
   for (int v = 0; v < nv; ++v)
     byCurvature[v] = v;
@@ -242,17 +252,24 @@ std::vector<Plane> VotedPlanes(const PreparedMesh& mesh, int count, double epsil
       static_cast<int>(lo - sortedOffsets.begin()), static_cast<int>(hi - sortedOffsets.begin()));
   };
   std::vector<double> strength(nvotes, 0.0);
-  for (int i = 0; i < nvotes; ++i)
-  {
-    const auto same = offsetWindow(votes[i].offset), opposite = offsetWindow(-votes[i].offset);
-    for (int k = same.first; k < same.second; ++k)
-      if (near(votes[i], votes[byOffset[k]], clusterCos, epsilon))
-        strength[i] += votes[byOffset[k]].weight;
-    for (int k = opposite.first; k < opposite.second; ++k)
-      if ((k < same.first || k >= same.second) &&
-        near(votes[i], votes[byOffset[k]], clusterCos, epsilon))
-        strength[i] += votes[byOffset[k]].weight;
-  }
+  vtkSMPTools::For(0,
+    nvotes,
+    64,
+    [&](vtkIdType first, vtkIdType last)
+    {
+      for (int i = static_cast<int>(first); i < static_cast<int>(last); ++i)
+      {
+        const auto same = offsetWindow(votes[i].offset);
+        const auto opposite = offsetWindow(-votes[i].offset);
+        for (int k = same.first; k < same.second; ++k)
+          if (near(votes[i], votes[byOffset[k]], clusterCos, epsilon))
+            strength[i] += votes[byOffset[k]].weight;
+        for (int k = opposite.first; k < opposite.second; ++k)
+          if ((k < same.first || k >= same.second) &&
+            near(votes[i], votes[byOffset[k]], clusterCos, epsilon))
+            strength[i] += votes[byOffset[k]].weight;
+      }
+    });
   std::vector<char> used(nvotes, 0);
   const double separationCos = std::cos(10.0 * 3.14159265358979323846 / 180.0);
   while (static_cast<int>(result.size()) < count)

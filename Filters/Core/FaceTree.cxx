@@ -2,6 +2,8 @@
 
 #include "PointTriangleDistance.h"
 
+#include <vtkSMPTools.h>
+
 #include <algorithm>
 #include <cmath>
 
@@ -10,6 +12,8 @@ namespace foldingmeshes
 namespace
 {
 constexpr int LeafSize = 8;
+/// Subtrees of at least this many faces build their two halves in parallel.
+constexpr int ParallelBuildFaces = 4096;
 }
 
 FaceTree::FaceTree(const PreparedMesh& mesh)
@@ -18,9 +22,12 @@ FaceTree::FaceTree(const PreparedMesh& mesh)
   for (int f = 0; f < mesh.NumberOfFaces(); ++f)
     if (!mesh.faceDegenerate[f])
       this->Order.push_back(f);
-  this->Nodes.reserve(2 * this->Order.size() / LeafSize + 2);
   if (!this->Order.empty())
-    this->Build(0, static_cast<int>(this->Order.size()));
+  {
+    const int count = static_cast<int>(this->Order.size());
+    this->Nodes.resize(SubtreeNodes(count));
+    this->Build(0, count, 0);
+  }
   this->OrderIndex.assign(mesh.NumberOfFaces(), -1);
   this->Packed.resize(this->Order.size());
   for (size_t k = 0; k < this->Order.size(); ++k)
@@ -57,10 +64,13 @@ bool FaceTree::Beyond(const Vec3& p, int k, double best2) const
   return gap > 0.0 && gap * gap > best2 * (1.0 + 1e-9);
 }
 
-int FaceTree::Build(int first, int count)
+int FaceTree::SubtreeNodes(int count)
 {
-  const int index = static_cast<int>(this->Nodes.size());
-  this->Nodes.push_back(Node());
+  return count <= LeafSize ? 1 : 1 + SubtreeNodes(count / 2) + SubtreeNodes(count - count / 2);
+}
+
+void FaceTree::Build(int first, int count, int index)
+{
   Node node;
   node.lo = Vec3::Constant(std::numeric_limits<double>::max());
   node.hi = -node.lo;
@@ -98,7 +108,7 @@ int FaceTree::Build(int first, int count)
     node.count = count;
     node.left = node.right = -1;
     this->Nodes[index] = node;
-    return index;
+    return;
   }
   int axisIndex = 0;
   (chi - clo).maxCoeff(&axisIndex);
@@ -113,10 +123,22 @@ int FaceTree::Build(int first, int count)
     });
   node.first = first;
   node.count = 0;
-  node.left = this->Build(first, half);
-  node.right = this->Build(first + half, count - half);
+  node.left = index + 1;
+  node.right = index + 1 + SubtreeNodes(half);
   this->Nodes[index] = node;
-  return index;
+  // Preorder numbering fixed in advance: the two halves touch disjoint ranges of Order and
+  // Nodes, so large ones are built in parallel (vtkSMPTools; nested calls run serially) with
+  // the same tree for any thread count.
+  const int firsts[2] = { first, first + half }, counts[2] = { half, count - half };
+  const int indices[2] = { node.left, node.right };
+  vtkSMPTools::For(0,
+    2,
+    count >= ParallelBuildFaces ? 1 : 2,
+    [&](vtkIdType begin, vtkIdType end)
+    {
+      for (vtkIdType c = begin; c < end; ++c)
+        this->Build(firsts[c], counts[c], indices[c]);
+    });
 }
 
 

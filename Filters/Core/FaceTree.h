@@ -68,7 +68,10 @@ private:
     int first, count; ///< leaf: range in Order; inner: count == 0
     int left, right;  ///< inner node children
   };
-  int Build(int first, int count);
+  /// Number of nodes of the subtree over `count` faces.
+  static int SubtreeNodes(int count);
+  /// Builds the subtree over Order[first, first + count) as Nodes[index] and its successors.
+  void Build(int first, int count, int index);
   /// Visits the faces of the leaves not farther than sqrt(best2) from p (best2 may shrink
   /// during the visit) and not pruned by prune(node).
   template <typename Prune, typename Visit>

@@ -12,6 +12,7 @@
 #include <cmath>
 #include <map>
 #include <memory>
+#include <unordered_map>
 #include <vector>
 
 namespace foldingmeshes
@@ -116,10 +117,21 @@ private:
   int Build(WorkMesh w, int parent, int depth, double eps, int folds, uint64_t pathFolds);
 
   /// Nearest of `points` (indices into w.points, bucketed in `cells`) to x within `radius`.
+  /// A hash map: only lookups, never its iteration order, decide a result.
   struct Buckets
   {
+    struct KeyHash
+    {
+      size_t operator()(const std::array<long long, 3>& k) const
+      {
+        const uint64_t h = static_cast<uint64_t>(k[0]) * 0x9E3779B97F4A7C15ull ^
+          static_cast<uint64_t>(k[1]) * 0xC2B2AE3D27D4EB4Full ^
+          static_cast<uint64_t>(k[2]) * 0x165667B19E3779F9ull;
+        return static_cast<size_t>(h ^ (h >> 29));
+      }
+    };
     double cell = 1.0;
-    std::map<std::array<long long, 3>, std::vector<int>> cells;
+    std::unordered_map<std::array<long long, 3>, std::vector<int>, KeyHash> cells;
     std::array<long long, 3> Key(const Vec3& x) const
     {
       return { static_cast<long long>(std::floor(x.x() / cell)),

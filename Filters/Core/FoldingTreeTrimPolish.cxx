@@ -10,6 +10,8 @@
 
 #include <Eigen/Dense>
 
+#include <vtkSMPTools.h>
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -172,13 +174,20 @@ std::vector<double> Builder::MirrorBudget(const WorkMesh& w,
     buckets.Add(w.points[v], v);
     least = std::min(least, w.budget[v]);
   }
+  // Every point alone (read-only buckets): the same limits for any thread count.
   std::vector<double> limit(ids.size());
-  for (size_t k = 0; k < ids.size(); ++k)
-  {
-    const int v = ids[k];
-    const int p = buckets.Nearest(w.points, plane.Reflect(w.points[v]), eps);
-    limit[k] = std::min({ eps, w.budget[v], p >= 0 ? w.budget[p] : least });
-  }
+  vtkSMPTools::For(0,
+    static_cast<vtkIdType>(ids.size()),
+    256,
+    [&](vtkIdType first, vtkIdType last)
+    {
+      for (vtkIdType k = first; k < last; ++k)
+      {
+        const int v = ids[k];
+        const int p = buckets.Nearest(w.points, plane.Reflect(w.points[v]), eps);
+        limit[k] = std::min({ eps, w.budget[v], p >= 0 ? w.budget[p] : least });
+      }
+    });
   return limit;
 }
 

@@ -27,11 +27,13 @@ void MirrorDistance::Compute(const Plane& plane,
   std::vector<Vec3>* closestNormals) const
 {
   const int nv = Mesh.NumberOfPoints();
-  d.assign(nv, std::numeric_limits<double>::infinity());
+  // Every entry is (re)set in the parallel loop: vectors reused across calls are not
+  // cleared serially first.
+  d.resize(nv);
   if (closest)
-    closest->assign(nv, Vec3::Zero());
+    closest->resize(nv);
   if (closestNormals)
-    closestNormals->assign(nv, Vec3::Zero());
+    closestNormals->resize(nv);
   vtkSMPTools::For(0,
     nv,
     256,
@@ -39,6 +41,11 @@ void MirrorDistance::Compute(const Plane& plane,
     {
       for (vtkIdType i = begin; i < end; ++i)
       {
+        d[i] = std::numeric_limits<double>::infinity();
+        if (closest)
+          (*closest)[i] = Vec3::Zero();
+        if (closestNormals)
+          (*closestNormals)[i] = Vec3::Zero();
         if (!VertexUsed[i])
           continue;
         const Vec3 r = plane.Reflect(Mesh.points[i]);

@@ -61,9 +61,13 @@ int LabelConnectedRegions(const PreparedMesh& mesh,
   {
     if (!mask[f])
       continue;
+    // Each adjacency is listed from both faces: joining from the lower one is enough.
     for (int k = mesh.faceNeighborOffsets[f]; k < mesh.faceNeighborOffsets[f + 1]; ++k)
-      if (mask[mesh.faceNeighbors[k]])
-        Join(parent, f, mesh.faceNeighbors[k]);
+    {
+      const int g = mesh.faceNeighbors[k];
+      if (g > f && mask[g])
+        Join(parent, f, g);
+    }
   }
   for (const auto& link : mesh.proximityLinks)
   {

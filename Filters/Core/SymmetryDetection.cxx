@@ -174,6 +174,18 @@ private:
                                           : std::numeric_limits<double>::infinity();
   }
 
+  /// Search limit of an iteration's own distances: only support vertices (d <= 2 sigma)
+  /// enter its cost, weights and plane step, so a fine iteration resolves distances up to
+  /// 2 sigma (a hair more, so that d == 2 sigma is never lost to rounding) - 6 epsilon
+  /// instead of 9, and 2 instead of 9 in the polish phase: the same support, weights and
+  /// planes for a fraction of the search.
+  double IterationMaxDistance(DistanceMetric metric) const
+  {
+    if (metric != DistanceMetric::Fine)
+      return MaxDistance(metric);
+    return std::min(MaxDistance(metric), 2.0 * SigmaScale * Options.epsilon * (1.0 + 1e-9));
+  }
+
   double Cost(const std::vector<double>& d,
     const std::vector<char>& vertexInSupport,
     double sigma) const
@@ -234,7 +246,7 @@ private:
       if (!haveDistances)
         Distances.Compute(run.plane,
           metric,
-          MaxDistance(metric),
+          IterationMaxDistance(metric),
           d,
           Options.robust ? &closest : nullptr,
           Options.robust ? &closestNormals : nullptr);
