@@ -6,6 +6,7 @@
 #include "MeshPreparation.h"
 #include "MirrorDistance.h"
 #include "RegionGrowing.h"
+#include "SubsetPreparation.h"
 #include "SurfaceDistance.h"
 
 #include <Eigen/Dense>
@@ -26,30 +27,14 @@ namespace foldingmeshes
 {
 namespace treebuilder
 {
-bool Builder::PrepareSubset(const WorkMesh& w,
+bool Builder::PrepareSubset(const WorkMesh& /*w*/,
   const PreparedMesh& pm,
   const std::vector<char>& S,
   PreparedMesh& spm)
 {
-  WorkMesh sub = Extract(w, S);
-  if (sub.NumberOfFaces() == 0)
-    return false;
-  TriangleMesh soup;
-  soup.points = sub.points;
-  soup.triangles = sub.triangles;
+  // w's points and (oriented) triangles are pm's: pm welded nothing (see Build).
   // The region's vertex normals (not the sub-mesh's), as detection used them.
-  std::vector<Vec3> normals(sub.NumberOfPoints());
-  int next = 0;
-  std::vector<char> used(w.points.size(), 0);
-  for (int f = 0; f < w.NumberOfFaces(); ++f)
-    if (S[f])
-      for (int v : w.triangles[f])
-        used[v] = 1;
-  for (int v = 0; v < w.NumberOfPoints(); ++v)
-    if (used[v])
-      normals[next++] = pm.vertexNormals[v];
-  std::string error;
-  return PrepareMesh(soup, normals, spm, error);
+  return PrepareFaceSubset(pm, S, spm);
 }
 
 Plane Builder::Polish(const WorkMesh& w,
