@@ -359,8 +359,28 @@ void Explain(const char* label,
     return x;
   };
   double du = 0.0, dm = 0.0;
-  for (double d : toM.Distances(dense(u)))
-    du = std::max(du, d);
+  {
+    const std::vector<double> dd = toM.Distances(dense(u));
+    size_t worstSample = 0;
+    for (size_t i = 0; i < dd.size(); ++i)
+      if (dd[i] > du)
+      {
+        du = dd[i];
+        worstSample = i;
+      }
+    if (!dd.empty())
+    {
+      // Where the dense u->M maximum lies: a copied or filled face, and its corners.
+      const int f = static_cast<int>(worstSample / 28);
+      const Triangle& t = u.triangles[f];
+      std::printf("  %-10s dense u->M worst on face %d (%s, leaf %d, copy %d, input face %d): "
+                  "corners %.4f %.4f %.4f, centroid %.4f\n",
+        label, f, m.faceFilled[f] ? "fill" : (m.faceMirrored[f] ? "mirrored copy" : "copy"),
+        m.faceLeaf[f], m.faceCopy[f], m.faceOriginalIds[f], toM.Distance(u.points[t[0]]) / diag,
+        toM.Distance(u.points[t[1]]) / diag, toM.Distance(u.points[t[2]]) / diag,
+        toM.Distance(cu[f]) / diag);
+    }
+  }
   for (double d : toU.Distances(dense(original)))
     dm = std::max(dm, d);
   std::printf("  %-10s dense (28 samples per face): u->M %.4f M->u %.4f\n",
