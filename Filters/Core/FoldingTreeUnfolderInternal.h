@@ -3,6 +3,7 @@
 #define foldingmeshes_FoldingTreeUnfolderInternal_h
 
 #include "FoldingTreeUnfolder.h"
+#include "UnionFind.h"
 
 #include <algorithm>
 #include <cstddef>
@@ -154,16 +155,6 @@ bool FillWithinTolerance(const std::vector<Vec3>& points,
   const std::vector<int>& loop,
   const std::vector<Triangle>& fill,
   double tolerance);
-
-inline int FindRoot(std::vector<int>& parent, int a)
-{
-  while (parent[a] != a)
-  {
-    parent[a] = parent[parent[a]];
-    a = parent[a];
-  }
-  return a;
-}
 
 struct CellKey
 {

@@ -1,4 +1,5 @@
 #include "MeshPreparation.h"
+#include "UnionFind.h"
 
 #include <Eigen/Geometry>
 
@@ -23,26 +24,6 @@ struct EdgeUse
     return a != o.a ? a < o.a : (b != o.b ? b < o.b : face < o.face);
   }
 };
-
-int FindRoot(std::vector<int>& parent, int i)
-{
-  while (parent[i] != i)
-  {
-    parent[i] = parent[parent[i]];
-    i = parent[i];
-  }
-  return i;
-}
-
-void Unite(std::vector<int>& parent, int a, int b)
-{
-  a = FindRoot(parent, a);
-  b = FindRoot(parent, b);
-  if (a != b)
-  {
-    parent[std::max(a, b)] = std::min(a, b);
-  }
-}
 
 void WeldPoints(const TriangleMesh& input, PreparedMesh& mesh)
 {

@@ -1,4 +1,5 @@
 #include "RegionGrowing.h"
+#include "UnionFind.h"
 
 #include <numeric>
 
@@ -6,24 +7,6 @@ namespace foldingmeshes
 {
 namespace
 {
-int Root(std::vector<int>& parent, int i)
-{
-  while (parent[i] != i)
-  {
-    parent[i] = parent[parent[i]];
-    i = parent[i];
-  }
-  return i;
-}
-
-void Join(std::vector<int>& parent, int a, int b)
-{
-  a = Root(parent, a);
-  b = Root(parent, b);
-  if (a != b)
-    parent[std::max(a, b)] = std::min(a, b);
-}
-
 int FirstSelectedFace(const PreparedMesh& mesh, const std::vector<char>& mask, int v)
 {
   for (int k = mesh.vertexFaceOffsets[v]; k < mesh.vertexFaceOffsets[v + 1]; ++k)
@@ -66,7 +49,7 @@ int LabelConnectedRegions(const PreparedMesh& mesh,
     {
       const int g = mesh.faceNeighbors[k];
       if (g > f && mask[g])
-        Join(parent, f, g);
+        Unite(parent, f, g);
     }
   }
   for (const auto& link : mesh.proximityLinks)
@@ -74,7 +57,7 @@ int LabelConnectedRegions(const PreparedMesh& mesh,
     const int a = FirstSelectedFace(mesh, mask, link.first);
     const int b = FirstSelectedFace(mesh, mask, link.second);
     if (a >= 0 && b >= 0)
-      Join(parent, a, b);
+      Unite(parent, a, b);
   }
   labels.assign(nf, -1);
   std::vector<int> regionOfRoot(nf, -1);
@@ -83,7 +66,7 @@ int LabelConnectedRegions(const PreparedMesh& mesh,
   {
     if (!mask[f])
       continue;
-    const int r = Root(parent, f);
+    const int r = FindRoot(parent, f);
     if (regionOfRoot[r] < 0)
       regionOfRoot[r] = count++;
     labels[f] = regionOfRoot[r];

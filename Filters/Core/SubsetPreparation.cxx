@@ -1,6 +1,7 @@
 #include "SubsetPreparation.h"
 
 #include "MeshPreparation.h"
+#include "UnionFind.h"
 
 #include <algorithm>
 #include <numeric>
@@ -38,24 +39,6 @@ bool PrepareSelectedSoup(const PreparedMesh& mesh,
     }
   std::string error;
   return PrepareMesh(soup, normals, subset, error);
-}
-
-int Root(std::vector<int>& parent, int i)
-{
-  while (parent[i] != i)
-  {
-    parent[i] = parent[parent[i]];
-    i = parent[i];
-  }
-  return i;
-}
-
-void Join(std::vector<int>& parent, int a, int b)
-{
-  a = Root(parent, a);
-  b = Root(parent, b);
-  if (a != b)
-    parent[std::max(a, b)] = std::min(a, b);
 }
 
 /// +1 if triangle t traverses u -> v, -1 if v -> u, 0 if it does not hold both.
@@ -172,7 +155,7 @@ bool PrepareFaceSubset(const PreparedMesh& mesh,
       for (int j : others)
       {
         subset.faceNeighbors.push_back(j);
-        Join(parent, i, j);
+        Unite(parent, i, j);
       }
     }
     std::sort(subset.faceNeighbors.begin() + firstNeighbor, subset.faceNeighbors.end());
@@ -185,7 +168,7 @@ bool PrepareFaceSubset(const PreparedMesh& mesh,
   std::vector<int> partOfRoot(nf, -1);
   for (int f = 0; f < nf; ++f)
   {
-    const int r = Root(parent, f);
+    const int r = FindRoot(parent, f);
     if (partOfRoot[r] < 0)
       partOfRoot[r] = subset.numberOfParts++;
     subset.facePart[f] = partOfRoot[r];
