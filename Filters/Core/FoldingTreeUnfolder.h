@@ -53,12 +53,15 @@ struct UnfoldOptions
    * fold rule keeps a face straddling the plane with its far vertices projected onto it, so
    * without this every such face comes back as two (itself and its mirror image) and every
    * projected vertex is an extra vertex on the fold line. Each removed vertex's closed 1-ring
-   * is re-triangulated (ear clipping, shortest diagonal first), which gives back edges across
-   * the fold line as in the input. A vertex stays when it is not interior (its ring is not
-   * one closed loop), carries a tear or fold-line flag of a level above, lies on a plane of a
-   * fold above or on the input's border, or when the new faces would repeat an edge or a
-   * face, flip (the star must project one-to-one onto the plane perpendicular to its mean
-   * normal, every ear convex there and empty), be degenerate, or move the surface by more
+   * is re-triangulated (ear clipping, the ear that departs least from the old star first),
+   * which gives back edges across the fold line as in the input; where the star does not
+   * project one-to-one onto the plane perpendicular to its mean normal (a sharp crease), the
+   * vertex is collapsed into a ring vertex instead (using at most a tenth of the limit below).
+   * A vertex stays when it is not interior (its ring is not one closed loop), carries a tear
+   * or fold-line flag of a level above, lies on a plane of a fold above or on the input's
+   * border, or when the new faces would repeat an edge or a face, flip (every ear convex and
+   * empty in the projection; a collapsed face not turned by 90 degrees or more), be
+   * degenerate, or move the surface by more
    * than the error budget left at the vertex and its ring (sampled: the vertex, the star's
    * face centroids and spoke midpoints against the new faces, the new faces' centroids and
    * diagonal midpoints against the star; the ring's budgets are charged what it moved). With

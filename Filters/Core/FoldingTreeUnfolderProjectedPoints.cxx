@@ -20,6 +20,9 @@ namespace unfolder_detail
 {
 namespace
 {
+/// Largest share of the error limit a collapse of a projected point into its ring may use.
+constexpr double CollapseShareOfLimit = 0.1;
+
 /// 2D orientation (twice the signed area) of (a, b, c).
 double Orientation(const Eigen::Vector2d& a, const Eigen::Vector2d& b, const Eigen::Vector2d& c)
 {
@@ -77,14 +80,16 @@ bool ClosedRing(const std::vector<Triangle>& triangles,
 } // namespace
 
 /**
- * Tries to remove vertex v: its closed 1-ring is re-triangulated by ear clipping (shortest
- * diagonal first) in the plane perpendicular to the star's mean normal. Accepted when the
- * star projects one-to-one onto that plane (every star face facing the mean normal, the
- * angles around v summing to one turn), every ear is convex there and contains no other ring
- * vertex (so no new face flips against the star), no new edge exists already (no duplicate
- * or non-manifold edge, no duplicate face), no new face is degenerate, and the surface moves
- * by at most `limit` (see RemoveProjectedPoints). On success `created` holds the new faces
- * and `moved` the largest deviation measured.
+ * Tries to remove vertex v: its closed 1-ring is re-triangulated by ear clipping (the ear
+ * that departs least from the old star first) in the plane perpendicular to the star's mean
+ * normal. That needs the star to project one-to-one onto the plane (every star face facing
+ * the mean normal, the angles around v summing to one turn), every ear convex there and
+ * empty of other ring vertices (so no new face flips against the star). Otherwise v is
+ * collapsed into one of its ring vertices (no new face turning 90 degrees or more, moving the
+ * surface by at most a tenth of `limit`). Either way no new edge may exist already (no
+ * duplicate or non-manifold edge, no duplicate face), no new face may be degenerate, and the
+ * surface moves by at most `limit` (see RemoveProjectedPoints). On success `created` holds
+ * the new faces and `moved` the largest deviation measured.
  */
 bool Unfolder::RetriangulateRing(const Piece& piece,
   const std::vector<std::vector<int>>& facesOf,
@@ -106,38 +111,10 @@ bool Unfolder::RetriangulateRing(const Piece& piece,
   why = "open ring";
   if (star.size() < 3 || !ClosedRing(piece.triangles, star, v, ring, ringFace))
     return false;
-  why = "not one-to-one";
   const std::vector<Vec3>& x = piece.points;
-  const int m = static_cast<int>(ring.size());
-  Vec3 normal = Vec3::Zero();
-  std::vector<Vec3> faceNormal(m);
-  for (int i = 0; i < m; ++i)
-  {
-    faceNormal[i] = (x[ring[i]] - x[v]).cross(x[ring[(i + 1) % m]] - x[v]);
-    normal += faceNormal[i];
-  }
-  if (normal.norm() <= 0.0)
-    return false;
-  normal.normalize();
-  for (const Vec3& n : faceNormal)
-    if (n.dot(normal) <= 1e-3 * n.norm())
-      return false;
-  // The ring in the plane perpendicular to the mean normal, v at the origin.
-  const Vec3 u = normal.unitOrthogonal(), w = normal.cross(u);
-  std::map<int, Eigen::Vector2d> flat;
-  for (int a : ring)
-    flat[a] = Eigen::Vector2d((x[a] - x[v]).dot(u), (x[a] - x[v]).dot(w));
-  double turn = 0.0;
-  for (int i = 0; i < m; ++i)
-  {
-    const Eigen::Vector2d& p = flat[ring[i]];
-    const Eigen::Vector2d& q = flat[ring[(i + 1) % m]];
-    turn += std::atan2(p.x() * q.y() - p.y() * q.x(), p.dot(q));
-  }
-  if (std::abs(turn - 2.0 * M_PI) > 1e-6)
-    return false;
-
-  why = "no triangulation";
+  std::vector<Triangle> old;
+  for (int f : star)
+    old.push_back(piece.triangles[f]);
   EdgeSet diagonals;
   auto hasEdge = [&](int a, int c)
   {
@@ -158,50 +135,144 @@ bool Unfolder::RetriangulateRing(const Piece& piece,
       { (x[a] - x[b]).squaredNorm(), (x[b] - x[c]).squaredNorm(), (x[c] - x[a]).squaredNorm() });
     return (x[b] - x[a]).cross(x[c] - x[a]).norm() > 1e-6 * longest;
   };
-  std::vector<int> poly = ring;
-  created.clear();
-  auto allowed = [&](int a, int c)
+  const int m = static_cast<int>(ring.size());
+  // Ear clipping in the plane perpendicular to the star's mean normal.
+  auto clipRing = [&]() -> bool
   {
-    const int i = static_cast<int>(std::find(poly.begin(), poly.end(), a) - poly.begin());
-    const int b = poly[(i + 1) % poly.size()];
-    const Eigen::Vector2d &pa = flat[a], &pb = flat[b], &pc = flat[c];
-    const double area = Orientation(pa, pb, pc);
-    if (area <= 1e-9 * std::max((pa - pc).squaredNorm(), (pb - pa).squaredNorm()))
+    why = "not one-to-one";
+    Vec3 normal = Vec3::Zero();
+    std::vector<Vec3> faceNormal(m);
+    for (int i = 0; i < m; ++i)
+    {
+      faceNormal[i] = (x[ring[i]] - x[v]).cross(x[ring[(i + 1) % m]] - x[v]);
+      normal += faceNormal[i];
+    }
+    if (normal.norm() <= 0.0)
       return false;
-    for (int q : poly)
-      if (q != a && q != b && q != c)
+    normal.normalize();
+    for (const Vec3& n : faceNormal)
+      if (n.dot(normal) <= 1e-3 * n.norm())
+        return false;
+    // The ring in the plane perpendicular to the mean normal, v at the origin.
+    const Vec3 u = normal.unitOrthogonal(), w = normal.cross(u);
+    std::map<int, Eigen::Vector2d> flat;
+    for (int a : ring)
+      flat[a] = Eigen::Vector2d((x[a] - x[v]).dot(u), (x[a] - x[v]).dot(w));
+    double turn = 0.0;
+    for (int i = 0; i < m; ++i)
+    {
+      const Eigen::Vector2d& p = flat[ring[i]];
+      const Eigen::Vector2d& q = flat[ring[(i + 1) % m]];
+      turn += std::atan2(p.x() * q.y() - p.y() * q.x(), p.dot(q));
+    }
+    if (std::abs(turn - 2.0 * M_PI) > 1e-6)
+      return false;
+
+    why = "no triangulation";
+    std::vector<int> poly = ring;
+    created.clear();
+    auto allowed = [&](int a, int c)
+    {
+      const int i = static_cast<int>(std::find(poly.begin(), poly.end(), a) - poly.begin());
+      const int b = poly[(i + 1) % poly.size()];
+      const Eigen::Vector2d &pa = flat[a], &pb = flat[b], &pc = flat[c];
+      const double area = Orientation(pa, pb, pc);
+      if (area <= 1e-9 * std::max((pa - pc).squaredNorm(), (pb - pa).squaredNorm()))
+        return false;
+      for (int q : poly)
+        if (q != a && q != b && q != c)
+        {
+          const Eigen::Vector2d& pq = flat[q];
+          if (Orientation(pa, pb, pq) >= 0.0 && Orientation(pb, pc, pq) >= 0.0 &&
+            Orientation(pc, pa, pq) >= 0.0)
+            return false;
+        }
+      return regular(a, b, c) && !hasEdge(a, c);
+    };
+    auto cut = [&](int a, int b, int c)
+    {
+      created.push_back({ a, b, c });
+      diagonals.insert({ std::min(a, c), std::max(a, c) });
+    };
+    // The ear that departs least from the old star first (sampled at its centroid and the
+    // midpoint of its new diagonal), the shorter diagonal on (near) ties: on a crease, the
+    // diagonals follow the crease instead of cutting across it.
+    const double lengthWeight = 1e-3;
+    auto deviation = [&](int a, int b, int c)
+    {
+      return std::max(DistanceToTriangles((x[a] + x[b] + x[c]) / 3.0, x, old),
+               DistanceToTriangles(0.5 * (x[a] + x[c]), x, old)) +
+        lengthWeight * (x[a] - x[c]).norm();
+    };
+    if (!ClipCheapestEars(poly, allowed, deviation, cut))
+      return false;
+    if (Orientation(flat[poly[0]], flat[poly[1]], flat[poly[2]]) <= 0.0 ||
+      !regular(poly[0], poly[1], poly[2]))
+      return false;
+    created.push_back({ poly[0], poly[1], poly[2] });
+    return true;
+  };
+  // Where the star does not project one-to-one (a sharp crease through v) or no ear order
+  // works: collapse v into the ring vertex u whose new faces depart least from the old star,
+  // by at most a tenth of the limit (a collapse follows the old star less closely than ears
+  // do; with the whole budget it cut the corners of a CAD mesh: bearing 0.0033 -> 0.0061).
+  // Each star face (v, a, b) becomes (u, a, b), the two faces on edge v-u vanish; accepted
+  // when no new edge exists already (the link condition), no new face is degenerate and none
+  // turns by 90 degrees or more against the face it replaces.
+  auto collapseIntoRing = [&]() -> bool
+  {
+    const char* reason = why;
+    double best = std::numeric_limits<double>::infinity();
+    std::vector<Triangle> bestFaces;
+    int bestU = -1;
+    for (int i = 0; i < m; ++i)
+    {
+      const int u = ring[i];
+      const int previous = ring[(i + m - 1) % m], next = ring[(i + 1) % m];
+      auto newEdgeFree = [&](int a) { return a == previous || a == next || !hasEdge(u, a); };
+      std::vector<Triangle> faces;
+      bool ok = true;
+      for (int j = 0; j < m && ok; ++j)
       {
-        const Eigen::Vector2d& pq = flat[q];
-        if (Orientation(pa, pb, pq) >= 0.0 && Orientation(pb, pc, pq) >= 0.0 &&
-          Orientation(pc, pa, pq) >= 0.0)
-          return false;
+        const int a = ring[j], b = ring[(j + 1) % m];
+        if (a == u || b == u)
+          continue;
+        const Vec3 before = (x[a] - x[v]).cross(x[b] - x[v]);
+        const Vec3 after = (x[a] - x[u]).cross(x[b] - x[u]);
+        ok = regular(u, a, b) && after.dot(before) > 0.0 && newEdgeFree(a) && newEdgeFree(b);
+        faces.push_back({ u, a, b });
       }
-    return regular(a, b, c) && !hasEdge(a, c);
+      if (!ok || faces.empty())
+        continue;
+      double worst = DistanceToTriangles(x[v], x, faces);
+      for (const Triangle& t : faces)
+        worst = std::max(worst, DistanceToTriangles((x[t[0]] + x[t[1]] + x[t[2]]) / 3.0, x, old));
+      if (worst <= CollapseShareOfLimit * limit && worst < best)
+      {
+        best = worst;
+        bestFaces = std::move(faces);
+        bestU = u;
+      }
+    }
+    if (bestFaces.empty())
+    {
+      why = reason;
+      return false;
+    }
+    // The new edges from u, sampled like an ear's diagonals by the budget check below.
+    for (const Triangle& t : bestFaces)
+      for (int k = 1; k < 3; ++k)
+        diagonals.insert({ std::min(bestU, t[k]), std::max(bestU, t[k]) });
+    created = std::move(bestFaces);
+    return true;
   };
-  auto cut = [&](int a, int b, int c)
+  if (!clipRing())
   {
-    created.push_back({ a, b, c });
-    diagonals.insert({ std::min(a, c), std::max(a, c) });
-  };
-  // The ear that departs least from the old star first (sampled at its centroid and the
-  // midpoint of its new diagonal), the shorter diagonal on (near) ties: on a crease, the
-  // diagonals follow the crease instead of cutting across it.
-  std::vector<Triangle> old;
-  for (int f : star)
-    old.push_back(piece.triangles[f]);
-  const double lengthWeight = 1e-3;
-  auto deviation = [&](int a, int b, int c)
-  {
-    return std::max(DistanceToTriangles((x[a] + x[b] + x[c]) / 3.0, x, old),
-             DistanceToTriangles(0.5 * (x[a] + x[c]), x, old)) +
-      lengthWeight * (x[a] - x[c]).norm();
-  };
-  if (!ClipCheapestEars(poly, allowed, deviation, cut))
-    return false;
-  if (Orientation(flat[poly[0]], flat[poly[1]], flat[poly[2]]) <= 0.0 ||
-    !regular(poly[0], poly[1], poly[2]))
-    return false;
-  created.push_back({ poly[0], poly[1], poly[2] });
+    created.clear();
+    diagonals.clear();
+    if (!collapseIntoRing())
+      return false;
+  }
   // A face on the ring's three vertices already (a tetrahedron-like spot): duplicate.
   if (m == 3)
     for (int f : facesOf[ring[0]])
