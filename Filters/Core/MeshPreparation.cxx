@@ -170,6 +170,41 @@ std::vector<int> CoincidentPointRepresentatives(const std::vector<Vec3>& p)
   return first;
 }
 
+void ComputeBoundsAndAreas(PreparedMesh& mesh)
+{
+  // Bounds (and so epsilon) over the points that triangles use: stray points of vertex or
+  // line cells, or unused ones, must not change the tolerance.
+  bool anyUsed = false;
+  for (const Triangle& t : mesh.triangles)
+    for (int v : t)
+    {
+      if (!anyUsed)
+        mesh.boundsMin = mesh.boundsMax = mesh.points[v];
+      anyUsed = true;
+      mesh.boundsMin = mesh.boundsMin.cwiseMin(mesh.points[v]);
+      mesh.boundsMax = mesh.boundsMax.cwiseMax(mesh.points[v]);
+    }
+  mesh.diagonal = (mesh.boundsMax - mesh.boundsMin).norm();
+
+  // Areas and degeneracy (before orientation: independent of it).
+  const int nf = mesh.NumberOfFaces();
+  mesh.faceAreas.assign(nf, 0.0);
+  mesh.faceDegenerate.assign(nf, 0);
+  mesh.totalArea = 0.0;
+  // Round-off of float coordinates leaves collinear faces areas near 1e-14 diag^2.
+  const double areaFloor = 1e-12 * mesh.diagonal * mesh.diagonal;
+  for (int f = 0; f < nf; ++f)
+  {
+    const Triangle& t = mesh.triangles[f];
+    const double area = 0.5 *
+      (mesh.points[t[1]] - mesh.points[t[0]]).cross(mesh.points[t[2]] - mesh.points[t[0]]).norm();
+    const bool repeated = t[0] == t[1] || t[1] == t[2] || t[0] == t[2];
+    mesh.faceDegenerate[f] = repeated || !(area > areaFloor);
+    mesh.faceAreas[f] = mesh.faceDegenerate[f] ? 0.0 : area;
+    mesh.totalArea += mesh.faceAreas[f];
+  }
+}
+
 bool PrepareMesh(const TriangleMesh& input,
   const std::vector<Vec3>& inputNormals,
   PreparedMesh& mesh,
@@ -208,35 +243,7 @@ bool PrepareMesh(const TriangleMesh& input,
     for (int k = 0; k < 3; ++k)
       mesh.triangles[f][k] = mesh.inputToWelded[input.triangles[f][k]];
 
-  // Bounds (and so epsilon) over the points that triangles use: stray points of vertex or
-  // line cells, or unused ones, must not change the tolerance.
-  bool anyUsed = false;
-  for (const Triangle& t : mesh.triangles)
-    for (int v : t)
-    {
-      if (!anyUsed)
-        mesh.boundsMin = mesh.boundsMax = mesh.points[v];
-      anyUsed = true;
-      mesh.boundsMin = mesh.boundsMin.cwiseMin(mesh.points[v]);
-      mesh.boundsMax = mesh.boundsMax.cwiseMax(mesh.points[v]);
-    }
-  mesh.diagonal = (mesh.boundsMax - mesh.boundsMin).norm();
-
-  // Areas and degeneracy (before orientation: independent of it).
-  mesh.faceAreas.assign(nf, 0.0);
-  mesh.faceDegenerate.assign(nf, 0);
-  // Round-off of float coordinates leaves collinear faces areas near 1e-14 diag^2.
-  const double areaFloor = 1e-12 * mesh.diagonal * mesh.diagonal;
-  for (int f = 0; f < nf; ++f)
-  {
-    const Triangle& t = mesh.triangles[f];
-    const double area = 0.5 *
-      (mesh.points[t[1]] - mesh.points[t[0]]).cross(mesh.points[t[2]] - mesh.points[t[0]]).norm();
-    const bool repeated = t[0] == t[1] || t[1] == t[2] || t[0] == t[2];
-    mesh.faceDegenerate[f] = repeated || !(area > areaFloor);
-    mesh.faceAreas[f] = mesh.faceDegenerate[f] ? 0.0 : area;
-    mesh.totalArea += mesh.faceAreas[f];
-  }
+  ComputeBoundsAndAreas(mesh);
   if (!(mesh.totalArea > 0.0) || !(mesh.diagonal > 0.0))
   {
     error = "the mesh has zero area";

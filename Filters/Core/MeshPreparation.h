@@ -26,6 +26,14 @@ bool PrepareMesh(const TriangleMesh& input,
   std::string& error);
 
 /**
+ * PrepareMesh's bounds (over the points that triangles use), diagonal, face areas, degenerate
+ * faces (a repeated vertex, or an area not above 1e-12 diagonal^2) and total area, from
+ * mesh.points and mesh.triangles (at least one triangle). Shared with PrepareFaceSubset,
+ * which must give the same values bit for bit.
+ */
+void ComputeBoundsAndAreas(PreparedMesh& mesh);
+
+/**
  * A coarse version of `mesh` with about `targetFaces` triangles, by vertex clustering on a
  * uniform grid (cluster point: area-weighted mean; collapsed and duplicate triangles are
  * dropped), as a triangle soup for PrepareMesh. Used to find candidate planes of very

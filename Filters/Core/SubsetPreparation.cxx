@@ -88,29 +88,8 @@ bool PrepareFaceSubset(const PreparedMesh& mesh,
     for (int k = 0; k < 3; ++k)
       subset.triangles[i][k] = localPoint[mesh.triangles[faces[i]][k]];
 
-  // Bounds, areas and degeneracy as PrepareMesh computes them (input orientation).
-  subset.boundsMin = subset.boundsMax = subset.points[subset.triangles[0][0]];
-  for (const Triangle& t : subset.triangles)
-    for (int v : t)
-    {
-      subset.boundsMin = subset.boundsMin.cwiseMin(subset.points[v]);
-      subset.boundsMax = subset.boundsMax.cwiseMax(subset.points[v]);
-    }
-  subset.diagonal = (subset.boundsMax - subset.boundsMin).norm();
-  subset.faceAreas.assign(nf, 0.0);
-  subset.faceDegenerate.assign(nf, 0);
-  const double areaFloor = 1e-12 * subset.diagonal * subset.diagonal;
-  for (int f = 0; f < nf; ++f)
-  {
-    const Triangle& t = subset.triangles[f];
-    const double area = 0.5 *
-      (subset.points[t[1]] - subset.points[t[0]])
-        .cross(subset.points[t[2]] - subset.points[t[0]])
-        .norm();
-    subset.faceDegenerate[f] = !(area > areaFloor);
-    subset.faceAreas[f] = subset.faceDegenerate[f] ? 0.0 : area;
-    subset.totalArea += subset.faceAreas[f];
-  }
+  // Bounds, areas and degeneracy exactly as PrepareMesh computes them (input orientation).
+  ComputeBoundsAndAreas(subset);
   if (!(subset.totalArea > 0.0) || !(subset.diagonal > 0.0))
     return false;
 

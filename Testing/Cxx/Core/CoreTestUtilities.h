@@ -1,11 +1,14 @@
-// Small helpers shared by the core unit tests: a non-fatal EXPECT that counts failures, and
-// conversion of procedural vtkPolyData meshes into the core's TriangleMesh / PreparedMesh.
+// Small helpers shared by the core unit tests: a non-fatal EXPECT that counts failures,
+// conversion of procedural vtkPolyData meshes into the core's TriangleMesh / PreparedMesh,
+// folding and unfolding, edge counts, volume, brute-force Hausdorff distance.
 #ifndef foldingmeshes_CoreTestUtilities_h
 #define foldingmeshes_CoreTestUtilities_h
 
 #include "../TestExpect.h"
+#include "FoldingTreeBuilder.h"
 #include "FoldingTreeUnfolder.h"
 #include "MeshPreparation.h"
+#include "PointTriangleDistance.h"
 #include "TriangleMesh.h"
 
 #include <vtkCellArray.h>
@@ -15,6 +18,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <map>
@@ -133,6 +137,74 @@ inline double SignedVolume(const std::vector<foldingmeshes::Vec3>& p,
   for (const foldingmeshes::Triangle& f : t)
     v += p[f[0]].dot(p[f[1]].cross(p[f[2]])) / 6.0;
   return v;
+}
+
+// Brute-force distances and a folding helper for the tree tests.
+using foldingmeshes::FoldingTree;
+using foldingmeshes::FoldingTreeOptions;
+using foldingmeshes::Triangle;
+using foldingmeshes::TriangleMesh;
+using foldingmeshes::UnfoldedMesh;
+using foldingmeshes::Vec3;
+
+/// Brute force (samples: vertices and face centroids): largest distance from the vertices and face
+/// centroids of A to the triangles of B.
+inline double OneSided(const std::vector<Vec3>& pa,
+  const std::vector<Triangle>& ta,
+  const std::vector<Vec3>& pb,
+  const std::vector<Triangle>& tb)
+{
+  std::vector<Vec3> samples = pa;
+  for (const Triangle& t : ta)
+    samples.push_back((pa[t[0]] + pa[t[1]] + pa[t[2]]) / 3.0);
+  std::vector<Vec3> lo, hi;
+  for (const Triangle& t : tb)
+  {
+    lo.push_back(pb[t[0]].cwiseMin(pb[t[1]]).cwiseMin(pb[t[2]]));
+    hi.push_back(pb[t[0]].cwiseMax(pb[t[1]]).cwiseMax(pb[t[2]]));
+  }
+  double worst = 0.0;
+  size_t hint = 0;
+  for (const Vec3& q : samples)
+  {
+    const Triangle& h = tb[hint];
+    double best2 =
+      foldingmeshes::ClosestPointTriangle(q, pb[h[0]], pb[h[1]], pb[h[2]]).squaredDistance;
+    for (size_t f = 0; f < tb.size(); ++f)
+    {
+      const Vec3 d = (lo[f] - q).cwiseMax(q - hi[f]).cwiseMax(Vec3::Zero());
+      if (d.squaredNorm() >= best2)
+        continue;
+      const Triangle& t = tb[f];
+      const double d2 =
+        foldingmeshes::ClosestPointTriangle(q, pb[t[0]], pb[t[1]], pb[t[2]]).squaredDistance;
+      if (d2 < best2)
+      {
+        best2 = d2;
+        hint = f;
+      }
+    }
+    worst = std::max(worst, std::sqrt(best2));
+  }
+  return worst;
+}
+
+/// Symmetric Hausdorff distance between a and b, sampled like OneSided.
+inline double Hausdorff(const TriangleMesh& a, const UnfoldedMesh& b)
+{
+  return std::max(OneSided(a.points, a.triangles, b.points, b.triangles),
+    OneSided(b.points, b.triangles, a.points, a.triangles));
+}
+
+/// BuildFoldingTree with root epsilon `epsilon`; exits on failure.
+inline FoldingTree Fold(const TriangleMesh& m, double epsilon, FoldingTreeOptions o = {})
+{
+  o.epsilon = epsilon;
+  FoldingTree tree;
+  std::string error;
+  const bool ok = foldingmeshes::BuildFoldingTree(m, {}, o, tree, error);
+  REQUIRE(ok, "BuildFoldingTree failed: " << error);
+  return tree;
 }
 }
 

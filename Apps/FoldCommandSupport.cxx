@@ -1,0 +1,266 @@
+// Shared parts of the fold / unfold / roundtrip commands: arguments, running a filter with
+// progress and error capture, tree files, field values, pictures.
+#include "FoldCommandSupport.h"
+
+#include "MeshPicture.h"
+
+#include <vtkCallbackCommand.h>
+#include <vtkCommand.h>
+#include <vtkDataArray.h>
+#include <vtkExecutive.h>
+#include <vtkFieldData.h>
+#include <vtkNew.h>
+#include <vtkRenderWindow.h>
+#include <vtkXMLMultiBlockDataReader.h>
+#include <vtkXMLMultiBlockDataWriter.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <iostream>
+#include <sstream>
+#include <stdexcept>
+
+namespace foldingmeshes
+{
+namespace cli
+{
+namespace
+{
+double ParseNumber(const std::string& what,
+  const std::string& v,
+  double lo,
+  double hi,
+  bool positive)
+{
+  char* end = nullptr;
+  const double x = std::strtod(v.c_str(), &end);
+  if (end == v.c_str() || *end != '\0' || !(x >= lo && x <= hi) || (positive && !(x > 0.0)))
+  {
+    std::ostringstream msg;
+    msg << what << " needs a number" << (positive ? " > 0" : "") << " in [" << lo << ", " << hi
+        << "], got '" << v << "'";
+    throw std::runtime_error(msg.str());
+  }
+  return x;
+}
+}
+
+FoldSettings ParseFoldArguments(int argc, char* argv[])
+{
+  FoldSettings f;
+  for (int i = 0; i < argc; ++i)
+  {
+    const std::string arg = argv[i];
+    auto value = [&](const char* what) -> std::string
+    {
+      if (i + 1 >= argc)
+        throw std::runtime_error(std::string("missing value after ") + what);
+      return argv[++i];
+    };
+    if (arg == "--help" || arg == "-h")
+    {
+      std::cout << Usage;
+      std::exit(0);
+    }
+    else if (arg == "--tolerance")
+    {
+      f.tolerance = ParseNumber(arg, value("--tolerance"), 1e-12, 1.0, true);
+      f.absolute = false;
+    }
+    else if (arg == "--absolute-tolerance")
+    {
+      f.tolerance = ParseNumber(arg, value("--absolute-tolerance"), 1e-12, 1e30, true);
+      f.absolute = true;
+    }
+    else if (arg == "--keep")
+    {
+      const std::string k = value("--keep");
+      if (k != "more" && k != "fewer")
+        throw std::runtime_error("--keep must be more or fewer, got '" + k + "'");
+      f.keep =
+        k == "fewer" ? vtkFoldingTreeBuilder::FEWER_FACES : vtkFoldingTreeBuilder::MORE_FACES;
+    }
+    else if (arg == "--min-area-fraction")
+      f.minAreaFraction = ParseNumber(arg, value("--min-area-fraction"), 0.0, 1.0, false);
+    else if (arg == "--max-folds")
+    {
+      const std::string v = value("--max-folds");
+      const double n = ParseNumber(arg, v, 0, 63, false);
+      if (n != std::floor(n))
+        throw std::runtime_error("--max-folds needs an integer in [0, 63], got '" + v + "'");
+      f.maxFolds = static_cast<int>(n);
+    }
+    else if (arg == "--tight-symmetry")
+      f.tightSymmetry = true;
+    else if (arg == "--keep-projected-points")
+      f.keepProjectedPoints = true;
+    else if (arg == "--outdir")
+      f.outdir = value("--outdir");
+    else if (arg == "--json")
+      f.json = true;
+    else if (arg == "--quiet")
+      f.quiet = true;
+    else if (!arg.empty() && arg[0] == '-')
+      throw std::runtime_error("unknown option '" + arg + "'");
+    else if (f.meshPath.empty())
+      f.meshPath = arg;
+    else
+      throw std::runtime_error("more than one mesh given ('" + arg + "')");
+  }
+  if (f.meshPath.empty())
+    throw std::runtime_error("no mesh given");
+  return f;
+}
+
+/// Runs `algorithm` with error capture and optional progress; false with the message.
+bool RunFilter(vtkAlgorithm* algorithm, const char* label, bool quiet, std::string& error)
+{
+  ErrorCollector errors;
+  vtkNew<vtkCallbackCommand> onError;
+  onError->SetCallback(&ErrorCollector::OnError);
+  onError->SetClientData(&errors);
+  const unsigned long errorTag = algorithm->AddObserver(vtkCommand::ErrorEvent, onError);
+  ProgressPrinter progress;
+  progress.label = label;
+  vtkNew<vtkCallbackCommand> onProgress;
+  onProgress->SetCallback(&ProgressPrinter::OnProgress);
+  onProgress->SetClientData(&progress);
+  unsigned long progressTag = 0;
+  if (!quiet)
+    progressTag = algorithm->AddObserver(vtkCommand::ProgressEvent, onProgress);
+  const int ok = algorithm->GetExecutive()->Update();
+  if (!quiet)
+  {
+    std::fprintf(stderr, "\n");
+    algorithm->RemoveObserver(progressTag);
+  }
+  algorithm->RemoveObserver(errorTag);
+  if (!ok || !errors.messages.empty())
+  {
+    error = errors.messages.empty() ? std::string(label) + " failed" : errors.messages;
+    while (!error.empty() && error.back() == '\n')
+      error.pop_back();
+    return false;
+  }
+  return true;
+}
+
+void ConfigureBuilder(vtkFoldingTreeBuilder* builder, const FoldSettings& f)
+{
+  builder->SetTolerance(f.tolerance);
+  builder->SetToleranceMode(
+    f.absolute ? vtkFoldingTreeBuilder::ABSOLUTE : vtkFoldingTreeBuilder::RELATIVE_TO_DIAGONAL);
+  builder->SetKeepSide(f.keep);
+  builder->SetMinimumAreaFraction(f.minAreaFraction);
+  builder->SetMaximumFolds(f.maxFolds);
+  builder->SetRequireTightSymmetry(f.tightSymmetry);
+}
+
+/// A number of the tree's "Tree" information block (block 1), or `fallback`.
+double TreeValue(vtkMultiBlockDataSet* tree, const char* name, double fallback)
+{
+  auto* info = tree ? vtkPolyData::SafeDownCast(tree->GetBlock(1)) : nullptr;
+  vtkDataArray* a = info ? info->GetFieldData()->GetArray(name) : nullptr;
+  return a && a->GetNumberOfTuples() > 0 ? a->GetTuple1(0) : fallback;
+}
+
+double FieldValue(vtkPolyData* mesh, const char* name, double fallback)
+{
+  vtkDataArray* a = mesh->GetFieldData()->GetArray(name);
+  return a && a->GetNumberOfTuples() > 0 ? a->GetTuple1(0) : fallback;
+}
+
+bool WriteTree(vtkMultiBlockDataSet* tree, const std::string& path, std::string& error)
+{
+  vtkNew<vtkXMLMultiBlockDataWriter> writer;
+  ErrorCollector errors;
+  vtkNew<vtkCallbackCommand> onError;
+  onError->SetCallback(&ErrorCollector::OnError);
+  onError->SetClientData(&errors);
+  writer->AddObserver(vtkCommand::ErrorEvent, onError);
+  writer->SetFileName(path.c_str());
+  writer->SetInputData(tree);
+  writer->SetDataModeToAppended();
+  writer->SetCompressorTypeToZLib();
+  if (!writer->Write() || !errors.messages.empty())
+  {
+    error = "cannot write '" + path + "'" + (errors.messages.empty() ? "" : ": " + errors.messages);
+    return false;
+  }
+  return true;
+}
+
+vtkSmartPointer<vtkMultiBlockDataSet> ReadTree(const std::string& path, std::string& error)
+{
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(path, ec))
+  {
+    error = "cannot read '" + path + "': no such file";
+    return nullptr;
+  }
+  vtkNew<vtkXMLMultiBlockDataReader> reader;
+  if (!reader->CanReadFile(path.c_str()))
+  {
+    error = "cannot read '" + path +
+      "': not a VTK XML multiblock (.vtm) file (write a tree with 'foldingmeshes fold')";
+    return nullptr;
+  }
+  reader->SetFileName(path.c_str());
+  if (!RunFilter(reader, "reading tree", true, error))
+  {
+    error = "cannot read '" + path + "': " + error;
+    return nullptr;
+  }
+  auto* tree = vtkMultiBlockDataSet::SafeDownCast(reader->GetOutputDataObject(0));
+  if (!tree || tree->GetNumberOfBlocks() == 0)
+  {
+    error = "cannot read '" + path + "': not a multiblock data set";
+    return nullptr;
+  }
+  vtkSmartPointer<vtkMultiBlockDataSet> copy = vtkSmartPointer<vtkMultiBlockDataSet>::New();
+  copy->ShallowCopy(tree);
+  return copy;
+}
+
+/// Writes a picture of `mesh` coloured by the cell array `arrayName`; skipped without a
+/// display (the returned path is then empty). False (with error) when it cannot be written.
+bool WriteCategoryPicture(vtkPolyData* mesh,
+  const char* arrayName,
+  std::string& picture,
+  std::string& error)
+{
+  if (!std::getenv("DISPLAY"))
+  {
+    std::cerr << "foldingmeshes: no display, picture skipped (run under xvfb-run -a)\n";
+    picture.clear();
+    return true;
+  }
+  auto window = foldingmeshes::MakeCategoryScene(mesh, arrayName, 800, 600);
+  return foldingmeshes::WritePicture(window, picture, error);
+}
+
+std::string TreeStem(const std::string& path)
+{
+  std::string stem = std::filesystem::path(path).stem().string();
+  const std::string suffix = "_tree";
+  if (stem.size() > suffix.size() &&
+    stem.compare(stem.size() - suffix.size(), suffix.size(), suffix) == 0)
+    stem.erase(stem.size() - suffix.size());
+  return stem;
+}
+
+bool MakeOutdir(const std::string& outdir, std::string& error)
+{
+  std::error_code ec;
+  std::filesystem::create_directories(outdir, ec);
+  if (ec || !std::filesystem::is_directory(outdir))
+  {
+    error = "cannot create folder '" + outdir + "'" + (ec ? ": " + ec.message() : "");
+    return false;
+  }
+  return true;
+}
+}
+}

@@ -1,0 +1,65 @@
+// Shared parts of the fold / unfold / roundtrip commands (FoldCommands.cxx,
+// RoundtripCommand.cxx).
+#ifndef foldingmeshes_FoldCommandSupport_h
+#define foldingmeshes_FoldCommandSupport_h
+
+#include "CommandLine.h"
+#include "vtkFoldingTreeBuilder.h"
+
+#include <vtkAlgorithm.h>
+#include <vtkMultiBlockDataSet.h>
+#include <vtkPolyData.h>
+#include <vtkSmartPointer.h>
+
+#include <string>
+
+namespace foldingmeshes
+{
+namespace cli
+{
+struct FoldSettings
+{
+  std::string meshPath, outdir = ".";
+  bool json = false, quiet = false;
+  double tolerance = 0.02;
+  bool absolute = false;
+  int keep = vtkFoldingTreeBuilder::MORE_FACES;
+  double minAreaFraction = 0.05;
+  int maxFolds = 8;
+  bool tightSymmetry = false;
+  bool keepProjectedPoints = false; // roundtrip's unfolder: RemoveProjectedPoints off
+};
+
+/// The arguments of fold / unfold / roundtrip; throws std::runtime_error on a bad one.
+FoldSettings ParseFoldArguments(int argc, char* argv[]);
+
+/// Runs `algorithm` with error capture and optional progress; false with the message.
+bool RunFilter(vtkAlgorithm* algorithm, const char* label, bool quiet, std::string& error);
+
+/// The builder's parameters from the settings.
+void ConfigureBuilder(vtkFoldingTreeBuilder* builder, const FoldSettings& f);
+
+/// A number of the tree's "Tree" information block (block 1), or `fallback`.
+double TreeValue(vtkMultiBlockDataSet* tree, const char* name, double fallback = 0.0);
+
+/// A number of the mesh's field data, or `fallback`.
+double FieldValue(vtkPolyData* mesh, const char* name, double fallback = 0.0);
+
+bool WriteTree(vtkMultiBlockDataSet* tree, const std::string& path, std::string& error);
+vtkSmartPointer<vtkMultiBlockDataSet> ReadTree(const std::string& path, std::string& error);
+
+/// Writes a picture of `mesh` coloured by the cell array `arrayName`; skipped without a
+/// display (the returned path is then empty). False (with error) when it cannot be written.
+bool WriteCategoryPicture(vtkPolyData* mesh,
+  const char* arrayName,
+  std::string& picture,
+  std::string& error);
+
+/// The file stem of a tree path without its "_tree" suffix.
+std::string TreeStem(const std::string& path);
+
+bool MakeOutdir(const std::string& outdir, std::string& error);
+}
+}
+
+#endif
