@@ -40,8 +40,18 @@ FaceTree::FaceTree(const PreparedMesh& mesh)
     face.c = mesh.points[t[2]];
     face.center = (face.a + face.b + face.c) / 3.0;
     face.radius = std::sqrt(std::max({ (face.a - face.center).squaredNorm(),
-      (face.b - face.center).squaredNorm(), (face.c - face.center).squaredNorm() }));
+      (face.b - face.center).squaredNorm(),
+      (face.c - face.center).squaredNorm() }));
     face.regular = IsRegularTriangle(face.a, face.b, face.c);
+    // The unit normal's direction is off by about 1e-16 L^2 / |cross| radians (L: the longest
+    // edge): below 1e-9 unless the face is a sliver, which keeps the sphere bound.
+    const Vec3 cross = (face.b - face.a).cross(face.c - face.a);
+    const double longest2 = std::max({ (face.b - face.a).squaredNorm(),
+      (face.c - face.a).squaredNorm(),
+      (face.c - face.b).squaredNorm() });
+    face.planeBound = face.regular && cross.squaredNorm() > 1e-12 * longest2 * longest2;
+    face.normal = face.planeBound ? Vec3(cross.normalized()) : Vec3::Zero();
+
     this->OrderIndex[f] = static_cast<int>(k);
   }
 }
@@ -56,12 +66,30 @@ ClosestPointOnTriangle FaceTree::ClosestPoint(const Vec3& p, int k) const
 bool FaceTree::Beyond(const Vec3& p, int k, double best2) const
 {
   const PackedFace& face = this->Packed[k];
-  const double d2 = (p - face.center).squaredNorm();
+  const Vec3 pc = p - face.center;
+  const double d2 = pc.squaredNorm();
   const double r = face.radius;
-  if (d2 <= r * r)
+  const double limit = best2 * (1.0 + 1e-9);
+  if (!face.planeBound)
+  {
+    if (d2 <= r * r)
+      return false;
+    const double gap = std::sqrt(d2) - r; // <= the distance to the triangle
+    return gap > 0.0 && gap * gap > limit;
+  }
+  // |p - x|^2 = h^2 + |q - x|^2 for x on the plane (q: the foot of p), |q - x| >= rho - r.
+  // With the normal within 1e-9 radians (constructor) the computed bound, and the computed
+  // distance of any point of the face, are within 1e-8 (|pc| + r)^2 of the exact ones.
+  const double h = face.normal.dot(pc);
+  const double h2 = h * h;
+  const double slack = 1e-8 * (d2 + r * r) * 2.0; // >= 1e-8 (|pc| + r)^2
+  if (h2 > limit + slack)
+    return true;
+  const double rho2 = d2 - h2;
+  if (rho2 <= r * r)
     return false;
-  const double gap = std::sqrt(d2) - r; // <= the distance to the triangle
-  return gap > 0.0 && gap * gap > best2 * (1.0 + 1e-9);
+  const double lateral = std::sqrt(rho2) - r;
+  return h2 + lateral * lateral > limit + slack;
 }
 
 int FaceTree::SubtreeNodes(int count)
@@ -141,19 +169,23 @@ void FaceTree::Build(int first, int count, int index)
     });
 }
 
-
-
 template <typename Prune, typename Visit>
 void FaceTree::Traverse(const Vec3& p, const double& best2, Prune prune, Visit visit) const
 {
-  // Depth-first, nearer child first; `best2` shrinks as `visit` finds closer faces.
+  // Depth-first, nearer child first; `best2` shrinks as `visit` finds closer faces. Each
+  // node's box distance is computed once, when its parent pushes it.
   int stack[128];
+  double stackDistance2[128];
   int top = 0;
-  stack[top++] = 0;
+  stack[top] = 0;
+  stackDistance2[top++] = BoxDistance2(this->Nodes[0].lo, this->Nodes[0].hi, p);
   while (top > 0)
   {
-    const Node& node = this->Nodes[stack[--top]];
-    if (BoxDistance2(node.lo, node.hi, p) > best2 || prune(node))
+    --top;
+    if (stackDistance2[top] > best2)
+      continue;
+    const Node& node = this->Nodes[stack[top]];
+    if (prune(node))
       continue;
     if (node.count > 0)
     {
@@ -163,16 +195,11 @@ void FaceTree::Traverse(const Vec3& p, const double& best2, Prune prune, Visit v
     }
     const double dl = BoxDistance2(this->Nodes[node.left].lo, this->Nodes[node.left].hi, p);
     const double dr = BoxDistance2(this->Nodes[node.right].lo, this->Nodes[node.right].hi, p);
-    if (dl <= dr)
-    {
-      stack[top++] = node.right;
-      stack[top++] = node.left;
-    }
-    else
-    {
-      stack[top++] = node.left;
-      stack[top++] = node.right;
-    }
+    const bool leftFirst = dl <= dr;
+    stack[top] = leftFirst ? node.right : node.left;
+    stackDistance2[top++] = leftFirst ? dr : dl;
+    stack[top] = leftFirst ? node.left : node.right;
+    stackDistance2[top++] = leftFirst ? dl : dr;
   }
 }
 
@@ -273,20 +300,24 @@ int FaceTree::NearestCentroidFace(const Vec3& p) const
   double best2 = std::numeric_limits<double>::infinity();
   if (this->Nodes.empty())
     return bestFace;
+  // As Traverse, on the boxes of the face centroids.
   int stack[128];
+  double stackDistance2[128];
   int top = 0;
-  stack[top++] = 0;
+  stack[top] = 0;
+  stackDistance2[top++] = BoxDistance2(this->Nodes[0].clo, this->Nodes[0].chi, p);
   while (top > 0)
   {
-    const Node& node = this->Nodes[stack[--top]];
-    if (BoxDistance2(node.clo, node.chi, p) > best2)
+    --top;
+    if (stackDistance2[top] > best2)
       continue;
+    const Node& node = this->Nodes[stack[top]];
     if (node.count > 0)
     {
       for (int k = node.first; k < node.first + node.count; ++k)
       {
         const int f = this->Order[k];
-        const double d2 = (Mesh.faceCentroids[f] - p).squaredNorm();
+        const double d2 = (this->Packed[k].center - p).squaredNorm();
         if (d2 < best2 || (d2 == best2 && f < bestFace))
         {
           best2 = d2;
@@ -297,16 +328,11 @@ int FaceTree::NearestCentroidFace(const Vec3& p) const
     }
     const double dl = BoxDistance2(this->Nodes[node.left].clo, this->Nodes[node.left].chi, p);
     const double dr = BoxDistance2(this->Nodes[node.right].clo, this->Nodes[node.right].chi, p);
-    if (dl <= dr)
-    {
-      stack[top++] = node.right;
-      stack[top++] = node.left;
-    }
-    else
-    {
-      stack[top++] = node.left;
-      stack[top++] = node.right;
-    }
+    const bool leftFirst = dl <= dr;
+    stack[top] = leftFirst ? node.right : node.left;
+    stackDistance2[top++] = leftFirst ? dr : dl;
+    stack[top] = leftFirst ? node.left : node.right;
+    stackDistance2[top++] = leftFirst ? dl : dr;
   }
   return bestFace;
 }

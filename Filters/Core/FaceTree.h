@@ -86,22 +86,30 @@ private:
     return d.squaredNorm();
   }
 
-  /// A face's corners and bounding sphere, stored in tree order (Order) for the leaf tests.
+  /// A face's corners, bounding sphere and plane, stored in tree order (Order) for the leaf
+  /// tests.
   struct PackedFace
   {
     Vec3 a, b, c;
-    Vec3 center;   ///< centroid
-    double radius; ///< largest distance of a corner to the centroid
-    bool regular;  ///< IsRegularTriangle(a, b, c)
+    Vec3 center;     ///< centroid
+    Vec3 normal;     ///< unit normal if planeBound, else zero
+    double radius;   ///< largest distance of a corner to the centroid
+    bool regular;    ///< IsRegularTriangle(a, b, c)
+    bool planeBound; ///< `normal` is accurate enough for the plane bound of Beyond
   };
   /// Closest point on the packed face k (index into Order), without the sphere test.
   ClosestPointOnTriangle ClosestPoint(const Vec3& p, int k) const;
-  /// True when the bounding sphere of packed face k is farther than sqrt(best2) from p
-  /// (with a relative margin, so a face at exactly that distance is never skipped).
+  /// True when packed face k is provably farther than sqrt(best2) from p. The face lies in
+  /// its plane within `radius` of its centroid, so with h the height of p over the plane and
+  /// rho the distance of p's foot on the plane from the centroid, every point of the face
+  /// is at least sqrt(h^2 + max(0, rho - radius)^2) away (for a slanted sliver without an
+  /// accurate normal: the bounding sphere's distance). The margins are well above the
+  /// rounding errors, so a face whose computed distance could be at most sqrt(best2) is
+  /// never skipped: the results are exactly those of testing every face.
   bool Beyond(const Vec3& p, int k, double best2) const;
 
   const PreparedMesh& Mesh;
-  std::vector<int> Order; ///< face ids, leaf ranges
+  std::vector<int> Order;         ///< face ids, leaf ranges
   std::vector<PackedFace> Packed; ///< per Order entry
   std::vector<int> OrderIndex;    ///< face id -> index into Order (-1: degenerate)
   std::vector<Node> Nodes;

@@ -12,6 +12,11 @@
 //   gets plate B (the plain closest face is excluded), a normal at 90 degrees gets nothing.
 // - regression: a minimal fan where the cone half-angle + compatibility angle exceed 180
 //   degrees (the normal-cone pruning used to skip compatible faces there).
+// - exactness of the pruning: on a fine plate (hundreds of coplanar faces: exact ties) with
+//   slivers, and on the blob, queries far off the surface (where the plane bound of
+//   FaceTree::Beyond prunes most faces) give bit for bit the face and distance of an exhaustive
+//   scan with the tree's own per-face rule (closest point, then the interpolated normal test
+//   n . q >= cos * |n|, ties: lowest id), with and without a hint face.
 #include "CoreTestUtilities.h"
 #include "FaceTree.h"
 #include "PointTriangleDistance.h"
@@ -208,6 +213,73 @@ void CheckMesh(const char* name,
     name << ": " << centroidMismatches << " NearestCentroidFace mismatches");
 }
 
+/// Exhaustive scan with FaceTree's per-face rule: the result the tree must give bit for bit.
+FaceTree::Hit ExhaustiveCompatible(const PreparedMesh& m,
+  const Vec3& p,
+  const Vec3& n,
+  double cosLimit,
+  double maxDistance)
+{
+  FaceTree::Hit hit;
+  double best2 = maxDistance * maxDistance;
+  for (int f = 0; f < m.NumberOfFaces(); ++f)
+  {
+    if (m.faceDegenerate[f])
+      continue;
+    const auto& t = m.triangles[f];
+    const auto cp = ClosestPointTriangle(p, m.points[t[0]], m.points[t[1]], m.points[t[2]]);
+    if (cp.squaredDistance > best2 || (cp.squaredDistance == best2 && hit.face >= 0))
+      continue; // ascending ids: on a tie the earlier (lower) id stays
+    const Vec3 ni = cp.barycentric[0] * m.vertexNormals[t[0]] +
+      cp.barycentric[1] * m.vertexNormals[t[1]] + cp.barycentric[2] * m.vertexNormals[t[2]];
+    const double len = ni.norm();
+    if (!(len > 0.0 && ni.dot(n) >= cosLimit * len))
+      continue;
+    best2 = cp.squaredDistance;
+    hit.face = f;
+    hit.point = cp.point;
+  }
+  if (hit.face >= 0)
+    hit.distance = std::sqrt(best2);
+  return hit;
+}
+
+/// Queries at heights of up to `farthest` above or below random surface points, with the
+/// surface normal (compatible) or a tilted one; the tree's answers must equal the exhaustive
+/// scan's exactly, with no hint, the answer as hint, and a random hint.
+void CheckExact(const char* name, const PreparedMesh& m, int queries, double farthest)
+{
+  const FaceTree tree(m);
+  const double cos45 = std::cos(kPi / 4);
+  int mismatches = 0, hits = 0;
+  for (int q = 0; q < queries; ++q)
+  {
+    const int v = static_cast<int>(rng() % m.NumberOfPoints());
+    const double height = U(-farthest, farthest) * m.diagonal;
+    const Vec3 p =
+      m.points[v] + height * m.vertexNormals[v] + U(0, 0.01) * m.diagonal * RandomUnit();
+    const Vec3 n = q % 3 == 0 ? RandomUnit()
+                              : Vec3((m.vertexNormals[v] + U(0, 0.6) * RandomUnit()).normalized());
+    const double maxDistance = q % 2 == 0 ? kInf : 0.5 * farthest * m.diagonal;
+    const FaceTree::Hit ref = ExhaustiveCompatible(m, p, n, cos45, maxDistance);
+    hits += ref.face >= 0;
+    const int hints[3] = { -1, ref.face, static_cast<int>(rng() % m.NumberOfFaces()) };
+    for (int hint : hints)
+    {
+      const FaceTree::Hit hit = tree.ClosestCompatibleFace(p, n, cos45, maxDistance, hint);
+      const bool same = hit.face == ref.face && hit.distance == ref.distance &&
+        (ref.face < 0 || hit.point == ref.point);
+      if (!same && ++mismatches <= 5)
+        EXPECT(false,
+          name << ": query " << p.transpose() << " n " << n.transpose() << " hint " << hint
+               << ": tree face " << hit.face << " d " << hit.distance << ", exhaustive face "
+               << ref.face << " d " << ref.distance);
+    }
+  }
+  EXPECT(mismatches == 0, name << ": " << mismatches << " answers differ from the exhaustive scan");
+  EXPECT(hits > queries / 3, name << ": only " << hits << " of " << queries << " queries hit");
+}
+
 TriangleMesh Plate(double z, bool up, int n)
 {
   TriangleMesh m;
@@ -312,6 +384,23 @@ int main()
     const FaceTree::Hit t50 = tree.ClosestCompatibleFace(
       p, Vec3(std::sin(50 * kPi / 180), 0, -std::cos(50 * kPi / 180)), cos45, kInf);
     EXPECT(t50.face == -1, "plates, normal 50 degrees from -z: face " << t50.face);
+  }
+  {
+    // A fine plate (coplanar faces: exact distance ties) with a row of slivers (points pushed
+    // almost onto the diagonal of their quad), and the bilateral blob, queried far off the
+    // surface.
+    TriangleMesh plate = Plate(0.0, true, 24);
+    for (int j = 1; j < 24; j += 2)
+    {
+      // Point (12, j) almost onto the segment (11, j) - (12, j + 1): triangle (11, j),
+      // (12, j), (12, j + 1) becomes a sliver 1e-7 of an edge wide.
+      plate.points[12 * 25 + j] = Vec3(11.5 / 24, (j + 0.5 - 1e-7) / 24, 0.0);
+    }
+    CheckExact("fine plate with slivers", coretest::Prepare(plate), 400, 0.3);
+    CheckExact("bilateral blob, far queries",
+      coretest::Prepare(coretest::ToTriangleMesh(MakeBilateralBlob(3000).mesh)),
+      400,
+      0.15);
   }
   std::printf("TestFaceTree: %.2f s\n", coretest::Seconds(t0));
   return coretest::Finish("TestFaceTree");
