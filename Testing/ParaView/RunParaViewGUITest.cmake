@@ -1,5 +1,5 @@
 # Runs the ParaView client on a QtTesting XML script and checks the outcome.
-#   cmake -DPARAVIEW=<paraview> [-DXVFB_RUN=<xvfb-run>] -DPLUGIN_DIR=<dir> -DMESH=<file>
+#   cmake -DPARAVIEW=<paraview> [-DLAUNCHER=<xvfb-run|-n|N|-a>] -DPLUGIN_DIR=<dir> -DMESH=<file>
 #         -DSCRIPT=<xml> -DBASELINE=<png> -DTEST_DIR=<dir> -DEXPECT=<success|missing-plugin>
 #         -P RunParaViewGUITest.cmake
 # EXPECT=success: playback succeeds and the final view matches BASELINE (exit code 0).
@@ -12,10 +12,8 @@ foreach (var IN ITEMS PARAVIEW PLUGIN_DIR MESH SCRIPT BASELINE TEST_DIR EXPECT)
   endif ()
 endforeach ()
 file(MAKE_DIRECTORY "${TEST_DIR}")
-set(launcher)
-if (XVFB_RUN)
-  set(launcher "${XVFB_RUN}" -a)
-endif ()
+# LAUNCHER: the display launcher ("|"-separated), see CMake/FoldingMeshesDisplay.cmake.
+string(REPLACE "|" ";" launcher "${LAUNCHER}")
 # --dr: no user settings; --data opens the mesh with the reader for its extension.
 execute_process(
   COMMAND ${launcher} "${PARAVIEW}" --dr

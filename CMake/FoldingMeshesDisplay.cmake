@@ -1,0 +1,25 @@
+# foldingmeshes_display_launcher(<out-var>)
+#
+# The command prefix for a test that renders: `xvfb-run -n <N> -a`, with a server number N of
+# its own (100, 101, ... in the order the tests are added), or nothing without xvfb-run.
+# Plain `xvfb-run -a` starts every test at display 99, so rendering tests run back to back
+# reuse one display number, and xvfb-run kills its Xvfb on exit without waiting for it: a
+# server still shutting down can remove the socket of the next test's server on the same
+# number ("bad X server connection"). Numbers of their own avoid that; -a still moves on to a
+# free number if N is taken. The tests also hold RESOURCE_LOCK xvfb, so `ctest -j` never
+# starts two X servers at one moment. (X servers of other programs on the machine, which
+# xvfb-run only sees by their lock files, can still collide; CI runs alone.)
+find_program(FOLDINGMESHES_XVFB_RUN xvfb-run)
+function(foldingmeshes_display_launcher out)
+  if (NOT FOLDINGMESHES_XVFB_RUN)
+    set(${out} "" PARENT_SCOPE)
+    return ()
+  endif ()
+  get_property(number GLOBAL PROPERTY FOLDINGMESHES_NEXT_DISPLAY)
+  if (NOT number)
+    set(number 100)
+  endif ()
+  math(EXPR next "${number} + 1")
+  set_property(GLOBAL PROPERTY FOLDINGMESHES_NEXT_DISPLAY ${next})
+  set(${out} "${FOLDINGMESHES_XVFB_RUN};-n;${number};-a" PARENT_SCOPE)
+endfunction()
