@@ -91,4 +91,16 @@ void SymmetricSurfaceDistance(vtkPolyData* a, vtkPolyData* b, double& hausdorff,
   hausdorff = c.hausdorff;
   mean = c.mean;
 }
+
+void CertifiedSurfaceDistance(vtkPolyData* a,
+  vtkPolyData* b,
+  double tolerance,
+  double& lower,
+  double& upper)
+{
+  const HausdorffBounds bounds =
+    SymmetricHausdorffBounds(ToTriangles(a), ToTriangles(b), tolerance);
+  lower = bounds.lower;
+  upper = bounds.upper;
+}
 }

@@ -32,6 +32,17 @@ EdgeCounts CountEdges(vtkPolyData* mesh);
  * diagonal.
  */
 void SymmetricSurfaceDistance(vtkPolyData* a, vtkPolyData* b, double& hausdorff, double& mean);
+
+/**
+ * The symmetric Hausdorff distance between the polygon surfaces of a and b over every point of
+ * both (not only samples), bracketed to within `tolerance` (a length): lower, a distance
+ * measured; upper, proved (the core's SymmetricHausdorffBounds, Filters/Core/SurfaceDistance.h).
+ */
+void CertifiedSurfaceDistance(vtkPolyData* a,
+  vtkPolyData* b,
+  double tolerance,
+  double& lower,
+  double& upper);
 }
 
 #endif

@@ -1,6 +1,7 @@
 #include "SurfaceDistance.h"
 
 #include "FaceTree.h"
+#include "PointTriangleDistance.h"
 
 #include <vtkSMPTools.h>
 
@@ -52,6 +53,34 @@ std::vector<double> SurfaceDistanceQuery::Distances(const std::vector<Vec3>& poi
         d[i] = this->Distance(points[i]);
     });
   return d;
+}
+
+void SurfaceDistanceQuery::Closest(const std::vector<Vec3>& points,
+  std::vector<double>& distances,
+  std::vector<int>& faces) const
+{
+  distances.assign(points.size(), std::numeric_limits<double>::infinity());
+  faces.assign(points.size(), -1);
+  vtkSMPTools::For(0,
+    static_cast<vtkIdType>(points.size()),
+    [&](vtkIdType begin, vtkIdType end)
+    {
+      for (vtkIdType i = begin; i < end; ++i)
+      {
+        const FaceTree::Hit hit =
+          this->Impl->Tree->ClosestFace(points[i], std::numeric_limits<double>::infinity());
+        distances[i] = hit.distance;
+        faces[i] = hit.face;
+      }
+    });
+}
+
+double SurfaceDistanceQuery::FaceDistance(const Vec3& p, int face) const
+{
+  const PreparedMesh& m = this->Impl->Mesh;
+  const Triangle& t = m.triangles[face];
+  return std::sqrt(
+    ClosestPointTriangle(p, m.points[t[0]], m.points[t[1]], m.points[t[2]]).squaredDistance);
 }
 
 std::vector<Vec3> SurfaceSamplePoints(const TriangleMesh& mesh)

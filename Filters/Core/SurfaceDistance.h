@@ -29,6 +29,12 @@ public:
   double Distance(const Vec3& p) const;
   /// Distances of all `points`, in parallel (vtkSMPTools; the result does not depend on it).
   std::vector<double> Distances(const std::vector<Vec3>& points) const;
+  /// Distances and the closest triangles (ties: lowest id; -1 for no triangle), in parallel.
+  void Closest(const std::vector<Vec3>& points,
+    std::vector<double>& distances,
+    std::vector<int>& faces) const;
+  /// Distance from p to triangle `face` of the surface.
+  double FaceDistance(const Vec3& p, int face) const;
 
 private:
   struct Internal;
@@ -62,6 +68,39 @@ struct SurfaceComparison
  * Deterministic.
  */
 SurfaceComparison CompareSurfaces(const TriangleMesh& a, const TriangleMesh& b);
+
+/// Bounds on a Hausdorff distance over whole surfaces (see DirectedHausdorffBounds).
+struct HausdorffBounds
+{
+  double lower = 0.0;        ///< a distance measured at a point of the surface
+  double upper = 0.0;        ///< proved: no point of the surface is farther
+  long long evaluations = 0; ///< point-to-surface distances computed
+};
+
+/**
+ * The directed Hausdorff distance sup over every point x of every triangle of `from` (not
+ * only sample points) of dist(x, to), bracketed: `lower` is the largest distance measured (at
+ * the vertices, the triangle centroids and the points of the subdivision below), `upper` a
+ * proof. On a (sub)triangle P with centroid c and corners v_i within r of c, two bounds hold:
+ * dist(x, to) <= dist(c) + r (the distance is 1-Lipschitz), and dist(x, to) <= dist(x, T)
+ * <= max_i dist(v_i, T) for T the triangle of `to` closest to c (the distance to one
+ * triangle is convex) - the second is exact where P lies over a single flat triangle. Branch
+ * and bound: the piece with the largest bound is split into four at its edge midpoints (in
+ * batches, the distances in parallel), until upper - lower <= tolerance or maxEvaluations
+ * distances were computed (then `upper` is still a bound, only looser). An empty `from`
+ * gives 0; an empty `to` infinity. Deterministic, for any thread count.
+ */
+HausdorffBounds DirectedHausdorffBounds(const TriangleMesh& from,
+  const SurfaceDistanceQuery& to,
+  double tolerance,
+  long long maxEvaluations = 50000000);
+
+/// Both ways: lower = max of the two lowers, upper = max of the two uppers (the symmetric
+/// Hausdorff distance between the two surfaces lies in [lower, upper]).
+HausdorffBounds SymmetricHausdorffBounds(const TriangleMesh& a,
+  const TriangleMesh& b,
+  double tolerance,
+  long long maxEvaluations = 50000000);
 }
 
 #endif

@@ -7,7 +7,11 @@
 //   the big one; the big cube's corners are sqrt(3) (s - 1) from the small one (Hausdorff);
 // - random points against a bumpy procedural mesh: equal to the brute-force minimum over all
 //   triangles (ClosestPointTriangle);
-// - the comparison is symmetric, does not depend on the SMP backend, and handles empty meshes.
+// - the comparison is symmetric, does not depend on the SMP backend, and handles empty meshes;
+// - SymmetricHausdorffBounds (over whole surfaces): exact cases bracketed within the
+//   tolerance; a coarse plate over a plate with a dip between its samples, where the sampled
+//   measure misses the farthest point: the bounds bracket a dense brute-force measure, the
+//   upper bound holds with a coarse tolerance too, and nothing depends on the SMP backend.
 #include "CoreTestUtilities.h"
 #include "PointTriangleDistance.h"
 #include "ProceduralMeshes.h"
@@ -165,6 +169,71 @@ int main()
         one.aPointDistances == two.aPointDistances,
       "blob: results depend on the SMP backend");
     EXPECT(one.hausdorff > 0.0, "blob: moved mesh at distance 0");
+  }
+  // Bounds over whole surfaces.
+  {
+    const double t = 0.0375, tol = 1e-6;
+    const TriangleMesh a = Grid(6, 1.0), b = Moved(a, Vec3(0, 0, t));
+    const HausdorffBounds plate = SymmetricHausdorffBounds(a, b, tol);
+    EXPECT(plate.lower <= t + 1e-12 && plate.upper >= t - 1e-12 && plate.upper - plate.lower <= tol,
+      "bounds, plate: [" << plate.lower << ", " << plate.upper << "] around " << t);
+    // The farthest points form a whole edge (x = 2): many pieces to settle, a coarser tolerance.
+    const HausdorffBounds sub = SymmetricHausdorffBounds(Grid(4, 1.0), Grid(8, 2.0), 1e-3);
+    EXPECT(std::abs(sub.lower - 1.0) < 1e-12 && sub.upper >= 1.0 && sub.upper - sub.lower <= 1e-3,
+      "bounds, sub-plate: [" << sub.lower << ", " << sub.upper << "], expected 1");
+  }
+  {
+    // b: the unit square at z = 0 with a pyramid dip of depth h at (0.43, 0.57); a: the square
+    // in two triangles, whose vertices and centroids are all far from the dip. From a to b.
+    const double h = 0.2;
+    TriangleMesh a;
+    a.points = { Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(1, 1, 0), Vec3(0, 1, 0) };
+    a.triangles = { { 0, 1, 2 }, { 0, 2, 3 } };
+    TriangleMesh b = a;
+    b.points.push_back(Vec3(0.43, 0.57, -h));
+    b.triangles = { { 0, 1, 4 }, { 1, 2, 4 }, { 2, 3, 4 }, { 3, 0, 4 } };
+    const SurfaceComparison sampled = CompareSurfaces(a, b);
+    // Dense brute force: a lower bound of the true distance, within the grid's spacing.
+    const SurfaceDistanceQuery toB(b);
+    double dense = 0.0;
+    {
+      const int n = 400;
+      std::vector<Vec3> points;
+      for (const Triangle& tr : a.triangles)
+        for (int i = 0; i <= n; ++i)
+          for (int j = 0; i + j <= n; ++j)
+            points.push_back((double(i) * a.points[tr[0]] + double(j) * a.points[tr[1]] +
+                               double(n - i - j) * a.points[tr[2]]) /
+              double(n));
+      for (double x : toB.Distances(points))
+        dense = std::max(dense, x);
+    }
+    const double tol = 1e-5;
+    const HausdorffBounds bounds = DirectedHausdorffBounds(a, toB, tol);
+    EXPECT(sampled.aToB < dense - 0.01,
+      "dip: the sampled measure " << sampled.aToB << " does not miss the dip (dense " << dense
+                                  << "): the case tests nothing");
+    EXPECT(bounds.upper >= dense - 1e-12,
+      "dip: upper bound " << bounds.upper << " below a measured distance " << dense);
+    EXPECT(bounds.lower >= dense - tol - 1e-12 && bounds.upper - bounds.lower <= tol,
+      "dip: bounds [" << bounds.lower << ", " << bounds.upper << "] not within " << tol
+                      << " of the dense measure " << dense);
+    const HausdorffBounds coarse = DirectedHausdorffBounds(a, toB, 0.05);
+    EXPECT(coarse.upper >= dense - 1e-12 && coarse.evaluations < bounds.evaluations,
+      "dip: coarse tolerance: upper " << coarse.upper << " (dense " << dense << "), "
+                                      << coarse.evaluations << " evaluations vs "
+                                      << bounds.evaluations);
+    vtkSMPTools::SetBackend("Sequential");
+    const HausdorffBounds one = DirectedHausdorffBounds(a, toB, tol);
+    vtkSMPTools::SetBackend("STDThread");
+    vtkSMPTools::Initialize(2);
+    const HausdorffBounds two = DirectedHausdorffBounds(a, toB, tol);
+    EXPECT(one.lower == two.lower && one.upper == two.upper && one.evaluations == two.evaluations,
+      "dip: bounds depend on the SMP backend");
+    const TriangleMesh empty;
+    EXPECT(std::isinf(SymmetricHausdorffBounds(empty, b, tol).upper) &&
+        SymmetricHausdorffBounds(empty, empty, tol).upper == 0.0,
+      "bounds: empty meshes");
   }
   // Empty meshes.
   {
