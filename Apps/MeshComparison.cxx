@@ -96,10 +96,11 @@ void CertifiedSurfaceDistance(vtkPolyData* a,
   vtkPolyData* b,
   double tolerance,
   double& lower,
-  double& upper)
+  double& upper,
+  double floor)
 {
   const HausdorffBounds bounds =
-    SymmetricHausdorffBounds(ToTriangles(a), ToTriangles(b), tolerance);
+    SymmetricHausdorffBounds(ToTriangles(a), ToTriangles(b), tolerance, 50000000, floor);
   lower = bounds.lower;
   upper = bounds.upper;
 }

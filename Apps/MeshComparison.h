@@ -36,13 +36,15 @@ void SymmetricSurfaceDistance(vtkPolyData* a, vtkPolyData* b, double& hausdorff,
 /**
  * The symmetric Hausdorff distance between the polygon surfaces of a and b over every point of
  * both (not only samples), bracketed to within `tolerance` (a length): lower, a distance
- * measured; upper, proved (the core's SymmetricHausdorffBounds, Filters/Core/SurfaceDistance.h).
+ * measured; upper, proved (the core's SymmetricHausdorffBounds, Filters/Core/SurfaceDistance.h,
+ * which also says what `floor` does).
  */
 void CertifiedSurfaceDistance(vtkPolyData* a,
   vtkPolyData* b,
   double tolerance,
   double& lower,
-  double& upper);
+  double& upper,
+  double floor = 0.0);
 }
 
 #endif

@@ -158,15 +158,17 @@ HausdorffBounds Directed(const TriangleMesh& from,
 HausdorffBounds DirectedHausdorffBounds(const TriangleMesh& from,
   const SurfaceDistanceQuery& to,
   double tolerance,
-  long long maxEvaluations)
+  long long maxEvaluations,
+  double floor)
 {
-  return Directed(from, to, tolerance, maxEvaluations, 0.0);
+  return Directed(from, to, tolerance, maxEvaluations, floor);
 }
 
 HausdorffBounds SymmetricHausdorffBounds(const TriangleMesh& a,
   const TriangleMesh& b,
   double tolerance,
-  long long maxEvaluations)
+  long long maxEvaluations,
+  double floor)
 {
   HausdorffBounds result;
   const bool aEmpty = a.triangles.empty(), bEmpty = b.triangles.empty();
@@ -177,8 +179,8 @@ HausdorffBounds SymmetricHausdorffBounds(const TriangleMesh& a,
   }
   const SurfaceDistanceQuery toA(a), toB(b);
   // The second direction needs no bound below what the first one measured.
-  const HausdorffBounds ab = Directed(a, toB, tolerance, maxEvaluations, 0.0);
-  const HausdorffBounds ba = Directed(b, toA, tolerance, maxEvaluations, ab.lower);
+  const HausdorffBounds ab = Directed(a, toB, tolerance, maxEvaluations, floor);
+  const HausdorffBounds ba = Directed(b, toA, tolerance, maxEvaluations, std::max(floor, ab.lower));
   result.lower = std::max(ab.lower, ba.lower);
   result.upper = std::max(ab.upper, ba.upper);
   result.evaluations = ab.evaluations + ba.evaluations;

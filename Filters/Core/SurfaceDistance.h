@@ -93,14 +93,21 @@ struct HausdorffBounds
 HausdorffBounds DirectedHausdorffBounds(const TriangleMesh& from,
   const SurfaceDistanceQuery& to,
   double tolerance,
-  long long maxEvaluations = 50000000);
+  long long maxEvaluations = 50000000,
+  double floor = 0.0);
 
-/// Both ways: lower = max of the two lowers, upper = max of the two uppers (the symmetric
-/// Hausdorff distance between the two surfaces lies in [lower, upper]).
+/**
+ * Both ways: lower = max of the two lowers, upper = max of the two uppers (the symmetric
+ * Hausdorff distance between the two surfaces lies in [lower, upper]). `floor` (both
+ * functions): pieces are split only while their bound exceeds max(lower, floor) + tolerance,
+ * so with floor = a threshold t the bounds decide quickly whether the distance is within t
+ * (upper <= t + tolerance) or not (lower > t); below t they are then not tight.
+ */
 HausdorffBounds SymmetricHausdorffBounds(const TriangleMesh& a,
   const TriangleMesh& b,
   double tolerance,
-  long long maxEvaluations = 50000000);
+  long long maxEvaluations = 50000000,
+  double floor = 0.0);
 }
 
 #endif
