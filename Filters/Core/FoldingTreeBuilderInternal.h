@@ -2,6 +2,7 @@
 #ifndef foldingmeshes_FoldingTreeBuilderInternal_h
 #define foldingmeshes_FoldingTreeBuilderInternal_h
 
+#include "FaceTree.h"
 #include "FoldingTreeBuilder.h"
 #include "FoldingWorkMesh.h"
 #include "MeshPreparation.h"
@@ -19,6 +20,34 @@ namespace foldingmeshes
 {
 namespace treebuilder
 {
+/// The side a fold through `plane` keeps: true for the side `plane.normal` points to. Faces
+/// are counted by their centroids on each side; keepSide picks the side with more (ties: the
+/// positive one) or fewer faces.
+bool KeepsPositiveSide(const std::vector<Vec3>& points,
+  const std::vector<Triangle>& triangles,
+  const Plane& plane,
+  KeepSide keepSide);
+
+/// A FaceTree over a node's region, built on first use (most nodes' trims never need it).
+class RegionFaces
+{
+public:
+  explicit RegionFaces(const PreparedMesh& mesh)
+    : Mesh(mesh)
+  {
+  }
+  const FaceTree& Get()
+  {
+    if (!this->Tree)
+      this->Tree = std::make_unique<FaceTree>(this->Mesh);
+    return *this->Tree;
+  }
+
+private:
+  const PreparedMesh& Mesh;
+  std::unique_ptr<FaceTree> Tree;
+};
+
 class Builder
 {
 public:
@@ -48,7 +77,6 @@ private:
 
   bool Prepare(const WorkMesh& w, double eps, PreparedMesh& pm) const;
 
-  /// S minus the faces whose mirrored vertices are not within eps of S (see the header).
   /// The faces of S as a prepared mesh (face order kept) with the region's vertex normals.
   static bool PrepareSubset(const WorkMesh& w,
     const PreparedMesh& pm,
@@ -79,8 +107,16 @@ private:
     const Plane& plane,
     double eps) const;
 
+  /**
+   * S minus its faces with a vertex whose mirror image is not within eps (and, with
+   * errorBudget, its budget limit, MirrorBudget) of S, repeated until stable, keeping the
+   * largest connected part. With errorBudget, the mirror image of every face must also be
+   * within the least limit of its vertices at every point, of the node's region (`region`:
+   * pm's faces; MirroredFacesWithin), not only at its corners.
+   */
   std::vector<char> Trim(const WorkMesh& w,
     const PreparedMesh& pm,
+    RegionFaces& region,
     std::vector<char> S,
     const Plane& plane,
     double eps) const;
@@ -107,6 +143,7 @@ private:
   /// S as trimmed and polished for `plane` (see ChooseSymmetricRegion).
   std::vector<char> TrimAndPolish(const WorkMesh& w,
     const PreparedMesh& pm,
+    RegionFaces& region,
     std::vector<char> S,
     double eps,
     Plane& plane) const;

@@ -62,6 +62,21 @@ bool ProjectOntoPlanes(Vec3& x, const std::vector<Plane>& planes, double toleran
 }
 }
 
+bool KeepsPositiveSide(const std::vector<Vec3>& points,
+  const std::vector<Triangle>& triangles,
+  const Plane& plane,
+  KeepSide keepSide)
+{
+  int positive = 0, negative = 0;
+  for (const Triangle& t : triangles)
+  {
+    const double s = plane.SignedDistance((points[t[0]] + points[t[1]] + points[t[2]]) / 3.0);
+    positive += s > 0;
+    negative += s < 0;
+  }
+  return keepSide == KeepSide::MoreFaces ? positive >= negative : positive <= negative;
+}
+
 void Builder::TransferDiscardedTears(WorkMesh& w,
   const std::vector<char>& used,
   const Plane& plane,
@@ -195,17 +210,7 @@ void Builder::Fold(int index,
 {
   const FoldingTreeOptions& O = this->Options;
   const int nf = w.NumberOfFaces();
-  int positive = 0, negative = 0;
-  for (const Triangle& t : w.triangles)
-  {
-    const Vec3 c = (w.points[t[0]] + w.points[t[1]] + w.points[t[2]]) / 3.0;
-    const double s = plane.SignedDistance(c);
-    positive += s > 0;
-    negative += s < 0;
-  }
-  const bool keepPositive =
-    O.keepSide == KeepSide::MoreFaces ? positive >= negative : positive <= negative;
-  if (!keepPositive)
+  if (!KeepsPositiveSide(w.points, w.triangles, plane, O.keepSide))
     plane.normal = -plane.normal;
 
   const double snap = std::max(O.planeSnapFraction * eps, 1e-12 * this->Tree.diagonal);

@@ -5,6 +5,7 @@
 #include "CandidatePlanes.h"
 #include "MeshPreparation.h"
 #include "MirrorDistance.h"
+#include "MirroredFaceBound.h"
 #include "RegionGrowing.h"
 #include "SubsetPreparation.h"
 #include "SurfaceDistance.h"
@@ -82,6 +83,7 @@ Plane Builder::Polish(const WorkMesh& w,
 
 std::vector<char> Builder::TrimAndPolish(const WorkMesh& w,
   const PreparedMesh& pm,
+  RegionFaces& region,
   std::vector<char> S,
   double eps,
   Plane& plane) const
@@ -91,12 +93,12 @@ std::vector<char> Builder::TrimAndPolish(const WorkMesh& w,
   // Trimming keeps the faces whose mirrored vertices are within eps of S - or within the
   // error budget left there, if less (errorBudget).
   if (this->Options.trimToMirrorConsistent)
-    S = this->Trim(w, pm, S, plane, eps);
+    S = this->Trim(w, pm, region, S, plane, eps);
   if (this->Options.polishPlane)
   {
     plane = this->Polish(w, pm, S, plane, eps);
     if (this->Options.trimToMirrorConsistent)
-      S = this->Trim(w, pm, S, plane, eps);
+      S = this->Trim(w, pm, region, S, plane, eps);
   }
   return S;
 }
@@ -113,7 +115,8 @@ std::vector<char> Builder::ChooseSymmetricRegion(const WorkMesh& w,
   for (int f = 0; f < nf; ++f)
     best[f] = result.faceLabel[f] == 2;
   plane = result.plane;
-  best = this->TrimAndPolish(w, pm, std::move(best), eps, plane);
+  RegionFaces region(pm); // for the mirrored faces' bound (Trim), built when first needed
+  best = this->TrimAndPolish(w, pm, region, std::move(best), eps, plane);
   double bestArea = RegionArea(pm, best);
   if (!this->Options.trimToMirrorConsistent)
     return best;
@@ -134,7 +137,7 @@ std::vector<char> Builder::ChooseSymmetricRegion(const WorkMesh& w,
       continue;
     if (this->IsAncestorPlane(candidate, pathFolds, RegionCentroid(pm, S), eps))
       continue;
-    S = this->TrimAndPolish(w, pm, std::move(S), eps, candidate);
+    S = this->TrimAndPolish(w, pm, region, std::move(S), eps, candidate);
     const double area = RegionArea(pm, S);
     if (area > bestArea)
     {
@@ -176,8 +179,17 @@ std::vector<double> Builder::MirrorBudget(const WorkMesh& w,
   return limit;
 }
 
+namespace
+{
+/// Subdivision levels of MirroredFacesWithin: pieces 1/64 of the face's size, where a long
+/// face lies over several coplanar faces of the region (only the pieces over their shared
+/// edges need that depth).
+constexpr int MirroredFaceLevels = 6;
+}
+
 std::vector<char> Builder::Trim(const WorkMesh& w,
   const PreparedMesh& pm,
+  RegionFaces& region,
   std::vector<char> S,
   const Plane& plane,
   double eps) const
@@ -190,6 +202,7 @@ std::vector<char> Builder::Trim(const WorkMesh& w,
     MirrorDistance distances(spm, this->Options.symmetry.compatibilityAngle);
     std::vector<double> d;
     distances.Compute(plane, DistanceMetric::Fine, eps, d);
+    std::vector<double> vertexLimit(d.size(), eps);
     if (this->Options.errorBudget)
     {
       // The vertices of S are spm's points, in increasing order of their ids in w.
@@ -206,10 +219,48 @@ std::vector<char> Builder::Trim(const WorkMesh& w,
       }
       const std::vector<double> limit = this->MirrorBudget(w, ids, plane, eps);
       for (size_t k = 0; k < d.size() && k < ids.size(); ++k)
+      {
+        vertexLimit[k] = std::min(eps, limit[k]);
         if (!(d[k] < limit[k]))
           d[k] = std::numeric_limits<double>::infinity();
+      }
     }
-    const std::vector<char> ok = FacesWithVerticesWithin(spm, d, eps, true);
+    std::vector<char> ok = FacesWithVerticesWithin(spm, d, eps, true);
+    if (this->Options.errorBudget)
+    {
+      // ... and the whole mirror image of each face, not only its corners, within the limit
+      // of the node's region (a copy passing over a dip of the surface would leave the
+      // budget between its corners).
+      // Only the faces the fold will keep are copied (those with a vertex on the kept side).
+      const double keptSign =
+        KeepsPositiveSide(spm.points, spm.triangles, plane, this->Options.keepSide) ? 1.0 : -1.0;
+      std::vector<Triangle> faces;
+      std::vector<double> faceLimit;
+      std::vector<int> at;
+      for (int k = 0; k < spm.NumberOfFaces(); ++k)
+        if (ok[k] && !spm.faceDegenerate[k] &&
+          std::max({ keptSign * plane.SignedDistance(spm.points[spm.triangles[k][0]]),
+            keptSign * plane.SignedDistance(spm.points[spm.triangles[k][1]]),
+            keptSign * plane.SignedDistance(spm.points[spm.triangles[k][2]]) }) > 0.0)
+        {
+          const Triangle& t = spm.triangles[k];
+          faces.push_back(t);
+          faceLimit.push_back(
+            std::min({ vertexLimit[t[0]], vertexLimit[t[1]], vertexLimit[t[2]] }));
+          at.push_back(k);
+        }
+      const std::vector<char> within = MirroredFacesWithin(
+        pm,
+        [&]() -> const FaceTree& { return region.Get(); },
+        plane,
+        faces,
+        spm.points,
+        d,
+        faceLimit,
+        MirroredFaceLevels);
+      for (size_t j = 0; j < at.size(); ++j)
+        ok[at[j]] = within[j];
+    }
     std::vector<char> next = S;
     bool changed = false;
     int k = 0;
