@@ -214,16 +214,6 @@ public:
   int RemoveProjectedPoints(const FoldingNode* node, Piece& piece, std::vector<char>* added);
 
 private:
-  bool RetriangulateRing(const Piece& piece,
-    const std::vector<std::vector<int>>& facesOf,
-    const std::vector<char>& alive,
-    int v,
-    double limit,
-    std::vector<int>& ring,
-    std::vector<int>& ringFace,
-    std::vector<Triangle>& created,
-    double& moved,
-    const char*& why) const;
   static void CountGaps(const Piece& piece, const std::vector<char>& isTear, SeamReport& seam);
 
   // FoldingTreeUnfolderSeamGaps.cxx
