@@ -46,7 +46,7 @@ int Unfolder::RemoveProjectedPoints(const FoldingNode* node, Piece& piece, std::
         ++reasons[keep];
       continue;
     }
-    if (!remover.Try(v, remover.Limit(v, fallback), removal, why))
+    if (!remover.Try(v, remover.Limit(v, fallback), RingRules(), removal, why))
     {
       if (debug)
         ++reasons[why];

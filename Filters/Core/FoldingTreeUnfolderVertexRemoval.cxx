@@ -16,13 +16,21 @@ namespace unfolder_detail
 {
 namespace
 {
-/// Largest share of the error limit a collapse of a projected point into its ring may use.
+/// Largest share of the error limit a collapse of a vertex into its ring may use.
 constexpr double CollapseShareOfLimit = 0.1;
 
 /// 2D orientation (twice the signed area) of (a, b, c).
 double Orientation(const Eigen::Vector2d& a, const Eigen::Vector2d& b, const Eigen::Vector2d& c)
 {
   return (b.x() - a.x()) * (c.y() - a.y()) - (b.y() - a.y()) * (c.x() - a.x());
+}
+
+/// The smallest interior angle of the triangle (a, b, c), in radians.
+double SmallestAngle(const Vec3& a, const Vec3& b, const Vec3& c)
+{
+  auto angle = [](const Vec3& p, const Vec3& q, const Vec3& r)
+  { return std::atan2((q - p).cross(r - p).norm(), (q - p).dot(r - p)); };
+  return std::min({ angle(a, b, c), angle(b, c, a), angle(c, a, b) });
 }
 
 /// Distance of x to the nearest of `triangles`.
@@ -100,7 +108,11 @@ double VertexRemover::Limit(int v, double fallback) const
   return std::max(limit, this->Slack);
 }
 
-bool VertexRemover::Try(int v, double limit, RingRemoval& removal, const char*& why) const
+bool VertexRemover::Try(int v,
+  double limit,
+  const RingRules& rules,
+  RingRemoval& removal,
+  const char*& why) const
 {
   const Piece& piece = this->Mesh;
   const std::vector<std::vector<int>>& facesOf = this->VertexFaces;
@@ -138,11 +150,21 @@ bool VertexRemover::Try(int v, double limit, RingRemoval& removal, const char*& 
       }
     return false;
   };
+  // RingRules: a new edge between two fixed points, a new face sharper than allowed.
+  auto fixedEdge = [&](int a, int c) {
+    return rules.noNewEdgeBetween && (*rules.noNewEdgeBetween)[a] && (*rules.noNewEdgeBetween)[c];
+  };
+  double sharpest = rules.minimumAngle;
+  if (sharpest > 0.0)
+    for (const Triangle& t : old)
+      sharpest = std::min(sharpest, SmallestAngle(x[t[0]], x[t[1]], x[t[2]]));
+  // Not degenerate (and not sharper than the rules allow).
   auto regular = [&](int a, int b, int c)
   {
     const double longest = std::max(
       { (x[a] - x[b]).squaredNorm(), (x[b] - x[c]).squaredNorm(), (x[c] - x[a]).squaredNorm() });
-    return (x[b] - x[a]).cross(x[c] - x[a]).norm() > 1e-6 * longest;
+    return (x[b] - x[a]).cross(x[c] - x[a]).norm() > 1e-6 * longest &&
+      (sharpest <= 0.0 || SmallestAngle(x[a], x[b], x[c]) >= sharpest);
   };
   const int m = static_cast<int>(ring.size());
   // Ear clipping in the plane perpendicular to the star's mean normal.
@@ -196,7 +218,7 @@ bool VertexRemover::Try(int v, double limit, RingRemoval& removal, const char*& 
             Orientation(pc, pa, pq) >= 0.0)
             return false;
         }
-      return regular(a, b, c) && !hasEdge(a, c);
+      return regular(a, b, c) && !fixedEdge(a, c) && !hasEdge(a, c);
     };
     auto cut = [&](int a, int b, int c)
     {
@@ -207,11 +229,17 @@ bool VertexRemover::Try(int v, double limit, RingRemoval& removal, const char*& 
     // midpoint of its new diagonal), the shorter diagonal on (near) ties: on a crease, the
     // diagonals follow the crease instead of cutting across it.
     const double lengthWeight = 1e-3;
+    double spoke = 0.0;
+    for (int a : ring)
+      spoke += (x[a] - x[v]).norm() / m;
     auto deviation = [&](int a, int b, int c)
     {
-      return std::max(DistanceToTriangles((x[a] + x[b] + x[c]) / 3.0, x, old),
-               DistanceToTriangles(0.5 * (x[a] + x[c]), x, old)) +
+      double value = std::max(DistanceToTriangles((x[a] + x[b] + x[c]) / 3.0, x, old),
+                       DistanceToTriangles(0.5 * (x[a] + x[c]), x, old)) +
         lengthWeight * (x[a] - x[c]).norm();
+      if (rules.shapeWeight > 0.0)
+        value += rules.shapeWeight * spoke * (1.0 - SmallestAngle(x[a], x[b], x[c]) / (M_PI / 3.0));
+      return value;
     };
     if (!ClipCheapestEars(poly, allowed, deviation, cut))
       return false;
@@ -238,7 +266,8 @@ bool VertexRemover::Try(int v, double limit, RingRemoval& removal, const char*& 
     {
       const int u = ring[i];
       const int previous = ring[(i + m - 1) % m], next = ring[(i + 1) % m];
-      auto newEdgeFree = [&](int a) { return a == previous || a == next || !hasEdge(u, a); };
+      auto newEdgeFree = [&](int a)
+      { return a == previous || a == next || (!fixedEdge(u, a) && !hasEdge(u, a)); };
       std::vector<Triangle> faces;
       bool ok = true;
       for (int j = 0; j < m && ok; ++j)

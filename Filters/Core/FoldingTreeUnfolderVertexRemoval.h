@@ -13,6 +13,21 @@ namespace foldingmeshes
 {
 namespace unfolder_detail
 {
+/// What a re-triangulation must respect beyond the checks every removal makes.
+struct RingRules
+{
+  /// Smallest interior angle (radians) a new face may have, unless the old star already had
+  /// a smaller one (then that one: never worse than before). 0: no such check.
+  double minimumAngle = 0.0;
+  /// Weight of the ear's shape in the ear order: an ear's cost (its departure from the old
+  /// star) grows by shapeWeight x the mean spoke length x (1 - its smallest angle / 60
+  /// degrees). 0: departure alone (and the shorter diagonal on ties).
+  double shapeWeight = 0.0;
+  /// Per point, or nullptr: no new edge may join two points marked here (e.g. the vertices
+  /// of a fold line, whose edges must stay as they are).
+  const std::vector<char>* noNewEdgeBetween = nullptr;
+};
+
 /// A removal found by VertexRemover::Try, applied by VertexRemover::Apply.
 struct RingRemoval
 {
@@ -34,7 +49,7 @@ struct RingRemoval
  * is collapsed into the ring vertex whose new faces depart least (no new face turning 90
  * degrees or more, moving the surface by at most a tenth of the limit). Either way no new
  * edge may exist already (no duplicate or non-manifold edge, no duplicate face), no new face
- * may be degenerate, and the surface moves by at most the limit
+ * may be degenerate, the RingRules hold, and the surface moves by at most the limit
  * (sampled: v, the star's face centroids and spoke midpoints against the new faces, the new
  * faces' centroids and diagonal midpoints against the star). Apply replaces the star by the
  * new faces (each carries the ids, copy and flags of a face of the old star) and charges the
@@ -50,7 +65,11 @@ public:
   /// The error limit at v: the least budget of v and its star's vertices, `fallback` where
   /// the budgets are unknown (infinite), at least the slack.
   double Limit(int v, double fallback) const;
-  bool Try(int v, double limit, RingRemoval& removal, const char*& why) const;
+  bool Try(int v,
+    double limit,
+    const RingRules& rules,
+    RingRemoval& removal,
+    const char*& why) const;
   void Apply(const RingRemoval& removal);
 
   bool Removed(int v) const { return this->IsRemoved[v] != 0; }
