@@ -192,6 +192,9 @@ void Unfolder::Reflect(const FoldingNode& node, Piece& piece)
   Consume(piece, 2 * node.depth + 1);
   if (this->Options.removeProjectedPoints)
     this->Result.removedProjectedPoints += this->RemoveProjectedPoints(&node, piece, nullptr);
+  if (this->Options.matchDiscardedDensity)
+    this->Result.thinnedCopyPoints += this->MatchDiscardedDensity(node, piece);
+  this->Result.foldExcessFaces += std::max(0, FoldExcessFaces(node, piece));
 }
 
 void Unfolder::CountTears(const FoldingNode& node, Piece& piece, SeamReport& seam)
@@ -270,8 +273,8 @@ bool UnfoldFoldingTree(const FoldingTree& tree,
   if (!unfolder.Aborted && options.removeProjectedPoints)
     result.removedProjectedPoints +=
       unfolder.RemoveProjectedPoints(nullptr, piece, &result.pointAdded);
-  result.projectedPoints =
-    static_cast<int>(std::count(piece.projected.begin(), piece.projected.end(), char(1)));
+  result.projectedPoints = static_cast<int>(piece.projected.size()) -
+    static_cast<int>(std::count(piece.projected.begin(), piece.projected.end(), char(0)));
   result.aborted = unfolder.Aborted;
   result.points = std::move(piece.points);
   result.triangles = std::move(piece.triangles);

@@ -48,6 +48,8 @@ int Unfolder::RemoveProjectedPoints(const FoldingNode* node, Piece& piece, std::
     }
     if (!remover.Try(v, remover.Limit(v, fallback), RingRules(), removal, why))
     {
+      if (node)
+        piece.projected[v] = 2;
       if (debug)
         ++reasons[why];
       continue;
