@@ -10,6 +10,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <functional>
+#include <limits>
 #include <map>
 #include <queue>
 #include <tuple>
@@ -121,7 +122,7 @@ int Unfolder::MatchDiscardedDensity(const FoldingNode& node, Piece& piece)
   RingRemoval removal;
   const char* why = "";
   // A removal of v (into `removal`): its star all of the copy, its ring of free points, the
-  // surface moved within the error limit (without budgets: the node's epsilon).
+  // surface moved within the error limit.
   auto attempt = [&](int v) -> bool
   {
     for (int f : remover.FacesOf(v))
@@ -156,6 +157,16 @@ int Unfolder::MatchDiscardedDensity(const FoldingNode& node, Piece& piece)
     return StarArea(piece, remover, v) / meanArea +
       (removal.limit > 0.0 ? removal.moved / removal.limit : 0.0);
   };
+  // Without budgets (respectErrorBudget off, older trees) the node's epsilon is the budget of
+  // every point for this thinning, so that removals next to each other cannot add up beyond
+  // it; the points keep no budget afterwards.
+  std::vector<char> unknown(n, 0);
+  for (int v = 0; v < n; ++v)
+    if (!std::isfinite(piece.budget[v]))
+    {
+      unknown[v] = 1;
+      piece.budget[v] = node.epsilon;
+    }
   // (cost, point, version): entries of points whose star changed since are stale. A point
   // enters with its area term alone, a lower bound of its cost: it is measured when it comes
   // first, and goes back with its cost unless that is still the lowest.
@@ -189,7 +200,11 @@ int Unfolder::MatchDiscardedDensity(const FoldingNode& node, Piece& piece)
   }
   if (debug)
     std::printf(": removed %d points, %d faces above S left\n", remover.Count(), excess);
-  return remover.Compact(nullptr);
+  const int removed = remover.Compact(&unknown);
+  for (size_t v = 0; v < unknown.size(); ++v)
+    if (unknown[v])
+      piece.budget[v] = std::numeric_limits<double>::infinity();
+  return removed;
 }
 } // namespace unfolder_detail
 } // namespace foldingmeshes

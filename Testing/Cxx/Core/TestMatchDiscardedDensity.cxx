@@ -6,7 +6,8 @@
 //   within 1% with the option on, more than 15% above with it off; closed, manifold,
 //   consistently oriented and within the root epsilon either way; the kept half and the
 //   fold line are the same with and without it (only the mirrored copy is thinned); the
-//   new faces are no sharper than the input's sharpest face; the report agrees.
+//   new faces are no sharper than the input's sharpest face; the report agrees. The same
+//   without error budgets (the fold's epsilon bounds the moves).
 // - Default options (local folds below the root, seams): within 5% of M's counts on, more
 //   than 20% above off, closed either way, within the root epsilon.
 // - Deterministic: the same result from trees built with the Sequential and the STDThread
@@ -171,6 +172,21 @@ void TestMatchDiscardedDensity()
   const double sharpest = SmallestAngle(m.points, m.triangles);
   EXPECT(SmallestAngle(thinned.points, thinned.triangles) >= sharpest - 1e-9,
     "one fold: a face sharper than the input's " << sharpest * 180.0 / M_PI << " degrees");
+
+  // Without budgets (a tree built without them, or respectErrorBudget off) the fold's
+  // epsilon bounds the thinning's moves around each point together.
+  FoldingTreeOptions noBudgets = once;
+  noBudgets.errorBudget = false;
+  UnfoldOptions unbounded;
+  unbounded.respectErrorBudget = false;
+  Check("one fold, tree without budgets",
+    m,
+    coretest::Unfold(Fold(m, 0.02 * diagonal, noBudgets)),
+    diagonal,
+    0.01,
+    -1.0);
+  Check(
+    "one fold, budgets not respected", m, coretest::Unfold(tree, unbounded), diagonal, 0.01, -1.0);
 
   // Default options: local folds and seams below the root.
   const FoldingTree full = Fold(m, 0.02 * diagonal);
