@@ -27,20 +27,6 @@ const double ThinningMinimumAngle = 20.0 * M_PI / 180.0;
 /// Ears are chosen by their departure from the old star and their shape (RingRules).
 const double ThinningShapeWeight = 0.2;
 
-/// Per point: 1 on an edge used by one face.
-std::vector<char> OpenEdgePoints(const Piece& piece)
-{
-  std::map<std::pair<int, int>, int> uses;
-  for (const Triangle& t : piece.triangles)
-    for (int k = 0; k < 3; ++k)
-      ++uses[{ std::min(t[k], t[(k + 1) % 3]), std::max(t[k], t[(k + 1) % 3]) }];
-  std::vector<char> open(piece.points.size(), 0);
-  for (const auto& e : uses)
-    if (e.second == 1)
-      open[e.first.first] = open[e.first.second] = 1;
-  return open;
-}
-
 /// The area of the faces of v that are still there.
 double StarArea(const Piece& piece, const VertexRemover& remover, int v)
 {

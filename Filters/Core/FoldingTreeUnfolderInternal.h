@@ -170,6 +170,9 @@ struct CellHash
   }
 };
 
+/// Per point of the piece: 1 on an edge used by one face (FoldingTreeUnfolder.cxx).
+std::vector<char> OpenEdgePoints(const Piece& piece);
+
 /// Hash of an edge (pair of point ids), for the repair's edge sets.
 struct EdgeHash
 {

@@ -134,15 +134,9 @@ bool Identical(const UnfoldedMesh& a, const UnfoldedMesh& b)
 
 void TestMatchDiscardedDensity()
 {
-  const TriangleMesh m =
-    coretest::ToTriangleMesh(testing::MakeBilateralBlobDifferentTessellation(3000).mesh);
-  Vec3 lo = m.points[0], hi = m.points[0];
-  for (const Vec3& x : m.points)
-  {
-    lo = lo.cwiseMin(x);
-    hi = hi.cwiseMax(x);
-  }
-  const double diagonal = (hi - lo).norm();
+  const testing::ProceduralMesh blob = testing::MakeBilateralBlobDifferentTessellation(3000);
+  const TriangleMesh m = coretest::ToTriangleMesh(blob.mesh);
+  const double diagonal = testing::BoundsDiagonal(blob.mesh);
   UnfoldOptions keep;
   keep.matchDiscardedDensity = false;
 
