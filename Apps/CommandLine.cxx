@@ -51,6 +51,7 @@ original and stored faces, compression, tree height, folds, leaves and time.
   --tight-symmetry         fold only clear symmetries (RMS mirror distance <= 0.35 epsilon);
                            default: every epsilon-symmetric region of >= 10% area, as the paper
   --keep-projected-points  (roundtrip only) as for unfold
+  --keep-copy-density      (roundtrip only) as for unfold
   --outdir DIR             folder for the outputs (default: current folder)
   --json                   print the result as JSON
   --quiet                  no progress on stderr
@@ -58,13 +59,18 @@ original and stored faces, compression, tree height, folds, leaves and time.
 unfold: reconstructs the mesh from a tree written by fold (section 4.3) and writes, in
 --outdir, STEM_unfolded.vtp and STEM_unfolded.png (coloured by FoldingLeafId), where STEM is
 the tree's file stem without a trailing "_tree"; prints faces, open edges, stitched vertices,
-projected points removed and left, and stitch gaps (before the final repair).
+projected points removed and left, points removed from mirrored copies, and stitch gaps
+(before the final repair).
   --no-stitch              the raw union of the copies: no stitching or smoothing of tears
   --no-close-holes         no final repair (non-manifold faces dropped, orientation made
                            consistent, holes that are not the input's border filled)
   --keep-projected-points  keep the vertices the builder projected onto fold planes (default:
                            removed after mirroring and their 1-rings re-triangulated where the
                            error budget allows, so the vertex count stays close to the input's)
+  --keep-copy-density      keep every mirrored copy as dense as the half it mirrors (default:
+                           thinned to the face count of the fold's region where the error
+                           budget allows: a fold whose halves were tessellated differently
+                           keeps the denser half, whose mirror image would double it)
   --original MESH          also measure the distance to MESH (the folded input): Hausdorff
                            and mean distance, also as fractions of its diagonal (-1 without)
   --outdir DIR             folder for the outputs (default: current folder)

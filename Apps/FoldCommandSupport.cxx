@@ -96,6 +96,8 @@ FoldSettings ParseFoldArguments(int argc, char* argv[])
       f.tightSymmetry = true;
     else if (arg == "--keep-projected-points")
       f.keepProjectedPoints = true;
+    else if (arg == "--keep-copy-density")
+      f.keepCopyDensity = true;
     else if (arg == "--outdir")
       f.outdir = value("--outdir");
     else if (arg == "--json")

@@ -28,6 +28,7 @@ struct FoldSettings
   int maxFolds = 8;
   bool tightSymmetry = false;
   bool keepProjectedPoints = false; // roundtrip's unfolder: RemoveProjectedPoints off
+  bool keepCopyDensity = false;     // roundtrip's unfolder: MatchDiscardedDensity off
 };
 
 /// The arguments of fold / unfold / roundtrip; throws std::runtime_error on a bad one.

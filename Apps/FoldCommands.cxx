@@ -22,6 +22,8 @@ int Fold(int argc, char* argv[])
   const FoldSettings f = ParseFoldArguments(argc, argv);
   if (f.keepProjectedPoints)
     throw std::runtime_error("--keep-projected-points is an option of unfold and roundtrip");
+  if (f.keepCopyDensity)
+    throw std::runtime_error("--keep-copy-density is an option of unfold and roundtrip");
   std::string error;
   vtkSmartPointer<vtkPolyData> mesh = foldingmeshes::ReadMesh(f.meshPath, error);
   if (!mesh)
@@ -112,7 +114,8 @@ int Fold(int argc, char* argv[])
 int Unfold(int argc, char* argv[])
 {
   std::string treePath, outdir = ".", originalPath;
-  bool json = false, quiet = false, stitch = true, closeHoles = true, removeProjected = true;
+  bool json = false, quiet = false, stitch = true, closeHoles = true, removeProjected = true,
+       matchDensity = true;
   for (int i = 0; i < argc; ++i)
   {
     const std::string arg = argv[i];
@@ -133,6 +136,8 @@ int Unfold(int argc, char* argv[])
       closeHoles = false;
     else if (arg == "--keep-projected-points")
       removeProjected = false;
+    else if (arg == "--keep-copy-density")
+      matchDensity = false;
     else if (arg == "--original")
     {
       if (i + 1 >= argc)
@@ -164,6 +169,7 @@ int Unfold(int argc, char* argv[])
   unfolder->SetStitch(stitch);
   unfolder->SetCloseHoles(closeHoles);
   unfolder->SetRemoveProjectedPoints(removeProjected);
+  unfolder->SetMatchDiscardedDensity(matchDensity);
   unfolder->SetInputData(tree);
   vtkSmartPointer<vtkPolyData> original;
   if (!originalPath.empty())
@@ -207,6 +213,8 @@ int Unfold(int argc, char* argv[])
   const int stitched = static_cast<int>(FieldValue(mesh, "StitchedVertices"));
   const int removedProjected = static_cast<int>(FieldValue(mesh, "RemovedProjectedPoints"));
   const int projectedLeft = static_cast<int>(FieldValue(mesh, "ProjectedPoints"));
+  const int thinned = static_cast<int>(FieldValue(mesh, "ThinnedCopyPoints"));
+  const int foldExcess = static_cast<int>(FieldValue(mesh, "FoldExcessFaces"));
   const int gaps = static_cast<int>(FieldValue(mesh, "OpenGapCount"));
   const double gapLength = FieldValue(mesh, "OpenGapLength");
   // With --original: the symmetric Hausdorff distance to it, absolute and / its diagonal.
@@ -219,7 +227,8 @@ int Unfold(int argc, char* argv[])
   {
     std::printf("{\n  \"tree\": %s,\n  \"stitch\": %s,\n  \"faces\": %lld,\n"
                 "  \"points\": %lld,\n  \"removedProjectedPoints\": %d,\n"
-                "  \"projectedPoints\": %d,\n  \"openEdges\": %d,\n  \"nonManifoldEdges\": %d,\n"
+                "  \"projectedPoints\": %d,\n  \"thinnedCopyPoints\": %d,\n"
+                "  \"foldExcessFaces\": %d,\n  \"openEdges\": %d,\n  \"nonManifoldEdges\": %d,\n"
                 "  \"misorientedEdges\": %d,\n  \"closeHoles\": %s,\n  \"filledLoops\": %d,\n"
                 "  \"borderLoops\": %d,\n  \"openLoops\": %d,\n  \"openLoopLength\": %.9g,\n"
                 "  \"stitchedVertices\": %d,\n  \"openGapCount\": %d,\n"
@@ -233,6 +242,8 @@ int Unfold(int argc, char* argv[])
       static_cast<long long>(mesh->GetNumberOfPoints()),
       removedProjected,
       projectedLeft,
+      thinned,
+      foldExcess,
       openEdges,
       nonManifold,
       misoriented,
@@ -261,6 +272,11 @@ int Unfold(int argc, char* argv[])
       removedProjected,
       projectedLeft,
       removeProjected ? "" : " (--keep-projected-points)");
+    std::printf("mirrored copies thinned: %d points removed, %d faces above the folds' regions "
+                "left%s\n",
+      thinned,
+      foldExcess,
+      matchDensity ? "" : " (--keep-copy-density)");
     std::printf("open edges:              %d (non-manifold %d, misoriented %d)\n",
       openEdges,
       nonManifold,

@@ -58,6 +58,7 @@ int Roundtrip(int argc, char* argv[])
   }
   vtkNew<vtkFoldingTreeUnfolder> unfolder;
   unfolder->SetRemoveProjectedPoints(!f.keepProjectedPoints);
+  unfolder->SetMatchDiscardedDensity(!f.keepCopyDensity);
   unfolder->SetInputData(readBack);
   t0 = std::chrono::steady_clock::now();
   if (!RunFilter(unfolder, "unfolding", f.quiet, error))
@@ -87,6 +88,7 @@ int Roundtrip(int argc, char* argv[])
                                   after = foldingmeshes::CountEdges(unfolded);
   const long long openBefore = before.open, openAfter = after.open;
   const int removedProjected = static_cast<int>(FieldValue(unfolded, "RemovedProjectedPoints"));
+  const int thinned = static_cast<int>(FieldValue(unfolded, "ThinnedCopyPoints"));
   const double scale = diagonal > 0 ? 1.0 / diagonal : 0.0;
   const int original = static_cast<int>(TreeValue(tree, "OriginalFaces"));
   const int stored = static_cast<int>(TreeValue(tree, "StoredFaces"));
@@ -97,7 +99,7 @@ int Roundtrip(int argc, char* argv[])
     std::printf("{\n  \"mesh\": %s,\n  \"originalFaces\": %d,\n  \"storedFaces\": %d,\n"
                 "  \"compression\": %.6f,\n  \"treeHeight\": %d,\n  \"unfoldedFaces\": %lld,\n"
                 "  \"originalVertices\": %lld,\n  \"unfoldedVertices\": %lld,\n"
-                "  \"removedProjectedPoints\": %d,\n"
+                "  \"removedProjectedPoints\": %d,\n  \"thinnedCopyPoints\": %d,\n"
                 "  \"diagonal\": %.9g,\n  \"rootEpsilon\": %.9g,\n"
                 "  \"rootEpsilonFraction\": %.9g,\n  \"hausdorff\": %.9g,\n"
                 "  \"hausdorffFraction\": %.9g,\n  \"meanDistanceFraction\": %.9g,\n"
@@ -114,6 +116,7 @@ int Roundtrip(int argc, char* argv[])
       before.vertices,
       after.vertices,
       removedProjected,
+      thinned,
       diagonal,
       epsilon,
       epsilon * scale,
@@ -139,12 +142,14 @@ int Roundtrip(int argc, char* argv[])
       100.0 * compression,
       static_cast<long long>(unfolded->GetNumberOfCells()));
     std::printf("vertices:                %lld original, %lld unfolded (%+.1f%%; %d projected "
-                "points removed%s)\n",
+                "points removed%s, %d removed from mirrored copies%s)\n",
       before.vertices,
       after.vertices,
       before.vertices > 0 ? 100.0 * (after.vertices - before.vertices) / before.vertices : 0.0,
       removedProjected,
-      f.keepProjectedPoints ? ", --keep-projected-points" : "");
+      f.keepProjectedPoints ? " (--keep-projected-points)" : "",
+      thinned,
+      f.keepCopyDensity ? " (--keep-copy-density)" : "");
     std::printf("tree height:             %d\n", height);
     std::printf("hausdorff / diagonal:    %.6f max, %.6f mean (bound: root epsilon %.6f) %s\n",
       hausdorff * scale,

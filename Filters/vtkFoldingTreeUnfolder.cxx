@@ -308,6 +308,7 @@ int vtkFoldingTreeUnfolder::RequestWholeData(vtkInformation*,
   options.smoothingWeight = this->SmoothingWeight;
   options.respectErrorBudget = this->RespectErrorBudget;
   options.removeProjectedPoints = this->RemoveProjectedPoints;
+  options.matchDiscardedDensity = this->MatchDiscardedDensity;
   options.weldBoundaries = this->WeldBoundaries;
   options.weldToleranceScale = this->WeldToleranceScale;
   options.closeHoles = this->CloseHoles;
@@ -470,6 +471,8 @@ int vtkFoldingTreeUnfolder::RequestWholeData(vtkInformation*,
   AddValue(fd, "PlaneMergedVertices", mesh.planeMergedVertices);
   AddValue(fd, "RemovedProjectedPoints", mesh.removedProjectedPoints);
   AddValue(fd, "ProjectedPoints", mesh.projectedPoints);
+  AddValue(fd, "ThinnedCopyPoints", mesh.thinnedCopyPoints);
+  AddValue(fd, "FoldExcessFaces", mesh.foldExcessFaces);
   AddValue(fd, "StitchedVertices", mesh.stitchedVertices);
   AddValue(fd, "UnmatchedTearVertices", mesh.unmatchedTearVertices);
   AddValue(fd, "OpenGapCount", mesh.gapEdges);
@@ -517,6 +520,7 @@ void vtkFoldingTreeUnfolder::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "SmoothingWeight: " << this->SmoothingWeight << "\n";
   os << indent << "RespectErrorBudget: " << this->RespectErrorBudget << "\n";
   os << indent << "RemoveProjectedPoints: " << this->RemoveProjectedPoints << "\n";
+  os << indent << "MatchDiscardedDensity: " << this->MatchDiscardedDensity << "\n";
   os << indent << "WeldBoundaries: " << this->WeldBoundaries << "\n";
   os << indent << "WeldToleranceScale: " << this->WeldToleranceScale << "\n";
   os << indent << "CloseHoles: " << this->CloseHoles << "\n";

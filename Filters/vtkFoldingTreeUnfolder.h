@@ -6,8 +6,12 @@
  * Input: a folding tree as vtkFoldingTreeBuilder writes it (output 0), directly or read back
  * from a .vtm file (the encoding is documented in vtkFoldingTreeBuilder.h). The core unfolder
  * (Filters/Core/FoldingTreeUnfolder.h) mirrors every folding node's child through its plane
- * (reversing the mirrored triangles and merging the fold-line vertices), unites the children
- * of segmentation nodes and, with Stitch on, stitches and smooths their tears.
+ * (reversing the mirrored triangles and merging the fold-line vertices; then it removes the
+ * vertices the builder projected onto the plane, RemoveProjectedPoints, and thins the mirrored
+ * copy to the face count of the fold's region, MatchDiscardedDensity: a fold whose halves are
+ * tessellated differently keeps the denser half, whose mirror image would otherwise double
+ * that density), unites the children of segmentation nodes and, with Stitch on, stitches and
+ * smooths their tears.
  *
  * Output (vtkPolyData):
  * - every point and cell array the leaves carry (those present in all leaves with the same
@@ -25,14 +29,17 @@
  *   neighbouring face).
  * - field data: "UnfoldedFaces", "UnfoldedPoints", "NumberOfCopies", "PlaneMergedVertices",
  *   "RemovedProjectedPoints" and "ProjectedPoints" (RemoveProjectedPoints: removed, left),
+ *   "ThinnedCopyPoints" and "FoldExcessFaces" (MatchDiscardedDensity: vertices removed from
+ *   mirrored copies, and the faces the folding nodes' results still have above the face
+ *   counts of their regions, summed over the folding nodes),
  *   "StitchedVertices", "UnmatchedTearVertices", "OpenGapCount" (boundary edges left between
- *   tear vertices by stitching, before the final repair), "OpenGapLength", "FilledFaces", "OpenEdges", "NonManifoldEdges",
- *   "MisorientedEdges" (edges whose two faces traverse them in the same direction),
- *   "WeldedVertices" (merged or zipped by the final boundary weld), "BudgetRejectedClusters"
- *   (stitches not made: no position within the error budgets), the final repair's
- *   (CloseHoles) "RepairDroppedFaces", "RepairFlippedFaces", "FilledLoops", "BorderLoops",
- *   "BorderEdges" and "BorderLength" (the input's own border, kept open), "OpenLoops",
- *   "OpenLoopEdges" and "OpenLoopLength" (gaps that could not be closed),
+ *   tear vertices by stitching, before the final repair), "OpenGapLength", "FilledFaces",
+ *   "OpenEdges", "NonManifoldEdges", "MisorientedEdges" (edges whose two faces traverse them
+ *   in the same direction), "WeldedVertices" (merged or zipped by the final boundary weld),
+ *   "BudgetRejectedClusters" (stitches not made: no position within the error budgets), the
+ *   final repair's (CloseHoles) "RepairDroppedFaces", "RepairFlippedFaces", "FilledLoops",
+ *   "BorderLoops", "BorderEdges" and "BorderLength" (the input's own border, kept open),
+ *   "OpenLoops", "OpenLoopEdges" and "OpenLoopLength" (gaps that could not be closed),
  *   "UnknownBorderLoops" (not filled: the tree has no InputBoundary flags), and the tree's
  *   "RootEpsilon" and "Diagonal".
  * Every vertex move (fold-line merges, stitching, zipper, smoothing and a final weld of the
@@ -149,6 +156,23 @@ public:
 
   ///@{
   /**
+   * After mirroring at a fold, thin the mirrored copy until the fold's result has about the
+   * face count of its region S (default on): a fold whose two halves were tessellated
+   * differently keeps the half with more faces, and its mirror image would double that
+   * half's density where the discarded half was coarser. Interior vertices of the copy are
+   * removed and their 1-rings re-triangulated as for RemoveProjectedPoints, each move
+   * bounded by the point's error budget; the kept half, seams and fold lines stay as they
+   * are (UnfoldOptions::matchDiscardedDensity). Reported in the field data
+   * ("ThinnedCopyPoints", and "FoldExcessFaces": faces the folds' results still have above
+   * their regions' counts).
+   */
+  vtkSetMacro(MatchDiscardedDensity, bool);
+  vtkGetMacro(MatchDiscardedDensity, bool);
+  vtkBooleanMacro(MatchDiscardedDensity, bool);
+  ///@}
+
+  ///@{
+  /**
    * Finally weld the open boundaries of different copies once more (default on): a vertex on
    * an open edge may merge with, or be zipped into, one of another copy within
    * WeldToleranceScale x the root tolerance (default 0.5, range 0..10). No gaps are filled.
@@ -227,6 +251,7 @@ protected:
   double SmoothingWeight = 0.5;
   bool RespectErrorBudget = true;
   bool RemoveProjectedPoints = true;
+  bool MatchDiscardedDensity = true;
   bool WeldBoundaries = true;
   double WeldToleranceScale = 0.5;
   bool CloseHoles = true;

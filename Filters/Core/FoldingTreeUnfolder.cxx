@@ -192,6 +192,9 @@ void Unfolder::Reflect(const FoldingNode& node, Piece& piece)
   Consume(piece, 2 * node.depth + 1);
   if (this->Options.removeProjectedPoints)
     this->Result.removedProjectedPoints += this->RemoveProjectedPoints(&node, piece, nullptr);
+  if (this->Options.matchDiscardedDensity)
+    this->Result.thinnedCopyPoints += this->MatchDiscardedDensity(node, piece);
+  this->Result.foldExcessFaces += std::max(0, FoldExcessFaces(node, piece));
 }
 
 void Unfolder::CountTears(const FoldingNode& node, Piece& piece, SeamReport& seam)
@@ -215,6 +218,19 @@ void Unfolder::Consume(Piece& piece, int code)
       std::remove_if(
         t.begin(), t.end(), [&](const std::pair<int, uint64_t>& e) { return e.first == code; }),
       t.end());
+}
+
+std::vector<char> OpenEdgePoints(const Piece& piece)
+{
+  std::map<std::pair<int, int>, int> uses;
+  for (const Triangle& t : piece.triangles)
+    for (int k = 0; k < 3; ++k)
+      ++uses[{ std::min(t[k], t[(k + 1) % 3]), std::max(t[k], t[(k + 1) % 3]) }];
+  std::vector<char> open(piece.points.size(), 0);
+  for (const auto& e : uses)
+    if (e.second == 1)
+      open[e.first.first] = open[e.first.second] = 1;
+  return open;
 }
 
 /// Boundary edges whose two vertices are tear vertices.
@@ -270,8 +286,8 @@ bool UnfoldFoldingTree(const FoldingTree& tree,
   if (!unfolder.Aborted && options.removeProjectedPoints)
     result.removedProjectedPoints +=
       unfolder.RemoveProjectedPoints(nullptr, piece, &result.pointAdded);
-  result.projectedPoints =
-    static_cast<int>(std::count(piece.projected.begin(), piece.projected.end(), char(1)));
+  result.projectedPoints = static_cast<int>(piece.projected.size()) -
+    static_cast<int>(std::count(piece.projected.begin(), piece.projected.end(), char(0)));
   result.aborted = unfolder.Aborted;
   result.points = std::move(piece.points);
   result.triangles = std::move(piece.triangles);

@@ -72,6 +72,31 @@ struct UnfoldOptions
    */
   bool removeProjectedPoints = true;
   /**
+   * After the reflection at a folding node (and the removal of its projected points), thin
+   * the mirrored copy until the node's result has the face count of its region S
+   * (FoldingNode::numberOfFaces; two faces fewer counted for each projected point still to be
+   * removed at a fold above or after the traversal): an approximate fold whose halves are
+   * tessellated differently keeps the half with more faces, and its mirror image would
+   * double that half's density where the discarded half (FoldingNode::discardedFaces) was
+   * coarser. Interior vertices of the copy are removed one at a time by the machinery of
+   * removeProjectedPoints (FoldingTreeUnfolderVertexRemoval.h: the closed 1-ring
+   * re-triangulated by ear clipping, here by least departure and good shape, a crease
+   * collapse where the star does not project one-to-one, the same checks against flips,
+   * repeated edges and degenerate faces, the move bounded by the error budget left at the
+   * vertex and its ring, which is charged what moved; without budgets the node's epsilon),
+   * and no new face may have an angle below 20 degrees unless the old star had a smaller one.
+   * The kept half is never changed: a vertex qualifies when it belongs to the copy, its star
+   * lies in the copy, neither it nor a ring vertex is on an open edge (seams stitched later,
+   * the input's border), carries a tear or fold-line flag (MirroredFlag) or lies on a plane of
+   * a fold above, and it is not a projected point; no new edge joins two points of the kept
+   * half or the fold line. So seams and fold lines stay as they are. Order: the densest spot
+   * first (the star's area relative to the copy's mean star area at the start), plus the
+   * surface move relative to the limit; index order on ties; a priority queue in which the
+   * ring of a removed vertex is re-queued and each vertex is measured again when it comes
+   * first. Deterministic (serial). See UnfoldedMesh::thinnedCopyPoints and foldExcessFaces.
+   */
+  bool matchDiscardedDensity = true;
+  /**
    * Bound every vertex move (fold-line merges, stitching, zipper, smoothing, boundary weld)
    * by the leaf point's error budget (FoldingLeafMesh::errorBudget, written by the builder):
    * what the folds above left of the root epsilon there, so unfold(fold(M)) stays within it.
@@ -202,13 +227,19 @@ struct UnfoldedMesh
   std::vector<UnfoldCopy> copies;
 
   // Report.
-  int planeMergedVertices = 0;   ///< vertices shared by a copy and its mirror image (fold lines)
-  int droppedMirrorFaces = 0;    ///< faces lying in a fold plane, not duplicated
+  int planeMergedVertices = 0; ///< vertices shared by a copy and its mirror image (fold lines)
+  int droppedMirrorFaces = 0;  ///< faces lying in a fold plane, not duplicated
   /// Vertices projected onto a fold plane by the builder and removed again after the
   /// reflection (UnfoldOptions::removeProjectedPoints), and the copies of projected points
   /// left in the result (not removable, or the option off).
   int removedProjectedPoints = 0;
   int projectedPoints = 0;
+  /// Vertices removed from mirrored copies (UnfoldOptions::matchDiscardedDensity), and the
+  /// faces the folding nodes' results still had above their regions' face counts after it
+  /// (less two per projected point still to be removed; summed over the folding nodes; with
+  /// the thinning off, the excess it would have removed).
+  int thinnedCopyPoints = 0;
+  int foldExcessFaces = 0;
   std::vector<SeamReport> seams; ///< one per segmentation node (postorder)
   /// The final boundary weld (weldBoundaries): tearVertices = vertices on open edges before.
   SeamReport weld;
@@ -242,7 +273,9 @@ struct UnfoldedMesh
  *   point of an open edge lying within foldLineToleranceScale * epsilon of p (and within
  *   its error budget, respectErrorBudget). Triangles
  *   whose three vertices are on p are not duplicated. Per-vertex flags follow the copies
- *   exactly (MirroredFlag): a mirrored copy does not inherit its original's flags.
+ *   exactly (MirroredFlag): a mirrored copy does not inherit its original's flags. Then
+ *   the builder's projected points on p are removed (removeProjectedPoints) and the
+ *   mirrored copy is thinned to the face count of the node's region (matchDiscardedDensity).
  * - segmentation node: the union of the children; then (stitch on) each vertex carrying the
  *   node's tear bit proposes the nearest tear vertex of another child within the tolerance;
  *   proposals are accepted by increasing distance (union-find) unless they would merge two

@@ -59,6 +59,7 @@ struct Piece
   std::vector<char> border;
   /// 1: a copy of a leaf point the builder projected onto a fold plane (FoldingLeafMesh::
   /// projected); such points may be removed again (FoldingTreeUnfolderProjectedPoints.cxx).
+  /// 2: such a point its fold tried to remove and could not (retried after the traversal).
   std::vector<char> projected;
   std::vector<int> faceOrig;
   std::vector<int> faceCopy;
@@ -169,6 +170,9 @@ struct CellHash
   }
 };
 
+/// Per point of the piece: 1 on an edge used by one face (FoldingTreeUnfolder.cxx).
+std::vector<char> OpenEdgePoints(const Piece& piece);
+
 /// Hash of an edge (pair of point ids), for the repair's edge sets.
 struct EdgeHash
 {
@@ -182,9 +186,10 @@ using EdgeSet = std::unordered_set<std::pair<int, int>, EdgeHash>;
 
 /// The postorder unfolding of a folding tree (see UnfoldFoldingTree). The traversal, the
 /// copies and the fold lines are in FoldingTreeUnfolder.cxx (the removal of projected
-/// points in FoldingTreeUnfolderProjectedPoints.cxx); the seam repair in
-/// FoldingTreeUnfolderStitching.cxx (vertex pairing, clusters, smoothing, final weld) and
-/// FoldingTreeUnfolderSeamGaps.cxx (zipper, gap filling).
+/// points in FoldingTreeUnfolderProjectedPoints.cxx, the thinning of mirrored copies in
+/// FoldingTreeUnfolderDensity.cxx, both with FoldingTreeUnfolderVertexRemoval.h); the seam
+/// repair in FoldingTreeUnfolderStitching.cxx (vertex pairing, clusters, smoothing, final
+/// weld) and FoldingTreeUnfolderSeamGaps.cxx (zipper, gap filling).
 class Unfolder
 {
 public:
@@ -213,17 +218,15 @@ public:
   /// the number removed.
   int RemoveProjectedPoints(const FoldingNode* node, Piece& piece, std::vector<char>* added);
 
+  // FoldingTreeUnfolderDensity.cxx
+  /// Thins the mirrored copy made at `node` (UnfoldOptions::matchDiscardedDensity) towards
+  /// the face count of the node's region; returns the number of points removed.
+  int MatchDiscardedDensity(const FoldingNode& node, Piece& piece);
+  /// The faces of the result of `node` (after its reflection) above its region's count,
+  /// less two per projected point still to be removed later (UnfoldedMesh::foldExcessFaces).
+  static int FoldExcessFaces(const FoldingNode& node, const Piece& piece);
+
 private:
-  bool RetriangulateRing(const Piece& piece,
-    const std::vector<std::vector<int>>& facesOf,
-    const std::vector<char>& alive,
-    int v,
-    double limit,
-    std::vector<int>& ring,
-    std::vector<int>& ringFace,
-    std::vector<Triangle>& created,
-    double& moved,
-    const char*& why) const;
   static void CountGaps(const Piece& piece, const std::vector<char>& isTear, SeamReport& seam);
 
   // FoldingTreeUnfolderSeamGaps.cxx

@@ -2,15 +2,10 @@
 // reflection at that folding node), so the strip across the fold line comes back with about
 // the input's tessellation. See UnfoldOptions::removeProjectedPoints.
 #include "FoldingTreeUnfolderInternal.h"
-#include "PointTriangleDistance.h"
+#include "FoldingTreeUnfolderVertexRemoval.h"
 
-#include <Eigen/Geometry>
-
-#include <algorithm>
-#include <cmath>
 #include <cstdio>
 #include <cstdlib>
-#include <limits>
 #include <map>
 #include <string>
 
@@ -18,317 +13,20 @@ namespace foldingmeshes
 {
 namespace unfolder_detail
 {
-namespace
-{
-/// Largest share of the error limit a collapse of a projected point into its ring may use.
-constexpr double CollapseShareOfLimit = 0.1;
-
-/// 2D orientation (twice the signed area) of (a, b, c).
-double Orientation(const Eigen::Vector2d& a, const Eigen::Vector2d& b, const Eigen::Vector2d& c)
-{
-  return (b.x() - a.x()) * (c.y() - a.y()) - (b.y() - a.y()) * (c.x() - a.x());
-}
-
-/// Distance of x to the nearest of `triangles`.
-double DistanceToTriangles(const Vec3& x,
-  const std::vector<Vec3>& points,
-  const std::vector<Triangle>& triangles)
-{
-  double best = std::numeric_limits<double>::infinity();
-  for (const Triangle& t : triangles)
-    best = std::min(
-      best, ClosestPointTriangle(x, points[t[0]], points[t[1]], points[t[2]]).squaredDistance);
-  return std::sqrt(best);
-}
-
-/// The closed 1-ring of v: star faces (v, a, b) give ring edges a -> b; ring[i] is followed
-/// by ring[i + 1], face[i] is the star face with ring edge ring[i] -> ring[i + 1]. False
-/// unless the edges form one cycle through every star face (v interior, manifold there).
-bool ClosedRing(const std::vector<Triangle>& triangles,
-  const std::vector<int>& star,
-  int v,
-  std::vector<int>& ring,
-  std::vector<int>& face)
-{
-  std::map<int, std::pair<int, int>> next; // a -> (b, face)
-  for (int f : star)
-  {
-    const Triangle& t = triangles[f];
-    const int k = t[0] == v ? 0 : t[1] == v ? 1 : 2;
-    const int a = t[(k + 1) % 3], b = t[(k + 2) % 3];
-    if (a == v || b == v || a == b || !next.emplace(a, std::make_pair(b, f)).second)
-      return false;
-  }
-  ring.clear();
-  face.clear();
-  int a = next.begin()->first;
-  for (size_t i = 0; i < star.size(); ++i)
-  {
-    auto it = next.find(a);
-    if (it == next.end())
-      return false;
-    ring.push_back(a);
-    face.push_back(it->second.second);
-    a = it->second.first;
-  }
-  if (a != ring.front())
-    return false;
-  std::vector<int> sorted = ring;
-  std::sort(sorted.begin(), sorted.end());
-  return std::adjacent_find(sorted.begin(), sorted.end()) == sorted.end() && ring.size() >= 3;
-}
-} // namespace
-
-/**
- * Tries to remove vertex v: its closed 1-ring is re-triangulated by ear clipping (the ear
- * that departs least from the old star first) in the plane perpendicular to the star's mean
- * normal. That needs the star to project one-to-one onto the plane (every star face facing
- * the mean normal, the angles around v summing to one turn), every ear convex there and
- * empty of other ring vertices (so no new face flips against the star). Otherwise v is
- * collapsed into one of its ring vertices (no new face turning 90 degrees or more, moving the
- * surface by at most a tenth of `limit`). Either way no new edge may exist already (no
- * duplicate or non-manifold edge, no duplicate face), no new face may be degenerate, and the
- * surface moves by at most `limit` (see RemoveProjectedPoints). On success `created` holds
- * the new faces and `moved` the largest deviation measured.
- */
-bool Unfolder::RetriangulateRing(const Piece& piece,
-  const std::vector<std::vector<int>>& facesOf,
-  const std::vector<char>& alive,
-  int v,
-  double limit,
-  std::vector<int>& ring,
-  std::vector<int>& ringFace,
-  std::vector<Triangle>& created,
-  double& moved,
-  const char*& why) const
-{
-  created.clear();
-  moved = 0.0;
-  std::vector<int> star;
-  for (int f : facesOf[v])
-    if (alive[f])
-      star.push_back(f);
-  why = "open ring";
-  if (star.size() < 3 || !ClosedRing(piece.triangles, star, v, ring, ringFace))
-    return false;
-  const std::vector<Vec3>& x = piece.points;
-  std::vector<Triangle> old;
-  for (int f : star)
-    old.push_back(piece.triangles[f]);
-  EdgeSet diagonals;
-  auto hasEdge = [&](int a, int c)
-  {
-    if (diagonals.count({ std::min(a, c), std::max(a, c) }))
-      return true;
-    for (int f : facesOf[a])
-      if (alive[f])
-      {
-        const Triangle& t = piece.triangles[f];
-        if (t[0] == c || t[1] == c || t[2] == c)
-          return true;
-      }
-    return false;
-  };
-  auto regular = [&](int a, int b, int c)
-  {
-    const double longest = std::max(
-      { (x[a] - x[b]).squaredNorm(), (x[b] - x[c]).squaredNorm(), (x[c] - x[a]).squaredNorm() });
-    return (x[b] - x[a]).cross(x[c] - x[a]).norm() > 1e-6 * longest;
-  };
-  const int m = static_cast<int>(ring.size());
-  // Ear clipping in the plane perpendicular to the star's mean normal.
-  auto clipRing = [&]() -> bool
-  {
-    why = "not one-to-one";
-    Vec3 normal = Vec3::Zero();
-    std::vector<Vec3> faceNormal(m);
-    for (int i = 0; i < m; ++i)
-    {
-      faceNormal[i] = (x[ring[i]] - x[v]).cross(x[ring[(i + 1) % m]] - x[v]);
-      normal += faceNormal[i];
-    }
-    if (normal.norm() <= 0.0)
-      return false;
-    normal.normalize();
-    for (const Vec3& n : faceNormal)
-      if (n.dot(normal) <= 1e-3 * n.norm())
-        return false;
-    // The ring in the plane perpendicular to the mean normal, v at the origin.
-    const Vec3 u = normal.unitOrthogonal(), w = normal.cross(u);
-    std::map<int, Eigen::Vector2d> flat;
-    for (int a : ring)
-      flat[a] = Eigen::Vector2d((x[a] - x[v]).dot(u), (x[a] - x[v]).dot(w));
-    double turn = 0.0;
-    for (int i = 0; i < m; ++i)
-    {
-      const Eigen::Vector2d& p = flat[ring[i]];
-      const Eigen::Vector2d& q = flat[ring[(i + 1) % m]];
-      turn += std::atan2(p.x() * q.y() - p.y() * q.x(), p.dot(q));
-    }
-    if (std::abs(turn - 2.0 * M_PI) > 1e-6)
-      return false;
-
-    why = "no triangulation";
-    std::vector<int> poly = ring;
-    created.clear();
-    auto allowed = [&](int a, int c)
-    {
-      const int i = static_cast<int>(std::find(poly.begin(), poly.end(), a) - poly.begin());
-      const int b = poly[(i + 1) % poly.size()];
-      const Eigen::Vector2d &pa = flat[a], &pb = flat[b], &pc = flat[c];
-      const double area = Orientation(pa, pb, pc);
-      if (area <= 1e-9 * std::max((pa - pc).squaredNorm(), (pb - pa).squaredNorm()))
-        return false;
-      for (int q : poly)
-        if (q != a && q != b && q != c)
-        {
-          const Eigen::Vector2d& pq = flat[q];
-          if (Orientation(pa, pb, pq) >= 0.0 && Orientation(pb, pc, pq) >= 0.0 &&
-            Orientation(pc, pa, pq) >= 0.0)
-            return false;
-        }
-      return regular(a, b, c) && !hasEdge(a, c);
-    };
-    auto cut = [&](int a, int b, int c)
-    {
-      created.push_back({ a, b, c });
-      diagonals.insert({ std::min(a, c), std::max(a, c) });
-    };
-    // The ear that departs least from the old star first (sampled at its centroid and the
-    // midpoint of its new diagonal), the shorter diagonal on (near) ties: on a crease, the
-    // diagonals follow the crease instead of cutting across it.
-    const double lengthWeight = 1e-3;
-    auto deviation = [&](int a, int b, int c)
-    {
-      return std::max(DistanceToTriangles((x[a] + x[b] + x[c]) / 3.0, x, old),
-               DistanceToTriangles(0.5 * (x[a] + x[c]), x, old)) +
-        lengthWeight * (x[a] - x[c]).norm();
-    };
-    if (!ClipCheapestEars(poly, allowed, deviation, cut))
-      return false;
-    if (Orientation(flat[poly[0]], flat[poly[1]], flat[poly[2]]) <= 0.0 ||
-      !regular(poly[0], poly[1], poly[2]))
-      return false;
-    created.push_back({ poly[0], poly[1], poly[2] });
-    return true;
-  };
-  // Where the star does not project one-to-one (a sharp crease through v) or no ear order
-  // works: collapse v into the ring vertex u whose new faces depart least from the old star,
-  // by at most a tenth of the limit (a collapse follows the old star less closely than ears
-  // do; with the whole budget it cut the corners of a CAD mesh: bearing 0.0033 -> 0.0061).
-  // Each star face (v, a, b) becomes (u, a, b), the two faces on edge v-u vanish; accepted
-  // when no new edge exists already (the link condition), no new face is degenerate and none
-  // turns by 90 degrees or more against the face it replaces.
-  auto collapseIntoRing = [&]() -> bool
-  {
-    const char* reason = why;
-    double best = std::numeric_limits<double>::infinity();
-    std::vector<Triangle> bestFaces;
-    int bestU = -1;
-    for (int i = 0; i < m; ++i)
-    {
-      const int u = ring[i];
-      const int previous = ring[(i + m - 1) % m], next = ring[(i + 1) % m];
-      auto newEdgeFree = [&](int a) { return a == previous || a == next || !hasEdge(u, a); };
-      std::vector<Triangle> faces;
-      bool ok = true;
-      for (int j = 0; j < m && ok; ++j)
-      {
-        const int a = ring[j], b = ring[(j + 1) % m];
-        if (a == u || b == u)
-          continue;
-        const Vec3 before = (x[a] - x[v]).cross(x[b] - x[v]);
-        const Vec3 after = (x[a] - x[u]).cross(x[b] - x[u]);
-        ok = regular(u, a, b) && after.dot(before) > 0.0 && newEdgeFree(a) && newEdgeFree(b);
-        faces.push_back({ u, a, b });
-      }
-      if (!ok || faces.empty())
-        continue;
-      double worst = DistanceToTriangles(x[v], x, faces);
-      for (const Triangle& t : faces)
-        worst = std::max(worst, DistanceToTriangles((x[t[0]] + x[t[1]] + x[t[2]]) / 3.0, x, old));
-      if (worst <= CollapseShareOfLimit * limit && worst < best)
-      {
-        best = worst;
-        bestFaces = std::move(faces);
-        bestU = u;
-      }
-    }
-    if (bestFaces.empty())
-    {
-      why = reason;
-      return false;
-    }
-    // The new edges from u, sampled like an ear's diagonals by the budget check below.
-    for (const Triangle& t : bestFaces)
-      for (int k = 1; k < 3; ++k)
-        diagonals.insert({ std::min(bestU, t[k]), std::max(bestU, t[k]) });
-    created = std::move(bestFaces);
-    return true;
-  };
-  if (!clipRing())
-  {
-    created.clear();
-    diagonals.clear();
-    if (!collapseIntoRing())
-      return false;
-  }
-  // A face on the ring's three vertices already (a tetrahedron-like spot): duplicate.
-  if (m == 3)
-    for (int f : facesOf[ring[0]])
-      if (alive[f] && std::find(star.begin(), star.end(), f) == star.end())
-      {
-        Triangle t = piece.triangles[f], r = { ring[0], ring[1], ring[2] };
-        std::sort(t.begin(), t.end());
-        std::sort(r.begin(), r.end());
-        if (t == r)
-          return false;
-      }
-
-  why = "budget";
-  // Deviation between the old star and the new faces, sampled: v, the star's face
-  // centroids and spoke midpoints against the new faces; the new faces' centroids and
-  // diagonal midpoints against the star (the ring edges belong to both).
-  moved = DistanceToTriangles(x[v], x, created);
-  for (int i = 0; i < m && moved <= limit; ++i)
-  {
-    const Vec3& a = x[ring[i]];
-    const Vec3& b = x[ring[(i + 1) % m]];
-    moved = std::max(moved, DistanceToTriangles((x[v] + a + b) / 3.0, x, created));
-    moved = std::max(moved, DistanceToTriangles(0.5 * (x[v] + a), x, created));
-  }
-  for (size_t k = 0; k < created.size() && moved <= limit; ++k)
-  {
-    const Triangle& t = created[k];
-    moved = std::max(moved, DistanceToTriangles((x[t[0]] + x[t[1]] + x[t[2]]) / 3.0, x, old));
-    for (int j = 0; j < 3; ++j)
-      if (diagonals.count({ std::min(t[j], t[(j + 1) % 3]), std::max(t[j], t[(j + 1) % 3]) }))
-        moved = std::max(moved, DistanceToTriangles(0.5 * (x[t[j]] + x[t[(j + 1) % 3]]), x, old));
-  }
-  return moved <= limit;
-}
-
 int Unfolder::RemoveProjectedPoints(const FoldingNode* node, Piece& piece, std::vector<char>* added)
 {
   const uint64_t bit = node ? uint64_t(1) << node->depth : 0;
   const uint64_t above = bit - 1;
   const int n = piece.NumberOfPoints();
-  std::vector<std::vector<int>> facesOf(n);
-  for (int f = 0; f < piece.NumberOfFaces(); ++f)
-    for (int k = 0; k < 3; ++k)
-      facesOf[piece.triangles[f][k]].push_back(f);
-  std::vector<char> alive(piece.triangles.size(), 1), removed(n, 0);
   // Rounding slack for points whose budget is used up: a star that is planar to this
   // precision is replaced by a triangulation of the same polygon.
-  const double slack = this->Options.planeTolerance * this->Tree.diagonal;
+  VertexRemover remover(piece, this->Options.planeTolerance * this->Tree.diagonal);
   // The limit without budgets (respectErrorBudget off, older trees): the fold's epsilon;
   // after the traversal, that of the folds below the root.
   const double fallback = node ? node->epsilon : 0.5 * this->Tree.rootEpsilon;
-  int count = 0;
   const bool debug = std::getenv("FOLDINGMESHES_PROJECTED_DEBUG") != nullptr;
   std::map<std::string, int> reasons;
-  std::vector<int> ring, ringFace;
-  std::vector<Triangle> created;
+  RingRemoval removal;
   const char* why = "";
   for (int v = 0; v < n; ++v)
   {
@@ -348,88 +46,27 @@ int Unfolder::RemoveProjectedPoints(const FoldingNode* node, Piece& piece, std::
         ++reasons[keep];
       continue;
     }
-    double limit = piece.budget[v];
-    for (int f : facesOf[v])
-      if (alive[f])
-        for (int a : piece.triangles[f])
-          limit = std::min(limit, piece.budget[a]);
-    if (!std::isfinite(limit))
-      limit = fallback;
-    limit = std::max(limit, slack);
-    double moved = 0.0;
-    if (!this->RetriangulateRing(
-          piece, facesOf, alive, v, limit, ring, ringFace, created, moved, why))
+    if (!remover.Try(v, remover.Limit(v, fallback), RingRules(), removal, why))
     {
+      if (node)
+        piece.projected[v] = 2;
       if (debug)
         ++reasons[why];
       continue;
     }
-    std::map<int, int> faceAt; // ring vertex -> the star face with the ring edge from it
-    for (size_t i = 0; i < ring.size(); ++i)
-      faceAt[ring[i]] = ringFace[i];
-    for (int f : ringFace)
-      alive[f] = 0;
-    for (const Triangle& t : created)
-    {
-      const int like = faceAt[t[1]];
-      const int f = piece.NumberOfFaces();
-      piece.triangles.push_back(t);
-      piece.faceOrig.push_back(piece.faceOrig[like]);
-      piece.faceCopy.push_back(piece.faceCopy[like]);
-      piece.faceFilled.push_back(piece.faceFilled[like]);
-      alive.push_back(1);
-      for (int a : t)
-        facesOf[a].push_back(f);
-    }
-    for (int a : ring)
-    {
-      auto& list = facesOf[a];
-      list.erase(
-        std::remove_if(list.begin(), list.end(), [&](int f) { return !alive[f]; }), list.end());
-      piece.budget[a] = std::max(0.0, piece.budget[a] - moved);
-    }
-    facesOf[v].clear();
-    removed[v] = 1;
-    ++count;
+    remover.Apply(removal);
   }
   if (debug)
   {
     std::printf("[projected] %s %d: removed %d",
       node ? "fold at depth" : "final pass, points",
       node ? node->depth : n,
-      count);
+      remover.Count());
     for (const auto& r : reasons)
       std::printf(", %s %d", r.first.c_str(), r.second);
     std::printf("\n");
   }
-  if (count == 0)
-    return 0;
-
-  // Compact: drop the removed points and the replaced faces, keeping every array aligned.
-  std::vector<int> index(n, -1);
-  Piece out;
-  std::vector<char> keptAdded;
-  for (int v = 0; v < n; ++v)
-    if (!removed[v])
-    {
-      index[v] = out.NumberOfPoints();
-      out.AppendPoint(piece, v);
-      if (added)
-        keptAdded.push_back((*added)[v]);
-    }
-  if (added)
-    *added = std::move(keptAdded);
-  for (int f = 0; f < piece.NumberOfFaces(); ++f)
-    if (alive[f])
-    {
-      const Triangle& t = piece.triangles[f];
-      out.triangles.push_back({ index[t[0]], index[t[1]], index[t[2]] });
-      out.faceOrig.push_back(piece.faceOrig[f]);
-      out.faceCopy.push_back(piece.faceCopy[f]);
-      out.faceFilled.push_back(piece.faceFilled[f]);
-    }
-  piece = std::move(out);
-  return count;
+  return remover.Compact(added);
 }
 } // namespace unfolder_detail
 } // namespace foldingmeshes

@@ -46,14 +46,7 @@ void Unfolder::Stitch(const FoldingNode& node,
  */
 void Unfolder::WeldBoundaries(Piece& piece, SeamReport& seam)
 {
-  std::map<std::pair<int, int>, int> edges;
-  for (const Triangle& t : piece.triangles)
-    for (int k = 0; k < 3; ++k)
-      ++edges[{ std::min(t[k], t[(k + 1) % 3]), std::max(t[k], t[(k + 1) % 3]) }];
-  std::vector<char> open(piece.points.size(), 0);
-  for (const auto& e : edges)
-    if (e.second == 1)
-      open[e.first.first] = open[e.first.second] = 1;
+  const std::vector<char> open = OpenEdgePoints(piece);
   const double tol = std::max(this->Options.weldToleranceScale * this->Tree.rootEpsilon,
     1e-12 * std::max(this->Tree.diagonal, 1e-300));
   // No gap filling here: loops of open edges between copies may be the input's own

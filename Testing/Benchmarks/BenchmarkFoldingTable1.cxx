@@ -3,22 +3,26 @@
 // the input and unfold(fold(input)) as a fraction of the bounding-box diagonal (max, and the
 // mean over the vertices of both meshes; then the proved upper bound over every point of both
 // surfaces, within 1e-4 of the diagonal, marked '!' when it is proved above the root epsilon
-// and '?' when that is not decided within 1e-7 of the diagonal), open, non-manifold and misoriented
-// edges before/after (nm, mis), vertices before/after (pts, distinct positions) and the change, the
-// unfolded faces and their change, the projected points the unfolder removed (rmvd) and the copies
-// of projected points left (proj), and - for the Table 1 models, matched by file name - the paper's
+// and '?' when that is not decided within 1e-7 of the diagonal), open, non-manifold and
+// misoriented edges before/after (nm, mis), vertices before/after (pts, distinct positions)
+// and the change, the unfolded faces and their change, the projected points the unfolder
+// removed (rmvd) and the copies of projected points left (proj), the vertices it removed from
+// mirrored copies (thin, MatchDiscardedDensity), and - for the Table 1 models, matched by file
+// name - the paper's
 // row. Default builder and unfolder options (root epsilon 2% of the diagonal, keep the half
 // with more faces, 5% area stop). Not a test: numbers for humans and closing notes.
 //
 //   BenchmarkFoldingTable1 [--threads N] [--keep fewer] [--tree] [--no-unfold]
 //                          [--no-close-holes] [--hole-tolerance F] [--keep-projected-points]
-//                          [--tolerance F] MESH_OR_FOLDER...
+//                          [--keep-copy-density] [--tolerance F] MESH_OR_FOLDER...
 //
 // --keep fewer: the builder keeps the half with fewer faces; --tree prints each tree's outline
 // (node kind, depth, faces, area share, symmetric area fraction, why a leaf stopped);
 // --no-unfold skips the unfolding columns; --no-close-holes: the unfolder without its final
 // repair; --hole-tolerance: its HoleToleranceScale; --keep-projected-points: the unfolder
 // keeps the vertices the builder projected onto fold planes (RemoveProjectedPoints off);
+// --keep-copy-density: the mirrored copies keep the kept half's density (MatchDiscardedDensity
+// off);
 // --tolerance: the root epsilon as a fraction of the diagonal (the builder's Tolerance,
 // default 0.02).
 #include "MeshComparison.h"
@@ -102,6 +106,7 @@ struct Settings
   bool unfold = true;
   bool closeHoles = true;
   bool removeProjectedPoints = true;
+  bool matchDiscardedDensity = true;
   double holeToleranceScale = -1.0; // < 0: the filter's default
   double tolerance = -1.0;          // root epsilon / diagonal; < 0: the builder's default
 };
@@ -175,6 +180,7 @@ void Run(const std::string& path, vtkPolyData* mesh, const Settings& settings)
   unfolder->SetInputData(tree);
   unfolder->SetCloseHoles(settings.closeHoles);
   unfolder->SetRemoveProjectedPoints(settings.removeProjectedPoints);
+  unfolder->SetMatchDiscardedDensity(settings.matchDiscardedDensity);
   if (settings.holeToleranceScale >= 0.0)
     unfolder->SetHoleToleranceScale(settings.holeToleranceScale);
   const auto t1 = Clock::now();
@@ -216,7 +222,7 @@ void Run(const std::string& path, vtkPolyData* mesh, const Settings& settings)
   const foldingmeshes::EdgeCounts after = foldingmeshes::CountEdges(unfolded);
   std::printf("%-26s %7d %7d %6.1f%% %3d %7.3f %7.3f %7.4f%s %8.5f %7.4f%s %6lld %6lld %4lld %4lld "
               "%4lld %4lld "
-              "%6lld %6lld %+6.1f%% %7lld %+6.1f%% %5d %5d",
+              "%6lld %6lld %+6.1f%% %7lld %+6.1f%% %5d %5d %5d",
     stem.c_str(),
     static_cast<int>(TreeValue(tree, "OriginalFaces")),
     static_cast<int>(TreeValue(tree, "StoredFaces")),
@@ -242,7 +248,8 @@ void Run(const std::string& path, vtkPolyData* mesh, const Settings& settings)
     100.0 * (unfolded->GetNumberOfCells() - input->GetNumberOfCells()) /
       std::max<vtkIdType>(1, input->GetNumberOfCells()),
     static_cast<int>(FieldValue(unfolded, "RemovedProjectedPoints")),
-    static_cast<int>(FieldValue(unfolded, "ProjectedPoints")));
+    static_cast<int>(FieldValue(unfolded, "ProjectedPoints")),
+    static_cast<int>(FieldValue(unfolded, "ThinnedCopyPoints")));
   if (const PaperRow* row = FindPaperRow(stem))
     std::printf("  | %-11s %6d %6d %5.1f%% %3d %5.0f",
       row->model,
@@ -269,6 +276,8 @@ int main(int argc, char* argv[])
       settings.closeHoles = false;
     else if (arg == "--keep-projected-points")
       settings.removeProjectedPoints = false;
+    else if (arg == "--keep-copy-density")
+      settings.matchDiscardedDensity = false;
     else if (arg == "--hole-tolerance" && i + 1 < argc)
       settings.holeToleranceScale = std::atof(argv[++i]);
     else if (arg == "--tolerance" && i + 1 < argc)
@@ -305,7 +314,7 @@ int main(int argc, char* argv[])
     vtkSMPTools::GetEstimatedNumberOfThreads(),
     100.0 * (settings.tolerance >= 0.0 ? settings.tolerance : 0.02));
   std::printf("%-26s %7s %7s %7s %3s %7s %7s %8s %8s %8s %6s %6s %4s %4s %4s %4s %6s %6s %7s %7s "
-              "%7s %5s %5s  | "
+              "%7s %5s %5s %5s  | "
               "%-11s %6s %6s %6s %3s %5s\n",
     "mesh",
     "faces",
@@ -330,6 +339,7 @@ int main(int argc, char* argv[])
     "faces+",
     "rmvd",
     "proj",
+    "thin",
     "paper",
     "faces",
     "stored",

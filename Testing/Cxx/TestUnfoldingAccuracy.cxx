@@ -20,10 +20,10 @@
 //   BorderEdges); an M with a border (teapot, queen) keeps it: at least as many border loops
 //   as M has, at least 90% of its length (never filled); with CloseHoles off the closed inputs
 //   have more open edges (the repair is what closes them), with it the Hausdorff bound holds;
-// - vertex count (RemoveProjectedPoints, default on): the real meshes come back with at most
-//   3% (anchor, dino, teapot), 15% (wingnut, triceratops) or 25% (bearing, queen, hammer:
-//   differently tessellated halves) more points than M; all of them exceed that with the
-//   projected points kept.
+// - vertex count (RemoveProjectedPoints and MatchDiscardedDensity, default on): the real
+//   meshes come back within 0.5% (anchor), 1% (dino, teapot), 2% (bearing, hammer, wingnut),
+//   3% (triceratops) or 5% (queen) of M's point count, the differently tessellated blob within
+//   5%; all of them exceed that with the mirrored copies kept as dense as the kept halves.
 // - seam gap fills bounded by the seam's tolerance: the queen at epsilon 0.5% without the
 //   final repair stays within it.
 //
@@ -319,13 +319,14 @@ vtkSmartPointer<vtkPolyData> RoundTrip(const std::string& name,
     name << ": " << density << " points per face, M " << inputDensity);
   if (exact)
     EXPECT(points == welded, name << ": exact case, " << points << " points, M " << welded);
-  // Vertex count (RemoveProjectedPoints): the vertices the builder projected onto fold
-  // planes are removed again, so what is left above M's count comes from approximate folds
-  // whose halves are tessellated differently (the denser half is doubled).
+  // Vertex count (RemoveProjectedPoints, MatchDiscardedDensity): the vertices the builder
+  // projected onto fold planes are removed again, and the mirrored copy of a fold whose halves
+  // are tessellated differently is thinned to the discarded half's face count; what is left
+  // off M's count comes mostly from seams.
   if (maximumPointExcess >= 0.0)
-    EXPECT(points <= (1.0 + maximumPointExcess) * welded,
-      name << ": " << points << " points, M " << welded << " (more than +"
-           << 100.0 * maximumPointExcess << "%)");
+    EXPECT(std::abs(points - welded) <= maximumPointExcess * welded,
+      name << ": " << points << " points, M " << welded << " (more than "
+           << 100.0 * maximumPointExcess << "% off)");
   EXPECT(edges.open <= input.open + 0.05 * edges.edges,
     name << ": " << edges.open << " open edges of " << edges.edges);
   if (exact)
@@ -493,7 +494,13 @@ int main(int argc, char* argv[])
   namespace pm = foldingmeshes::testing;
   KnownDistances();
   RoundTrip("bilateral blob", pm::MakeBilateralBlob(3000).mesh, false);
-  RoundTrip("different tessellation", pm::MakeBilateralBlobDifferentTessellation(3000).mesh, false);
+  // +4.2% (+37.6% with the mirrored copies kept dense: the finer half doubled).
+  RoundTrip("different tessellation",
+    pm::MakeBilateralBlobDifferentTessellation(3000).mesh,
+    false,
+    nullptr,
+    false,
+    0.05);
   RoundTrip("three planes", pm::MakeThreePlaneShape(3000).mesh, false);
   RoundTrip("asymmetric attachment", pm::MakeBlobWithAsymmetricPart(3000, 0.2).mesh, false);
   for (int i = 1; i < argc; ++i)
@@ -505,16 +512,17 @@ int main(int argc, char* argv[])
       continue;
     double seconds = 0.0;
     // The shared real meshes: closed inputs come back closed (measured on all 29). Vertex
-    // count (measured with the projected points removed / kept): anchor +0.8% / +32%, dino
-    // +1.9% / +5.6%, teapot +1.6% / +10%; wingnut +5.2% / +23%, triceratops +10.7% / +21%;
-    // bearing +23.2% / +45%, queen +14.0% / +52%, hammer_dec4360 +21.9% / +41% (the last
-    // ones have differently tessellated halves: the denser half is doubled; bearing needs the
-    // collapse of crease points: +25.8% with ear clipping alone).
+    // count (measured as it is / with the mirrored copies kept dense, --keep-copy-density /
+    // with the projected points kept too): anchor +0.0% / +0.8% / +32%, dino +0.5% / +1.9% /
+    // +5.6%, teapot +0.1% / +1.6% / +10%; bearing -1.6% / +23.2% / +45%, hammer_dec4360 +0.9%
+    // / +21.9% / +41%, wingnut +1.3% / +5.2% / +23%; triceratops +2.0% / +10.7% / +21%; queen
+    // +4.1% / +14.0% / +52%. Each bound fails with the copies kept dense.
     const std::string name = std::filesystem::path(argv[i]).stem().string();
-    const double excess = name == "anchor_cgal" || name == "dino_cgal" || name == "teapot_newell"
-      ? 0.03
-      : name == "wingnut_oded" || name == "triceratops_cgal" ? 0.15
-                                                             : 0.25;
+    const double excess = name == "anchor_cgal"        ? 0.005
+      : name == "dino_cgal" || name == "teapot_newell" ? 0.01
+      : name == "triceratops_cgal"                     ? 0.03
+      : name == "queen_chess_quaddamage"               ? 0.05
+                                                       : 0.02;
     RoundTrip(name, mesh, false, &seconds, true, excess);
     std::printf("  (%.1f s)\n", seconds);
     if (name == "queen_chess_quaddamage")

@@ -1,0 +1,196 @@
+// Unfolder: thinning of the mirrored copy made at a folding node, so that the node's result
+// has about the face count of its region S: an approximate fold whose two halves were
+// tessellated differently keeps the half with more faces (the paper's rule), and its mirror
+// image would double that half's density. See UnfoldOptions::matchDiscardedDensity.
+#include "FoldingTreeUnfolderInternal.h"
+#include "FoldingTreeUnfolderVertexRemoval.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <functional>
+#include <limits>
+#include <map>
+#include <queue>
+#include <tuple>
+#include <utility>
+
+namespace foldingmeshes
+{
+namespace unfolder_detail
+{
+namespace
+{
+/// New faces may be no sharper than this (radians), unless the old star was sharper.
+const double ThinningMinimumAngle = 20.0 * M_PI / 180.0;
+/// Ears are chosen by their departure from the old star and their shape (RingRules).
+const double ThinningShapeWeight = 0.2;
+
+/// The area of the faces of v that are still there.
+double StarArea(const Piece& piece, const VertexRemover& remover, int v)
+{
+  double area = 0.0;
+  for (int f : remover.FacesOf(v))
+    if (remover.Alive(f))
+    {
+      const Triangle& t = piece.triangles[f];
+      const std::vector<Vec3>& x = piece.points;
+      area += 0.5 * (x[t[1]] - x[t[0]]).cross(x[t[2]] - x[t[0]]).norm();
+    }
+  return area;
+}
+} // namespace
+
+int Unfolder::FoldExcessFaces(const FoldingNode& node, const Piece& piece)
+{
+  // Projected points not tried yet (kept for the stitching above, on a plane of a fold
+  // above, or copies of such points) go later, at a fold above or in the final pass of
+  // RemoveProjectedPoints, each with two faces; those a fold could not remove stay.
+  const int pending =
+    static_cast<int>(std::count(piece.projected.begin(), piece.projected.end(), char(1)));
+  return piece.NumberOfFaces() - 2 * pending - node.numberOfFaces;
+}
+
+int Unfolder::MatchDiscardedDensity(const FoldingNode& node, Piece& piece)
+{
+  int excess = FoldExcessFaces(node, piece);
+  const bool debug = std::getenv("FOLDINGMESHES_DENSITY_DEBUG") != nullptr;
+  if (debug)
+    std::printf("[density] fold at depth %d: S %d faces (%d discarded), result %d faces, %d "
+                "above S (pending projected points apart)",
+      node.depth,
+      node.numberOfFaces,
+      node.discardedFaces,
+      piece.NumberOfFaces(),
+      excess);
+  if (excess < 2)
+  {
+    if (debug)
+      std::printf("\n");
+    return 0;
+  }
+  const uint64_t bit = uint64_t(1) << node.depth;
+  const int n = piece.NumberOfPoints();
+  auto mirroredHere = [&](int copy) { return (this->Result.copies[copy].mirrorMask & bit) != 0; };
+  // Fixed: every point but the copy's (the kept half, the fold line). No new edge joins two
+  // of them, so the fold line keeps its edges.
+  std::vector<char> fixed(n, 1);
+  for (int v = 0; v < n; ++v)
+    fixed[v] = !mirroredHere(piece.pointCopy[v]);
+  const std::vector<char> open = OpenEdgePoints(piece);
+  std::vector<const Plane*> planesAbove;
+  for (int a = node.parent; a >= 0; a = this->Tree.nodes[a].parent)
+    if (this->Tree.nodes[a].kind == FoldingNodeKind::Folding)
+      planesAbove.push_back(&this->Tree.nodes[a].plane);
+  const double tolerance = this->Options.planeTolerance * this->Tree.diagonal;
+  // A point no later step needs as it is: not on an open edge (a seam stitched later, the
+  // input's border), no pending tear or fold-line flag (MirroredFlag), not flagged as on the
+  // input's border, not on a plane of a fold above.
+  auto isFree = [&](int v)
+  {
+    if (open[v] || !piece.tear[v].empty() || piece.border[v] == 1)
+      return false;
+    for (const Plane* p : planesAbove)
+      if (std::abs(p->SignedDistance(piece.points[v])) <= tolerance)
+        return false;
+    return true;
+  };
+  std::vector<char> candidate(n, 0);
+  for (int v = 0; v < n; ++v)
+    candidate[v] = !fixed[v] && !piece.projected[v] && isFree(v);
+
+  VertexRemover remover(piece, tolerance);
+  RingRules rules;
+  rules.minimumAngle = ThinningMinimumAngle;
+  rules.shapeWeight = ThinningShapeWeight;
+  rules.noNewEdgeBetween = &fixed;
+  RingRemoval removal;
+  const char* why = "";
+  // A removal of v (into `removal`): its star all of the copy, its ring of free points, the
+  // surface moved within the error limit.
+  auto attempt = [&](int v) -> bool
+  {
+    for (int f : remover.FacesOf(v))
+      if (remover.Alive(f) && !mirroredHere(piece.faceCopy[f]))
+        return false;
+    if (!remover.Try(v, remover.Limit(v, node.epsilon), rules, removal, why))
+      return false;
+    for (int a : removal.ring)
+      if (!isFree(a))
+        return false;
+    return true;
+  };
+  // The order: the densest spot first (the star's area relative to the copy's mean star
+  // area), then the least departure relative to the limit; index order on ties.
+  double meanArea = 0.0;
+  int counted = 0;
+  for (int v = 0; v < n; ++v)
+    if (candidate[v])
+    {
+      meanArea += StarArea(piece, remover, v);
+      ++counted;
+    }
+  if (counted == 0 || meanArea <= 0.0)
+  {
+    if (debug)
+      std::printf(": no candidate\n");
+    return 0;
+  }
+  meanArea /= counted;
+  auto cost = [&](int v)
+  {
+    return StarArea(piece, remover, v) / meanArea +
+      (removal.limit > 0.0 ? removal.moved / removal.limit : 0.0);
+  };
+  // Without budgets (respectErrorBudget off, older trees) the node's epsilon is the budget of
+  // every point for this thinning, so that removals next to each other cannot add up beyond
+  // it; the points keep no budget afterwards.
+  std::vector<char> unknown(n, 0);
+  for (int v = 0; v < n; ++v)
+    if (!std::isfinite(piece.budget[v]))
+    {
+      unknown[v] = 1;
+      piece.budget[v] = node.epsilon;
+    }
+  // (cost, point, version): entries of points whose star changed since are stale. A point
+  // enters with its area term alone, a lower bound of its cost: it is measured when it comes
+  // first, and goes back with its cost unless that is still the lowest.
+  using Entry = std::tuple<double, int, int>;
+  std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> queue;
+  std::vector<int> version(n, 0);
+  for (int v = 0; v < n; ++v)
+    if (candidate[v])
+      queue.push({ StarArea(piece, remover, v) / meanArea, v, 0 });
+  std::vector<int> ring;
+  while (!queue.empty() && excess >= 2)
+  {
+    const Entry top = queue.top();
+    queue.pop();
+    const int v = std::get<1>(top);
+    if (remover.Removed(v) || std::get<2>(top) != version[v] || !attempt(v))
+      continue;
+    // Measured (again: the budgets of its ring may have been charged since).
+    const double now = cost(v);
+    if (now > std::get<0>(top))
+    {
+      queue.push({ now, v, ++version[v] });
+      continue;
+    }
+    remover.Apply(removal);
+    excess -= 2;
+    ring = removal.ring;
+    for (int a : ring)
+      if (candidate[a])
+        queue.push({ StarArea(piece, remover, a) / meanArea, a, ++version[a] });
+  }
+  if (debug)
+    std::printf(": removed %d points, %d faces above S left\n", remover.Count(), excess);
+  const int removed = remover.Compact(&unknown);
+  for (size_t v = 0; v < unknown.size(); ++v)
+    if (unknown[v])
+      piece.budget[v] = std::numeric_limits<double>::infinity();
+  return removed;
+}
+} // namespace unfolder_detail
+} // namespace foldingmeshes
