@@ -37,6 +37,10 @@ vtkCxxSetObjectMacro(vtkFoldingTreeUnfolder, Controller, vtkMultiProcessControll
 
 namespace
 {
+/// HausdorffToOriginalBound is within this fraction of the original's diagonal of the true
+/// Hausdorff distance (the branch and bound stops there).
+constexpr double BoundTolerance = 1e-5;
+
 using foldingmeshes::Vec3;
 
 void AddValue(vtkFieldData* fd, const char* name, double value)
@@ -256,6 +260,11 @@ bool vtkFoldingTreeUnfolder::MeasureToOriginal(vtkPolyData* original, vtkPolyDat
   AddValue(fd, "OriginalDiagonal", diagonal);
   AddValue(fd, "HausdorffToOriginalRelative", diagonal > 0 ? c.hausdorff / diagonal : 0.0);
   AddValue(fd, "MeanDistanceToOriginalRelative", diagonal > 0 ? c.mean / diagonal : 0.0);
+  // Over every point of both surfaces, not only the samples: a proved upper bound.
+  const foldingmeshes::HausdorffBounds proved =
+    foldingmeshes::SymmetricHausdorffBounds(unfolded, reference, BoundTolerance * diagonal);
+  AddValue(fd, "HausdorffToOriginalBound", proved.upper);
+  AddValue(fd, "HausdorffToOriginalBoundRelative", diagonal > 0 ? proved.upper / diagonal : 0.0);
   this->HausdorffToOriginal = c.hausdorff;
   return true;
 }

@@ -96,8 +96,10 @@ struct FoldingTreeOptions
    * face of S only if every vertex's mirror distance is below min(epsilon, those budgets),
    * so exact symmetries cost nothing and approximate ones stop where the budget is used up.
    * The budgets left are stored in the leaves (FoldingLeafMesh::errorBudget) and bound the
-   * unfolder's vertex moves. Budgets are per point: a bound at the vertices (and at the
-   * centroids of projected faces), not a proof for every point of every face.
+   * unfolder's vertex moves. Budgets are per point; for the faces between them, trimming
+   * also proves the mirror image of every face the fold keeps within the least limit of its
+   * vertices at every point (MirroredFacesWithin), so a copy cannot pass over a dip or a
+   * crease of the input between its corners.
    */
   bool errorBudget = true;
   /**
