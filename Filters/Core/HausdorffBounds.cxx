@@ -63,11 +63,9 @@ double Bound(const std::array<Vec3, 3>& corner,
 /// Pieces split per round at most: enough work per parallel pass, few extra splits past the
 /// point where the bound is settled.
 constexpr size_t BatchPieces = 4096;
+}
 
-/// DirectedHausdorffBounds that splits only pieces whose bound exceeds max(lower, floor) +
-/// tolerance (floor: a distance known from elsewhere, e.g. the other direction's lower bound;
-/// `upper` may then be below floor + tolerance, which is all the caller needs).
-HausdorffBounds Directed(const TriangleMesh& from,
+HausdorffBounds DirectedHausdorffBounds(const TriangleMesh& from,
   const SurfaceDistanceQuery& to,
   double tolerance,
   long long maxEvaluations,
@@ -153,16 +151,6 @@ HausdorffBounds Directed(const TriangleMesh& from,
   result.upper = std::max(result.lower, heap.empty() ? 0.0 : heap.top().bound);
   return result;
 }
-}
-
-HausdorffBounds DirectedHausdorffBounds(const TriangleMesh& from,
-  const SurfaceDistanceQuery& to,
-  double tolerance,
-  long long maxEvaluations,
-  double floor)
-{
-  return Directed(from, to, tolerance, maxEvaluations, floor);
-}
 
 HausdorffBounds SymmetricHausdorffBounds(const TriangleMesh& a,
   const TriangleMesh& b,
@@ -179,8 +167,9 @@ HausdorffBounds SymmetricHausdorffBounds(const TriangleMesh& a,
   }
   const SurfaceDistanceQuery toA(a), toB(b);
   // The second direction needs no bound below what the first one measured.
-  const HausdorffBounds ab = Directed(a, toB, tolerance, maxEvaluations, floor);
-  const HausdorffBounds ba = Directed(b, toA, tolerance, maxEvaluations, std::max(floor, ab.lower));
+  const HausdorffBounds ab = DirectedHausdorffBounds(a, toB, tolerance, maxEvaluations, floor);
+  const HausdorffBounds ba =
+    DirectedHausdorffBounds(b, toA, tolerance, maxEvaluations, std::max(floor, ab.lower));
   result.lower = std::max(ab.lower, ba.lower);
   result.upper = std::max(ab.upper, ba.upper);
   result.evaluations = ab.evaluations + ba.evaluations;
