@@ -91,14 +91,7 @@ void Builder::TransferDiscardedTears(WorkMesh& w,
   if (lost.empty())
     return;
   // Boundary vertices of the region (all its faces, before the fold).
-  std::map<std::pair<int, int>, int> edges;
-  for (const Triangle& t : w.triangles)
-    for (int k = 0; k < 3; ++k)
-      ++edges[{ std::min(t[k], t[(k + 1) % 3]), std::max(t[k], t[(k + 1) % 3]) }];
-  std::vector<char> boundary(w.points.size(), 0);
-  for (const auto& e : edges)
-    if (e.second == 1)
-      boundary[e.first.first] = boundary[e.first.second] = 1;
+  const std::vector<char> boundary = BorderPoints(w.triangles, w.points.size());
   Buckets kept, removed;
   kept.cell = removed.cell = std::max(eps, 1e-12 * this->Tree.diagonal);
   for (int v = 0; v < w.NumberOfPoints(); ++v)
@@ -152,18 +145,11 @@ void Builder::FlagMirroredFoldLines(WorkMesh& w,
       ancestors.push_back(d);
   if (ancestors.empty())
     return;
-  std::map<std::pair<int, int>, int> edges;
+  std::vector<Triangle> kept;
   for (int f = 0; f < w.NumberOfFaces(); ++f)
     if (keep[f])
-      for (int k = 0; k < 3; ++k)
-      {
-        const int a = w.triangles[f][k], b = w.triangles[f][(k + 1) % 3];
-        ++edges[{ std::min(a, b), std::max(a, b) }];
-      }
-  std::vector<char> boundary(w.points.size(), 0);
-  for (const auto& e : edges)
-    if (e.second == 1)
-      boundary[e.first.first] = boundary[e.first.second] = 1;
+      kept.push_back(w.triangles[f]);
+  const std::vector<char> boundary = BorderPoints(kept, w.points.size());
   const uint64_t bit = uint64_t(1) << depth;
   for (int v = 0; v < w.NumberOfPoints(); ++v)
   {

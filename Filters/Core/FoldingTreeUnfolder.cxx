@@ -220,19 +220,6 @@ void Unfolder::Consume(Piece& piece, int code)
       t.end());
 }
 
-std::vector<char> OpenEdgePoints(const Piece& piece)
-{
-  std::map<std::pair<int, int>, int> uses;
-  for (const Triangle& t : piece.triangles)
-    for (int k = 0; k < 3; ++k)
-      ++uses[{ std::min(t[k], t[(k + 1) % 3]), std::max(t[k], t[(k + 1) % 3]) }];
-  std::vector<char> open(piece.points.size(), 0);
-  for (const auto& e : uses)
-    if (e.second == 1)
-      open[e.first.first] = open[e.first.second] = 1;
-  return open;
-}
-
 /// Boundary edges whose two vertices are tear vertices.
 void Unfolder::CountGaps(const Piece& piece, const std::vector<char>& isTear, SeamReport& seam)
 {

@@ -78,7 +78,7 @@ int Unfolder::MatchDiscardedDensity(const FoldingNode& node, Piece& piece)
   std::vector<char> fixed(n, 1);
   for (int v = 0; v < n; ++v)
     fixed[v] = !mirroredHere(piece.pointCopy[v]);
-  const std::vector<char> open = OpenEdgePoints(piece);
+  const std::vector<char> open = BorderPoints(piece.triangles, piece.points.size());
   std::vector<const Plane*> planesAbove;
   for (int a = node.parent; a >= 0; a = this->Tree.nodes[a].parent)
     if (this->Tree.nodes[a].kind == FoldingNodeKind::Folding)

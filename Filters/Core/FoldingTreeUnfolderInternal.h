@@ -3,6 +3,7 @@
 #define foldingmeshes_FoldingTreeUnfolderInternal_h
 
 #include "FoldingTreeUnfolder.h"
+#include "MeshPreparation.h"
 #include "UnionFind.h"
 
 #include <algorithm>
@@ -169,9 +170,6 @@ struct CellHash
     return static_cast<size_t>(k.x * 73856093LL ^ k.y * 19349663LL ^ k.z * 83492791LL);
   }
 };
-
-/// Per point of the piece: 1 on an edge used by one face (FoldingTreeUnfolder.cxx).
-std::vector<char> OpenEdgePoints(const Piece& piece);
 
 /// Hash of an edge (pair of point ids), for the repair's edge sets.
 struct EdgeHash

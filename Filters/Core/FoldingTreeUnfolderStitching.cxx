@@ -46,7 +46,7 @@ void Unfolder::Stitch(const FoldingNode& node,
  */
 void Unfolder::WeldBoundaries(Piece& piece, SeamReport& seam)
 {
-  const std::vector<char> open = OpenEdgePoints(piece);
+  const std::vector<char> open = BorderPoints(piece.triangles, piece.points.size());
   const double tol = std::max(this->Options.weldToleranceScale * this->Tree.rootEpsilon,
     1e-12 * std::max(this->Tree.diagonal, 1e-300));
   // No gap filling here: loops of open edges between copies may be the input's own

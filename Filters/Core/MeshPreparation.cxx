@@ -517,4 +517,17 @@ void LinkNearbyParts(PreparedMesh& mesh, double gap)
       mesh.proximityLinks.push_back({ v, nearest.second });
   }
 }
+
+std::vector<char> BorderPoints(const std::vector<Triangle>& triangles, size_t pointCount)
+{
+  std::map<std::pair<int, int>, int> uses;
+  for (const Triangle& t : triangles)
+    for (int k = 0; k < 3; ++k)
+      ++uses[{ std::min(t[k], t[(k + 1) % 3]), std::max(t[k], t[(k + 1) % 3]) }];
+  std::vector<char> border(pointCount, 0);
+  for (const auto& e : uses)
+    if (e.second == 1)
+      border[e.first.first] = border[e.first.second] = 1;
+  return border;
+}
 }

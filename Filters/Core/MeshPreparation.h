@@ -52,6 +52,10 @@ std::vector<int> CoincidentPointRepresentatives(const std::vector<Vec3>& points)
  * may span touching parts.
  */
 void LinkNearbyParts(PreparedMesh& mesh, double gap);
+
+/// Per point (pointCount of them): 1 when it is an end of an edge used by exactly one of
+/// `triangles` (a border or crack of that set of faces), else 0.
+std::vector<char> BorderPoints(const std::vector<Triangle>& triangles, size_t pointCount);
 }
 
 #endif
