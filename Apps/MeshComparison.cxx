@@ -104,4 +104,22 @@ void CertifiedSurfaceDistance(vtkPolyData* a,
   lower = bounds.lower;
   upper = bounds.upper;
 }
+
+ProvedDistance ProvedSurfaceDistance(vtkPolyData* a,
+  vtkPolyData* b,
+  double tolerance,
+  double threshold,
+  double decideTolerance)
+{
+  ProvedDistance d;
+  CertifiedSurfaceDistance(a, b, tolerance, d.lower, d.upper);
+  d.within = d.upper <= threshold ? 1 : d.lower > threshold ? -1 : 0;
+  if (d.within == 0)
+  {
+    double lower = 0.0, upper = 0.0;
+    CertifiedSurfaceDistance(a, b, decideTolerance, lower, upper, threshold);
+    d.within = upper <= threshold + decideTolerance ? 1 : lower > threshold ? -1 : 0;
+  }
+  return d;
+}
 }

@@ -45,6 +45,21 @@ void CertifiedSurfaceDistance(vtkPolyData* a,
   double& lower,
   double& upper,
   double floor = 0.0);
+
+/// CertifiedSurfaceDistance within `tolerance`, and whether the distance is within
+/// `threshold`: -1 proved above it, 1 proved within it (to `decideTolerance`: where the first
+/// bounds straddle it, they are refined to that tolerance with threshold as the floor), 0
+/// still undecided.
+struct ProvedDistance
+{
+  double lower = 0.0, upper = 0.0;
+  int within = 0;
+};
+ProvedDistance ProvedSurfaceDistance(vtkPolyData* a,
+  vtkPolyData* b,
+  double tolerance,
+  double threshold,
+  double decideTolerance);
 }
 
 #endif

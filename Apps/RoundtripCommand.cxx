@@ -85,16 +85,10 @@ int Roundtrip(int argc, char* argv[])
   const double epsilon = TreeValue(tree, "RootEpsilon");
   // Over every point of both surfaces: a proved bound within 1e-5 of the diagonal, and whether
   // it is within epsilon decided to 1e-7 of the diagonal.
-  double lower = 0.0, bound = 0.0;
-  foldingmeshes::CertifiedSurfaceDistance(input, unfolded, 1e-5 * diagonal, lower, bound);
-  bool within = bound <= epsilon;
-  if (!within && lower <= epsilon)
-  {
-    double decidedLower = 0.0, decidedUpper = 0.0;
-    foldingmeshes::CertifiedSurfaceDistance(
-      input, unfolded, 1e-7 * diagonal, decidedLower, decidedUpper, epsilon);
-    within = decidedUpper <= epsilon + 1e-7 * diagonal;
-  }
+  const foldingmeshes::ProvedDistance proved = foldingmeshes::ProvedSurfaceDistance(
+    input, unfolded, 1e-5 * diagonal, epsilon, 1e-7 * diagonal);
+  const double bound = proved.upper;
+  const bool within = proved.within > 0;
   const foldingmeshes::EdgeCounts before = foldingmeshes::CountEdges(input),
                                   after = foldingmeshes::CountEdges(unfolded);
   const long long openBefore = before.open, openAfter = after.open;

@@ -202,20 +202,12 @@ void Run(const std::string& path, vtkPolyData* mesh, const Settings& settings)
   foldingmeshes::SymmetricSurfaceDistance(input, unfolded, hausdorff, mean);
   hausdorff /= diagonal;
   mean /= diagonal;
-  // The proved bound, within 1e-4 of the diagonal; where that does not decide whether it is
-  // within epsilon, decided to 1e-7 of the diagonal ('?': still undecided).
-  double lowerBound = 0.0, upperBound = 0.0;
-  foldingmeshes::CertifiedSurfaceDistance(input, unfolded, 1e-4 * diagonal, lowerBound, upperBound);
-  const double rootEpsilon = TreeValue(tree, "RootEpsilon");
-  const char* verdict = upperBound <= rootEpsilon ? " " : lowerBound > rootEpsilon ? "!" : "?";
-  if (*verdict == '?')
-  {
-    double lower = 0.0, upper = 0.0;
-    foldingmeshes::CertifiedSurfaceDistance(
-      input, unfolded, 1e-7 * diagonal, lower, upper, rootEpsilon);
-    verdict = upper <= rootEpsilon + 1e-7 * diagonal ? " " : lower > rootEpsilon ? "!" : "?";
-  }
-  upperBound /= diagonal;
+  // The proved bound, within 1e-4 of the diagonal; whether it is within epsilon decided to
+  // 1e-7 of the diagonal where that is closer ('?': still undecided).
+  const foldingmeshes::ProvedDistance proved = foldingmeshes::ProvedSurfaceDistance(
+    input, unfolded, 1e-4 * diagonal, TreeValue(tree, "RootEpsilon"), 1e-7 * diagonal);
+  const char* verdict = proved.within > 0 ? " " : proved.within < 0 ? "!" : "?";
+  const double upperBound = proved.upper / diagonal;
   const double epsilon = TreeValue(tree, "RootEpsilon") / diagonal;
 
   const foldingmeshes::EdgeCounts before = foldingmeshes::CountEdges(input);
