@@ -152,6 +152,12 @@ struct Reader
       this->Double(fd, "SymmetricAreaFraction", where, &node.symmetricAreaFraction);
     if (fd->GetAbstractArray("DetectionRun") && this->Int(fd, "DetectionRun", where, run))
       node.detectionRun = run != 0;
+    long long starts = 0;
+    if (fd->GetAbstractArray("DetectionStarts") &&
+      this->Int(fd, "DetectionStarts", where, starts))
+      node.detectionStarts = static_cast<int>(starts);
+    if (fd->GetAbstractArray("DetectionSeconds"))
+      this->Double(fd, "DetectionSeconds", where, &node.detectionSeconds);
     return this->IntList(fd, "FoldingRegionOriginalFaces", where, node.originalFaces);
   }
 

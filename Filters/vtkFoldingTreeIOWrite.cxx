@@ -84,6 +84,8 @@ void AddNodeMetadata(vtkFieldData* fd, const FoldingNode& node, int index)
   AddIntList(fd, "FoldingRegionOriginalFaces", node.originalFaces);
   AddDouble(fd, "SymmetricAreaFraction", &node.symmetricAreaFraction);
   AddInt(fd, "DetectionRun", node.detectionRun ? 1 : 0);
+  AddInt(fd, "DetectionStarts", node.detectionStarts);
+  AddDouble(fd, "DetectionSeconds", &node.detectionSeconds);
 }
 
 /// Copies the arrays of `src` to `dst` (sized n) picking tuple ids[i] for tuple i; active

@@ -127,6 +127,9 @@ struct FoldingNode
   // Detection statistics (Folding and Segmentation nodes, and NoSymmetry leaves).
   double symmetricAreaFraction = 0.0; ///< area(S) / area(region) after trimming
   bool detectionRun = false;
+  int detectionStarts = 0;        ///< starts the detection tried (SymmetryResult::startsTried)
+  double detectionSeconds = 0.0;  ///< wall time of the detection at this node (a measurement:
+                                  ///< differs between runs, like FoldingTree::buildSeconds)
 
   // Leaves.
   LeafReason leafReason = LeafReason::None;

@@ -197,9 +197,13 @@ int Builder::Build(WorkMesh w, int parent, int depth, double eps, int folds, uin
   const double base = this->Fraction(this->DoneFaces);
   const double span = 0.5 * this->Fraction(nf);
   so.progress = [&](double p) { return this->Report(base + p * span); };
+  const auto detectionStart = std::chrono::steady_clock::now();
   const SymmetryResult result = DetectSymmetry(pm, so);
   FoldingNode& node = this->Tree.nodes[index];
   node.detectionRun = true;
+  node.detectionStarts = result.startsTried;
+  node.detectionSeconds =
+    std::chrono::duration<double>(std::chrono::steady_clock::now() - detectionStart).count();
   if (result.aborted || this->Aborted)
   {
     this->Aborted = true;

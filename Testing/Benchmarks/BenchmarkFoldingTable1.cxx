@@ -17,7 +17,8 @@
 //                          [--keep-copy-density] [--tolerance F] MESH_OR_FOLDER...
 //
 // --keep fewer: the builder keeps the half with fewer faces; --tree prints each tree's outline
-// (node kind, depth, faces, area share, symmetric area fraction, why a leaf stopped);
+// (node kind, depth, faces, area share, symmetric area fraction, the detection's wall time and
+// starts, why a leaf stopped) and the detections' share of the build time;
 // --no-unfold skips the unfolding columns; --no-close-holes: the unfolder without its final
 // repair; --hole-tolerance: its HoleToleranceScale; --keep-projected-points: the unfolder
 // keeps the vertices the builder projected onto fold planes (RemoveProjectedPoints off);
@@ -129,7 +130,10 @@ void PrintOutline(vtkMultiBlockDataSet* blocks)
       node.numberOfFaces,
       100.0 * node.area / tree.originalArea);
     if (node.detectionRun)
-      std::printf(" S %5.1f%%", 100.0 * node.symmetricAreaFraction);
+      std::printf(" S %5.1f%% detect %.3f s %2d starts",
+        100.0 * node.symmetricAreaFraction,
+        node.detectionSeconds,
+        node.detectionStarts);
     if (node.kind == foldingmeshes::FoldingNodeKind::Folding)
       std::printf(" n (%6.3f %6.3f %6.3f) discarded %d",
         node.plane.normal.x(),
@@ -141,6 +145,21 @@ void PrintOutline(vtkMultiBlockDataSet* blocks)
         " stored %d (%s)", node.mesh.NumberOfFaces(), foldingmeshes::ToString(node.leafReason));
     std::printf("\n");
   }
+  double detection = 0.0;
+  int detections = 0, starts = 0;
+  for (const foldingmeshes::FoldingNode& node : tree.nodes)
+    if (node.detectionRun)
+    {
+      detection += node.detectionSeconds;
+      starts += node.detectionStarts;
+      ++detections;
+    }
+  std::printf("  %d detections (%d starts) took %.3f s of the %.3f s build (%.0f%%)\n",
+    detections,
+    starts,
+    detection,
+    tree.buildSeconds,
+    tree.buildSeconds > 0.0 ? 100.0 * detection / tree.buildSeconds : 0.0);
 }
 
 void Run(const std::string& path, vtkPolyData* mesh, const Settings& settings)

@@ -23,6 +23,7 @@
 // in TestFoldingTreeMalformed.cxx.
 #include "TestFoldingTreeChecks.h"
 #include "vtkFoldingTreeBuilder.h"
+#include "vtkFoldingTreeIO.h"
 #include "vtkFoldingTreeUnfolder.h"
 
 #include <vtkCallbackCommand.h>
@@ -135,6 +136,33 @@ vtkSmartPointer<vtkMultiBlockDataSet> RunCase(const Case& c, const std::string& 
   if (c.structure)
     c.structure(nodes);
   CheckLeafArrays(nodes, input, c.label);
+
+  // Detection statistics per node: starts tried and wall time, within the build time.
+  {
+    foldingmeshes::FoldingTree decoded;
+    std::string error;
+    EXPECT(foldingmeshes::MultiBlockToFoldingTree(tree, decoded, error),
+      c.label << ": tree not decodable: " << error);
+    double detectionSeconds = 0.0;
+    int detections = 0;
+    for (const foldingmeshes::FoldingNode& node : decoded.nodes)
+    {
+      if (node.detectionRun)
+      {
+        ++detections;
+        detectionSeconds += node.detectionSeconds;
+      }
+      EXPECT(node.detectionRun ? node.detectionStarts >= 1 && node.detectionSeconds >= 0.0 &&
+            std::isfinite(node.detectionSeconds)
+                               : node.detectionStarts == 0 && node.detectionSeconds == 0.0,
+        c.label << ": node " << node.depth << " detection " << node.detectionRun << " starts "
+                << node.detectionStarts << " seconds " << node.detectionSeconds);
+    }
+    EXPECT(detections >= 1 || decoded.nodes.size() == 1, c.label << ": no detection recorded");
+    EXPECT(detectionSeconds <= FieldValue(fd, "BuildSeconds") + 1e-6,
+      c.label << ": detections " << detectionSeconds << " s > build "
+              << FieldValue(fd, "BuildSeconds") << " s");
+  }
 
   // Output 1.
   vtkDataArray* leafId = segmentation->GetCellData()->GetArray("FoldingLeafId");
