@@ -37,8 +37,8 @@
  *   FoldingNodeKind = 0, FoldingNodeIndex, FoldingNodeDepth, FoldingEpsilon,
  *   FoldingFoldsAbove, FoldingRegionFaces, FoldingRegionArea, FoldingRegionOriginalFaces,
  *   SymmetricAreaFraction, DetectionRun, DetectionStarts (starts the detection tried),
- *   DetectionSeconds (its wall time: a measurement, like the tree's BuildSeconds; the last
- *   three optional on reading), LeafReason (int, Core's LeafReason enum),
+ *   DetectionSeconds (its wall time: a measurement, like the tree's BuildSeconds; the
+ *   detection statistics are optional on reading), LeafReason (int, Core's LeafReason enum),
  *   LeafReasonName (string) and the mirrored-flag records MirroredFlagPoint,
  *   MirroredFlagLevel, MirroredFlagKind (0 tear, 1 plane), MirroredFlagMask (uint64).
  * - a folding node is a vtkMultiBlockDataSet of two blocks: 0 = the child subtree, 1 =

@@ -121,8 +121,16 @@ void PrintOutline(vtkMultiBlockDataSet* blocks)
     std::printf("  (tree not readable: %s)\n", error.c_str());
     return;
   }
+  double detection = 0.0;
+  int detections = 0, starts = 0;
   for (const foldingmeshes::FoldingNode& node : tree.nodes)
   {
+    if (node.detectionRun)
+    {
+      detection += node.detectionSeconds;
+      starts += node.detectionStarts;
+      ++detections;
+    }
     std::printf("  %*s%-12s faces %6d area %5.1f%%",
       2 * node.depth,
       "",
@@ -145,15 +153,6 @@ void PrintOutline(vtkMultiBlockDataSet* blocks)
         " stored %d (%s)", node.mesh.NumberOfFaces(), foldingmeshes::ToString(node.leafReason));
     std::printf("\n");
   }
-  double detection = 0.0;
-  int detections = 0, starts = 0;
-  for (const foldingmeshes::FoldingNode& node : tree.nodes)
-    if (node.detectionRun)
-    {
-      detection += node.detectionSeconds;
-      starts += node.detectionStarts;
-      ++detections;
-    }
   std::printf("  %d detections (%d starts) took %.3f s of the %.3f s build (%.0f%%)\n",
     detections,
     starts,
