@@ -203,16 +203,20 @@ void FaceTree::Traverse(const Vec3& p, const double& best2, Prune prune, Visit v
   }
 }
 
+template <typename Excluded>
 bool FaceTree::TryFace(const Vec3& p,
   const Vec3& normal,
   double cosLimit,
   int k,
   double& best2,
-  Hit& hit) const
+  Hit& hit,
+  Excluded excluded) const
 {
   if (this->Beyond(p, k, best2))
     return false;
   const int f = this->Order[k];
+  if (excluded(f))
+    return false;
   const Triangle& t = Mesh.triangles[f];
   const ClosestPointOnTriangle cp = this->ClosestPoint(p, k);
   if (cp.squaredDistance > best2 || (cp.squaredDistance == best2 && hit.face >= 0 && f > hit.face))
@@ -232,7 +236,27 @@ FaceTree::Hit FaceTree::ClosestCompatibleFace(const Vec3& p,
   const Vec3& normal,
   double cosLimit,
   double maxDistance,
-  int hintFace) const
+  int hintFace,
+  const std::vector<char>* excludedFaces) const
+{
+  if (excludedFaces)
+    return this->ClosestCompatibleFaceAmong(p,
+      normal,
+      cosLimit,
+      maxDistance,
+      hintFace,
+      [excludedFaces](int f) { return (*excludedFaces)[f] != 0; });
+  return this->ClosestCompatibleFaceAmong(
+    p, normal, cosLimit, maxDistance, hintFace, [](int) { return false; });
+}
+
+template <typename Excluded>
+FaceTree::Hit FaceTree::ClosestCompatibleFaceAmong(const Vec3& p,
+  const Vec3& normal,
+  double cosLimit,
+  double maxDistance,
+  int hintFace,
+  Excluded excluded) const
 {
   Hit hit;
   if (this->Nodes.empty())
@@ -246,7 +270,7 @@ FaceTree::Hit FaceTree::ClosestCompatibleFace(const Vec3& p,
   // A compatible hint bounds the search from the start; the minimum (lowest id on ties) is
   // the same with or without it.
   if (hintFace >= 0 && hintFace < Mesh.NumberOfFaces() && this->OrderIndex[hintFace] >= 0)
-    this->TryFace(p, normal, cosLimit, this->OrderIndex[hintFace], best2, hit);
+    this->TryFace(p, normal, cosLimit, this->OrderIndex[hintFace], best2, hit, excluded);
   this->Traverse(
     p,
     best2,
@@ -259,7 +283,7 @@ FaceTree::Hit FaceTree::ClosestCompatibleFace(const Vec3& p,
       const double cosSum = node.coneCos * cosL - node.coneSin * sinL;
       return cosL > -node.coneCos && normal.dot(node.coneAxis) < cosSum - 1e-12;
     },
-    [&](int k) { this->TryFace(p, normal, cosLimit, k, best2, hit); });
+    [&](int k) { this->TryFace(p, normal, cosLimit, k, best2, hit, excluded); });
   if (hit.face >= 0)
     hit.distance = std::sqrt(best2);
   return hit;

@@ -42,12 +42,15 @@ public:
    * point makes a cosine >= cosLimit with `normal`. Only faces closer than maxDistance
    * count; none gives face -1 and an infinite distance. `hintFace` (e.g. the answer of a
    * previous query for a nearby point) only speeds the search up: the result is the same.
+   * With `excludedFaces` (per face id, nonzero: left out) the answer is the one for the mesh
+   * without those faces - e.g. a region that lost a few faces, queried without a new tree.
    */
   Hit ClosestCompatibleFace(const Vec3& p,
     const Vec3& normal,
     double cosLimit,
     double maxDistance,
-    int hintFace = -1) const;
+    int hintFace = -1,
+    const std::vector<char>* excludedFaces = nullptr) const;
 
   /// The face closest to p, whatever its normal (closer than maxDistance; else face -1).
   Hit ClosestFace(const Vec3& p, double maxDistance) const;
@@ -76,10 +79,25 @@ private:
   /// during the visit) and not pruned by prune(node).
   template <typename Prune, typename Visit>
   void Traverse(const Vec3& p, const double& best2, Prune prune, Visit visit) const;
-  /// Leaf test of ClosestCompatibleFace: takes face f when it is compatible and closer
-  /// (or as close with a lower id) than best2; true if taken.
-  bool TryFace(const Vec3& p, const Vec3& normal, double cosLimit, int k, double& best2, Hit& hit)
-    const;
+  /// ClosestCompatibleFace among the faces f with !excluded(f): a template, so that the
+  /// query without exclusions (the hot path) inlines a constant `false`, no test per face.
+  template <typename Excluded>
+  Hit ClosestCompatibleFaceAmong(const Vec3& p,
+    const Vec3& normal,
+    double cosLimit,
+    double maxDistance,
+    int hintFace,
+    Excluded excluded) const;
+  /// Leaf test of ClosestCompatibleFace: takes face f when it is not excluded, compatible and
+  /// closer (or as close with a lower id) than best2; true if taken.
+  template <typename Excluded>
+  bool TryFace(const Vec3& p,
+    const Vec3& normal,
+    double cosLimit,
+    int k,
+    double& best2,
+    Hit& hit,
+    Excluded excluded) const;
   static double BoxDistance2(const Vec3& lo, const Vec3& hi, const Vec3& p)
   {
     const Vec3 d = (lo - p).cwiseMax(p - hi).cwiseMax(0.0);

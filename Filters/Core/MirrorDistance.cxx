@@ -24,7 +24,8 @@ void MirrorDistance::Compute(const Plane& plane,
   double maxDistance,
   std::vector<double>& d,
   std::vector<Vec3>* closest,
-  std::vector<Vec3>* closestNormals) const
+  std::vector<Vec3>* closestNormals,
+  std::vector<int>* closestFaces) const
 {
   const int nv = Mesh.NumberOfPoints();
   // Every entry is (re)set in the parallel loop: vectors reused across calls are not
@@ -34,6 +35,8 @@ void MirrorDistance::Compute(const Plane& plane,
     closest->resize(nv);
   if (closestNormals)
     closestNormals->resize(nv);
+  if (closestFaces)
+    closestFaces->resize(nv);
   vtkSMPTools::For(0,
     nv,
     256,
@@ -46,6 +49,8 @@ void MirrorDistance::Compute(const Plane& plane,
           (*closest)[i] = Vec3::Zero();
         if (closestNormals)
           (*closestNormals)[i] = Vec3::Zero();
+        if (closestFaces)
+          (*closestFaces)[i] = -1;
         if (!VertexUsed[i])
           continue;
         const Vec3 r = plane.Reflect(Mesh.points[i]);
@@ -63,6 +68,8 @@ void MirrorDistance::Compute(const Plane& plane,
             (*closest)[i] = hit.point;
           if (closestNormals && hit.face >= 0)
             (*closestNormals)[i] = Mesh.faceNormals[hit.face];
+          if (closestFaces)
+            (*closestFaces)[i] = hit.face;
         }
         else
         {
@@ -75,8 +82,37 @@ void MirrorDistance::Compute(const Plane& plane,
               (*closest)[i] = r - h * Mesh.faceNormals[f];
             if (closestNormals)
               (*closestNormals)[i] = Mesh.faceNormals[f];
+            if (closestFaces)
+              (*closestFaces)[i] = f;
           }
         }
+      }
+    });
+}
+
+void MirrorDistance::Recompute(const Plane& plane,
+  double maxDistance,
+  const std::vector<int>& vertices,
+  const std::vector<char>& excludedFaces,
+  std::vector<double>& d,
+  std::vector<int>& closestFaces) const
+{
+  vtkSMPTools::For(0,
+    static_cast<vtkIdType>(vertices.size()),
+    64,
+    [&](vtkIdType begin, vtkIdType end)
+    {
+      for (vtkIdType k = begin; k < end; ++k)
+      {
+        const int i = vertices[k];
+        const Vec3 r = plane.Reflect(Mesh.points[i]);
+        const Vec3 rn = plane.ReflectDirection(Mesh.vertexNormals[i]);
+        const FaceTree::Hit hit =
+          Faces.ClosestCompatibleFace(r, rn, CosLimit, maxDistance, LastFace[i], &excludedFaces);
+        if (hit.face >= 0)
+          LastFace[i] = hit.face;
+        d[i] = hit.distance;
+        closestFaces[i] = hit.face;
       }
     });
 }

@@ -28,14 +28,31 @@ public:
 
   /// d[i] for all vertices; distances beyond maxDistance (fine metric) are infinite.
   /// With `closest`, also the closest compatible point of the mesh (fine metric) or the
-  /// foot of the perpendicular on the face plane (coarse metric), and with
-  /// `closestNormals` the unit normal of the face holding it.
+  /// foot of the perpendicular on the face plane (coarse metric), with `closestNormals` the
+  /// unit normal of the face holding it, and with `closestFaces` that face's id (-1 where
+  /// d[i] is infinite).
   void Compute(const Plane& plane,
     DistanceMetric metric,
     double maxDistance,
     std::vector<double>& d,
     std::vector<Vec3>* closest = nullptr,
-    std::vector<Vec3>* closestNormals = nullptr) const;
+    std::vector<Vec3>* closestNormals = nullptr,
+    std::vector<int>* closestFaces = nullptr) const;
+
+  /**
+   * The fine metric again for the vertices `vertices` only, on the mesh without the faces
+   * where excludedFaces[f] is nonzero: d[i] and closestFaces[i] (sized by the caller) as
+   * Compute would give them for that mesh - provided its vertex normals and degenerate faces
+   * are this mesh's (the caller checks), and the vertices are used by a non-excluded face
+   * (the others' distance is infinite, no query needed). When a mesh loses faces, only the
+   * vertices whose closest face was lost need this: the others keep their minimum.
+   */
+  void Recompute(const Plane& plane,
+    double maxDistance,
+    const std::vector<int>& vertices,
+    const std::vector<char>& excludedFaces,
+    std::vector<double>& d,
+    std::vector<int>& closestFaces) const;
 
   const FaceTree& Tree() const { return this->Faces; }
 

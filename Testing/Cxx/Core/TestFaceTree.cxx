@@ -16,7 +16,8 @@
 //   slivers, and on the blob, queries far off the surface (where the plane bound of
 //   FaceTree::Beyond prunes most faces) give bit for bit the face and distance of an exhaustive
 //   scan with the tree's own per-face rule (closest point, then the interpolated normal test
-//   n . q >= cos * |n|, ties: lowest id), with and without a hint face.
+//   n . q >= cos * |n|, ties: lowest id), with and without a hint face, and with a third of
+//   the faces excluded (a scan of the others; the hint may be an excluded face).
 #include "CoreTestUtilities.h"
 #include "FaceTree.h"
 #include "PointTriangleDistance.h"
@@ -213,18 +214,20 @@ void CheckMesh(const char* name,
     name << ": " << centroidMismatches << " NearestCentroidFace mismatches");
 }
 
-/// Exhaustive scan with FaceTree's per-face rule: the result the tree must give bit for bit.
+/// Exhaustive scan with FaceTree's per-face rule: the result the tree must give bit for bit
+/// (without the faces f with (*excluded)[f]).
 FaceTree::Hit ExhaustiveCompatible(const PreparedMesh& m,
   const Vec3& p,
   const Vec3& n,
   double cosLimit,
-  double maxDistance)
+  double maxDistance,
+  const std::vector<char>* excluded = nullptr)
 {
   FaceTree::Hit hit;
   double best2 = maxDistance * maxDistance;
   for (int f = 0; f < m.NumberOfFaces(); ++f)
   {
-    if (m.faceDegenerate[f])
+    if (m.faceDegenerate[f] || (excluded && (*excluded)[f]))
       continue;
     const auto& t = m.triangles[f];
     const auto cp = ClosestPointTriangle(p, m.points[t[0]], m.points[t[1]], m.points[t[2]]);
@@ -246,12 +249,16 @@ FaceTree::Hit ExhaustiveCompatible(const PreparedMesh& m,
 
 /// Queries at heights of up to `farthest` above or below random surface points, with the
 /// surface normal (compatible) or a tilted one; the tree's answers must equal the exhaustive
-/// scan's exactly, with no hint, the answer as hint, and a random hint.
+/// scan's exactly, with no hint, the answer as hint, and a random hint - also with a third of
+/// the faces excluded.
 void CheckExact(const char* name, const PreparedMesh& m, int queries, double farthest)
 {
   const FaceTree tree(m);
   const double cos45 = std::cos(kPi / 4);
-  int mismatches = 0, hits = 0;
+  std::vector<char> excluded(m.NumberOfFaces());
+  for (char& x : excluded)
+    x = rng() % 3 == 0;
+  int mismatches = 0, hits = 0, excludedMismatches = 0;
   for (int q = 0; q < queries; ++q)
   {
     const int v = static_cast<int>(rng() % m.NumberOfPoints());
@@ -275,8 +282,23 @@ void CheckExact(const char* name, const PreparedMesh& m, int queries, double far
                << ": tree face " << hit.face << " d " << hit.distance << ", exhaustive face "
                << ref.face << " d " << ref.distance);
     }
+    const FaceTree::Hit without = ExhaustiveCompatible(m, p, n, cos45, maxDistance, &excluded);
+    for (int hint : hints)
+    {
+      const FaceTree::Hit hit =
+        tree.ClosestCompatibleFace(p, n, cos45, maxDistance, hint, &excluded);
+      const bool same = hit.face == without.face && hit.distance == without.distance &&
+        (without.face < 0 || hit.point == without.point);
+      if (!same && ++excludedMismatches <= 5)
+        EXPECT(false,
+          name << ", faces excluded: query " << p.transpose() << " hint " << hint << ": tree face "
+               << hit.face << " d " << hit.distance << ", exhaustive face " << without.face << " d "
+               << without.distance);
+    }
   }
   EXPECT(mismatches == 0, name << ": " << mismatches << " answers differ from the exhaustive scan");
+  EXPECT(excludedMismatches == 0,
+    name << ": " << excludedMismatches << " answers with excluded faces differ from the scan");
   EXPECT(hits > queries / 3, name << ": only " << hits << " of " << queries << " queries hit");
 }
 
