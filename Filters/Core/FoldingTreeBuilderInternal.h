@@ -13,7 +13,6 @@
 #include <cmath>
 #include <map>
 #include <memory>
-#include <unordered_map>
 #include <vector>
 
 namespace foldingmeshes
@@ -98,21 +97,13 @@ private:
     double eps) const;
 
   /**
-   * For the points `ids` of w: the error a fold through `plane` may add there, the least of
-   * eps and the budgets of the point and of the point of `ids` nearest to its mirror image
-   * (within eps; else the least budget of all): a copy made by the fold lands there.
-   */
-  std::vector<double> MirrorBudget(const WorkMesh& w,
-    const std::vector<int>& ids,
-    const Plane& plane,
-    double eps) const;
-
-  /**
    * S minus its faces with a vertex whose mirror image is not within eps (and, with
-   * errorBudget, its budget limit, MirrorBudget) of S, repeated until stable, keeping the
-   * largest connected part. With errorBudget, the mirror image of every face must also be
+   * errorBudget, its budget limit, ShrinkingMirrorBudget) of S, repeated until stable, keeping
+   * the largest connected part. With errorBudget, the mirror image of every face must also be
    * within the least limit of its vertices at every point, of the node's region (`region`:
-   * pm's faces; MirroredFacesWithin), not only at its corners.
+   * pm's faces; MirroredFacesWithin), not only at its corners. The plane is fixed and S only
+   * shrinks: the iterations after the first update their predecessor's distances, partners
+   * and face tests (ShrinkingSubsetDistances, ShrinkingMirrorBudget, MirroredFaceCache).
    */
   std::vector<char> Trim(const WorkMesh& w,
     const PreparedMesh& pm,
@@ -152,55 +143,6 @@ private:
 
   /// Builds the subtree of region w; returns its node index.
   int Build(WorkMesh w, int parent, int depth, double eps, int folds, uint64_t pathFolds);
-
-  /// Nearest of `points` (indices into w.points, bucketed in `cells`) to x within `radius`.
-  /// A hash map: only lookups, never its iteration order, decide a result.
-  struct Buckets
-  {
-    struct KeyHash
-    {
-      size_t operator()(const std::array<long long, 3>& k) const
-      {
-        const uint64_t h = static_cast<uint64_t>(k[0]) * 0x9E3779B97F4A7C15ull ^
-          static_cast<uint64_t>(k[1]) * 0xC2B2AE3D27D4EB4Full ^
-          static_cast<uint64_t>(k[2]) * 0x165667B19E3779F9ull;
-        return static_cast<size_t>(h ^ (h >> 29));
-      }
-    };
-    double cell = 1.0;
-    std::unordered_map<std::array<long long, 3>, std::vector<int>, KeyHash> cells;
-    std::array<long long, 3> Key(const Vec3& x) const
-    {
-      return { static_cast<long long>(std::floor(x.x() / cell)),
-        static_cast<long long>(std::floor(x.y() / cell)),
-        static_cast<long long>(std::floor(x.z() / cell)) };
-    }
-    void Add(const Vec3& x, int id) { cells[Key(x)].push_back(id); }
-    int Nearest(const std::vector<Vec3>& points, const Vec3& x, double radius) const
-    {
-      const auto c = Key(x);
-      int best = -1;
-      double bestDistance = radius;
-      for (long long dx = -1; dx <= 1; ++dx)
-        for (long long dy = -1; dy <= 1; ++dy)
-          for (long long dz = -1; dz <= 1; ++dz)
-          {
-            auto it = cells.find({ c[0] + dx, c[1] + dy, c[2] + dz });
-            if (it == cells.end())
-              continue;
-            for (int v : it->second)
-            {
-              const double d = (points[v] - x).norm();
-              if (d <= bestDistance && (best < 0 || d < bestDistance || v < best))
-              {
-                bestDistance = d;
-                best = v;
-              }
-            }
-          }
-      return best;
-    }
-  };
 
   /**
    * Tear vertices that the fold at `depth` removes (not used by a kept face) are recorded on

@@ -4,6 +4,7 @@
 #include "CandidatePlanes.h"
 #include "MeshPreparation.h"
 #include "MirrorDistance.h"
+#include "PointBuckets.h"
 #include "RegionGrowing.h"
 #include "SurfaceDistance.h"
 
@@ -92,7 +93,7 @@ void Builder::TransferDiscardedTears(WorkMesh& w,
     return;
   // Boundary vertices of the region (all its faces, before the fold).
   const std::vector<char> boundary = BorderPoints(w.triangles, w.points.size());
-  Buckets kept, removed;
+  PointBuckets kept, removed;
   kept.cell = removed.cell = std::max(eps, 1e-12 * this->Tree.diagonal);
   for (int v = 0; v < w.NumberOfPoints(); ++v)
     if (used[v] && boundary[v])
@@ -243,7 +244,7 @@ void Builder::Fold(int index,
       mirrored[v] = plane.Reflect(w.points[v]);
     const std::vector<double> toS = toRegion.Distances(mirrored);
     const std::vector<double> toM = this->ToInput->Distances(mirrored);
-    Buckets all, kept;
+    PointBuckets all, kept;
     all.cell = kept.cell = std::max(eps, 1e-12 * this->Tree.diagonal);
     double least = std::numeric_limits<double>::infinity();
     for (int v = 0; v < w.NumberOfPoints(); ++v)

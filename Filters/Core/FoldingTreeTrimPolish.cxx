@@ -5,14 +5,14 @@
 #include "CandidatePlanes.h"
 #include "MeshPreparation.h"
 #include "MirrorDistance.h"
-#include "MirroredFaceBound.h"
+#include "MirroredFaceCache.h"
 #include "RegionGrowing.h"
+#include "ShrinkingMirrorBudget.h"
+#include "ShrinkingSubsetDistances.h"
 #include "SubsetPreparation.h"
 #include "SurfaceDistance.h"
 
 #include <Eigen/Dense>
-
-#include <vtkSMPTools.h>
 
 #include <algorithm>
 #include <chrono>
@@ -149,36 +149,6 @@ std::vector<char> Builder::ChooseSymmetricRegion(const WorkMesh& w,
   return best;
 }
 
-std::vector<double> Builder::MirrorBudget(const WorkMesh& w,
-  const std::vector<int>& ids,
-  const Plane& plane,
-  double eps) const
-{
-  Buckets buckets;
-  buckets.cell = std::max(eps, 1e-12 * this->Tree.diagonal);
-  double least = eps;
-  for (int v : ids)
-  {
-    buckets.Add(w.points[v], v);
-    least = std::min(least, w.budget[v]);
-  }
-  // Every point alone (read-only buckets): the same limits for any thread count.
-  std::vector<double> limit(ids.size());
-  vtkSMPTools::For(0,
-    static_cast<vtkIdType>(ids.size()),
-    256,
-    [&](vtkIdType first, vtkIdType last)
-    {
-      for (vtkIdType k = first; k < last; ++k)
-      {
-        const int v = ids[k];
-        const int p = buckets.Nearest(w.points, plane.Reflect(w.points[v]), eps);
-        limit[k] = std::min({ eps, w.budget[v], p >= 0 ? w.budget[p] : least });
-      }
-    });
-  return limit;
-}
-
 namespace
 {
 /// Subdivision levels of MirroredFacesWithin: pieces 1/64 of the face's size, where a long
@@ -194,14 +164,20 @@ std::vector<char> Builder::Trim(const WorkMesh& w,
   const Plane& plane,
   double eps) const
 {
+  // One plane while S only shrinks: the iterations after the first update what changed
+  // (distances, budget partners, mirrored faces) instead of starting over - bit for bit the
+  // same results (see the classes).
+  ShrinkingSubsetDistances distances(pm, plane, this->Options.symmetry.compatibilityAngle, eps);
+  ShrinkingMirrorBudget budget(
+    w.points, w.budget, plane, eps, std::max(eps, 1e-12 * this->Tree.diagonal));
+  MirroredFaceCache mirroredFaces(
+    pm, [&]() -> const FaceTree& { return region.Get(); }, plane, MirroredFaceLevels);
   for (int iteration = 0; iteration < 8; ++iteration)
   {
-    PreparedMesh spm;
-    if (!PrepareSubset(w, pm, S, spm))
+    if (!distances.Update(S))
       break;
-    MirrorDistance distances(spm, this->Options.symmetry.compatibilityAngle);
-    std::vector<double> d;
-    distances.Compute(plane, DistanceMetric::Fine, eps, d);
+    const PreparedMesh& spm = distances.Subset();
+    std::vector<double> d = distances.Distances();
     std::vector<double> vertexLimit(d.size(), eps);
     if (this->Options.errorBudget)
     {
@@ -217,7 +193,7 @@ std::vector<char> Builder::Trim(const WorkMesh& w,
           if (inS[v])
             ids.push_back(v);
       }
-      const std::vector<double> limit = this->MirrorBudget(w, ids, plane, eps);
+      const std::vector<double> limit = budget.Limits(ids);
       for (size_t k = 0; k < d.size() && k < ids.size(); ++k)
       {
         vertexLimit[k] = std::min(eps, limit[k]);
@@ -226,6 +202,11 @@ std::vector<char> Builder::Trim(const WorkMesh& w,
       }
     }
     std::vector<char> ok = FacesWithVerticesWithin(spm, d, eps, true);
+    // The faces of S in w (and pm) ids, in spm's order.
+    std::vector<int> faceOf;
+    for (int f = 0; f < w.NumberOfFaces(); ++f)
+      if (S[f])
+        faceOf.push_back(f);
     if (this->Options.errorBudget)
     {
       // ... and the whole mirror image of each face, not only its corners, within the limit
@@ -236,7 +217,7 @@ std::vector<char> Builder::Trim(const WorkMesh& w,
         KeepsPositiveSide(spm.points, spm.triangles, plane, this->Options.keepSide) ? 1.0 : -1.0;
       std::vector<Triangle> faces;
       std::vector<double> faceLimit;
-      std::vector<int> at;
+      std::vector<int> at, keys;
       for (int k = 0; k < spm.NumberOfFaces(); ++k)
         if (ok[k] && !spm.faceDegenerate[k] &&
           std::max({ keptSign * plane.SignedDistance(spm.points[spm.triangles[k][0]]),
@@ -248,32 +229,20 @@ std::vector<char> Builder::Trim(const WorkMesh& w,
           faceLimit.push_back(
             std::min({ vertexLimit[t[0]], vertexLimit[t[1]], vertexLimit[t[2]] }));
           at.push_back(k);
+          keys.push_back(faceOf[k]);
         }
-      const std::vector<char> within = MirroredFacesWithin(
-        pm,
-        [&]() -> const FaceTree& { return region.Get(); },
-        plane,
-        faces,
-        spm.points,
-        d,
-        faceLimit,
-        MirroredFaceLevels);
+      const std::vector<char> within = mirroredFaces.Within(keys, faces, spm.points, d, faceLimit);
       for (size_t j = 0; j < at.size(); ++j)
         ok[at[j]] = within[j];
     }
     std::vector<char> next = S;
     bool changed = false;
-    int k = 0;
-    for (int f = 0; f < w.NumberOfFaces(); ++f)
-      if (S[f])
+    for (size_t k = 0; k < faceOf.size(); ++k)
+      // Degenerate faces have no distance of their own: judged with their neighbours.
+      if (!ok[k] && !spm.faceDegenerate[k])
       {
-        // Degenerate faces have no distance of their own: judged with their neighbours.
-        if (!ok[k] && !spm.faceDegenerate[k])
-        {
-          next[f] = 0;
-          changed = true;
-        }
-        ++k;
+        next[faceOf[k]] = 0;
+        changed = true;
       }
     if (!changed)
       break;

@@ -111,6 +111,12 @@ std::vector<char> MirroredFacesWithin(const PreparedMesh& mesh,
     });
   // The others: the closest triangles of their mirrored corners (once per point), then the
   // subdivision proof per face. Closest triangles beyond twice the limit are never needed.
+  // The radius, the largest of those over all open faces, leaves each face's answer its own:
+  // Within uses a hit (corner, midpoint, centroid) only once it found it closer than the
+  // face's limit, and fails where it is not. With any radius >= the limit, ClosestFace gives
+  // the same hit when the closest face is closer than the limit (the lowest (distance, id)
+  // among the faces within the radius), and otherwise a hit at least the limit away or none:
+  // a failure either way.
   std::vector<int> open;
   double radius = 0.0;
   std::vector<int> cornerIndex(points.size(), -1);

@@ -24,7 +24,9 @@ namespace foldingmeshes
  * (conservative). First the cheap proof, with no query: cornerDistance[v] (an upper bound of
  * the distance of v's mirror image, e.g. a compatible-face distance) is 1-Lipschitz-extended,
  * max over the corners + (longest edge) / sqrt(3), which settles most faces. In parallel
- * (vtkSMPTools), each face on its own: deterministic.
+ * (vtkSMPTools), each face on its own: deterministic. A face's answer depends only on its
+ * corners (in order), their cornerDistance and its limit, not on the other faces tested with
+ * it (MirroredFaceCache relies on that).
  */
 std::vector<char> MirroredFacesWithin(const PreparedMesh& mesh,
   const std::function<const FaceTree&()>& tree,

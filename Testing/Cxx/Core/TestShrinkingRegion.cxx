@@ -1,0 +1,289 @@
+// Builder::Trim's incremental state against computing everything from scratch, bit for bit,
+// over a region S that shrinks step by step (a few random faces, a small ball of faces - the
+// closest faces of nearby mirror images -, a large part; each time its largest connected part,
+// as Trim keeps it), with one plane near the symmetry plane of a blob:
+// - ShrinkingSubsetDistances: S prepared (PrepareFaceSubset) and the fine mirror distances of
+//   its vertices (MirrorDistance on it), on the blob with its own normals (the incremental path:
+//   a single full update) and with random input normals (the signs of the subset's normals
+//   change as faces go: full updates again, still the same distances);
+// - ShrinkingMirrorBudget: the limits Trim derived from fresh buckets of each S's points;
+// - MirroredFaceCache: MirroredFacesWithin over all of S's faces each time, and again with
+//   tighter limits;
+// - a region that grows again (not a subset): everything starts over, still the same.
+#include "CoreTestUtilities.h"
+#include "FaceTree.h"
+#include "MirrorDistance.h"
+#include "MirroredFaceCache.h"
+#include "PointBuckets.h"
+#include "ProceduralMeshes.h"
+#include "RegionGrowing.h"
+#include "ShrinkingMirrorBudget.h"
+#include "ShrinkingSubsetDistances.h"
+#include "SubsetPreparation.h"
+
+#include <Eigen/Geometry>
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <limits>
+#include <random>
+#include <string>
+
+using namespace foldingmeshes;
+
+namespace
+{
+const double kInf = std::numeric_limits<double>::infinity();
+const double kPi = 3.14159265358979323846;
+const double kCompatibilityAngle = 45.0;
+const int kLevels = 6;
+
+bool BitIdentical(const std::vector<double>& a, const std::vector<double>& b)
+{
+  return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(double)) == 0;
+}
+
+/// Builder's limits from scratch (fresh buckets of `ids`), as Trim computed them before.
+std::vector<double> FreshLimits(const std::vector<Vec3>& points,
+  const std::vector<double>& budget,
+  const std::vector<int>& ids,
+  const Plane& plane,
+  double eps)
+{
+  PointBuckets buckets;
+  buckets.cell = eps;
+  double least = eps;
+  for (int v : ids)
+  {
+    buckets.Add(points[v], v);
+    least = std::min(least, budget[v]);
+  }
+  std::vector<double> limit(ids.size());
+  for (size_t k = 0; k < ids.size(); ++k)
+  {
+    const int v = ids[k];
+    const int p = buckets.Nearest(points, plane.Reflect(points[v]), eps);
+    limit[k] = std::min({ eps, budget[v], p >= 0 ? budget[p] : least });
+  }
+  return limit;
+}
+
+/// One region's worth of Trim's inputs: the incremental state and everything from scratch.
+class Comparison
+{
+public:
+  Comparison(const PreparedMesh& mesh, const Plane& plane, double eps, const std::string& name)
+    : Mesh(mesh)
+    , Mirror(plane)
+    , Eps(eps)
+    , Name(name)
+    , Region(mesh)
+    , Distances(mesh, plane, kCompatibilityAngle, eps)
+    , Budget(mesh.points, this->PointBudget, plane, eps, eps)
+    , Faces(
+        mesh,
+        [this]() -> const FaceTree& { return this->Region; },
+        plane,
+        kLevels)
+  {
+    // Budgets from a third to 1.5 times eps: partners' budgets matter.
+    std::mt19937 rng(5);
+    for (int v = 0; v < mesh.NumberOfPoints(); ++v)
+      this->PointBudget.push_back(eps * (0.33 + 1.2 * (rng() % 1000) / 1000.0));
+  }
+
+  /// Compares everything for S; false when S has no prepared subset.
+  bool Check(const std::vector<char>& S, const std::string& step)
+  {
+    const std::string what = this->Name + ", " + step;
+    PreparedMesh expected;
+    const bool prepared = PrepareFaceSubset(this->Mesh, S, expected);
+    const bool updated = this->Distances.Update(S);
+    EXPECT(
+      prepared == updated, what << ": Update " << updated << ", PrepareFaceSubset " << prepared);
+    if (!prepared || !updated)
+      return false;
+    const PreparedMesh& spm = this->Distances.Subset();
+    EXPECT(spm.triangles == expected.triangles && spm.vertexNormals == expected.vertexNormals,
+      what << ": the subset differs from PrepareFaceSubset's");
+    std::vector<double> d;
+    MirrorDistance(expected, kCompatibilityAngle)
+      .Compute(this->Mirror, DistanceMetric::Fine, this->Eps, d);
+    const std::vector<double>& got = this->Distances.Distances();
+    EXPECT(BitIdentical(got, d), what << ": the distances differ from a new MirrorDistance's");
+    for (double x : d)
+      this->Finite += std::isfinite(x);
+
+    // Trim's budgets and the distances they cut.
+    std::vector<int> ids;
+    std::vector<char> inS(this->Mesh.NumberOfPoints(), 0);
+    std::vector<int> faceOf;
+    for (int f = 0; f < this->Mesh.NumberOfFaces(); ++f)
+      if (S[f])
+      {
+        faceOf.push_back(f);
+        for (int v : this->Mesh.triangles[f])
+          inS[v] = 1;
+      }
+    for (int v = 0; v < this->Mesh.NumberOfPoints(); ++v)
+      if (inS[v])
+        ids.push_back(v);
+    const std::vector<double> limit = this->Budget.Limits(ids);
+    EXPECT(BitIdentical(limit,
+             FreshLimits(this->Mesh.points, this->PointBudget, ids, this->Mirror, this->Eps)),
+      what << ": the budget limits differ from fresh buckets'");
+    std::vector<double> vertexLimit(d.size());
+    for (size_t k = 0; k < d.size(); ++k)
+    {
+      vertexLimit[k] = std::min(this->Eps, limit[k]);
+      if (!(d[k] < limit[k]))
+        d[k] = kInf;
+    }
+
+    // The mirrored faces of the faces whose corners are all within their limits.
+    std::vector<Triangle> faces;
+    std::vector<double> faceLimit;
+    std::vector<int> keys;
+    for (int k = 0; k < spm.NumberOfFaces(); ++k)
+    {
+      const Triangle& t = spm.triangles[k];
+      if (!spm.faceDegenerate[k] && std::isfinite(d[t[0]]) && std::isfinite(d[t[1]]) &&
+        std::isfinite(d[t[2]]))
+      {
+        faces.push_back(t);
+        faceLimit.push_back(std::min({ vertexLimit[t[0]], vertexLimit[t[1]], vertexLimit[t[2]] }));
+        keys.push_back(faceOf[k]);
+      }
+    }
+    // Then the same faces with tighter limits (the corners and distances unchanged): the
+    // cache must not answer from the looser ones.
+    for (double scale : { 1.0, 0.6 })
+    {
+      std::vector<double> scaled = faceLimit;
+      for (double& x : scaled)
+        x *= scale;
+      const std::vector<char> within = this->Faces.Within(keys, faces, spm.points, d, scaled);
+      const std::vector<char> fresh = MirroredFacesWithin(
+        this->Mesh,
+        [this]() -> const FaceTree& { return this->Region; },
+        this->Mirror,
+        faces,
+        spm.points,
+        d,
+        scaled,
+        kLevels);
+      EXPECT(within == fresh,
+        what << ", limits x " << scale << ": the cached mirrored-face tests differ from new ones");
+      for (char x : fresh)
+        (x ? this->Within : this->NotWithin) += 1;
+    }
+    return true;
+  }
+
+  int FullUpdates() const { return this->Distances.FullUpdates(); }
+  /// Counts over all checks, to see that the cases occurred.
+  int Finite = 0, Within = 0, NotWithin = 0;
+
+private:
+  const PreparedMesh& Mesh;
+  const Plane Mirror;
+  const double Eps;
+  const std::string Name;
+  std::vector<double> PointBudget;
+  const FaceTree Region;
+  ShrinkingSubsetDistances Distances;
+  ShrinkingMirrorBudget Budget;
+  MirroredFaceCache Faces;
+};
+
+/// Shrinks S the ways Trim does, checking every step; then lets it grow back once.
+void Run(const PreparedMesh& mesh, const Plane& plane, const std::string& name, int expectedFull)
+{
+  const double eps = 0.02 * mesh.diagonal;
+  Comparison comparison(mesh, plane, eps, name);
+  std::mt19937 rng(7);
+  const int nf = mesh.NumberOfFaces();
+  std::vector<char> S(nf, 1);
+  int steps = 0;
+  for (int step = 0; step < 12; ++step)
+  {
+    if (!comparison.Check(S, "step " + std::to_string(step)))
+      break;
+    ++steps;
+    std::vector<int> faces;
+    for (int f = 0; f < nf; ++f)
+      if (S[f])
+        faces.push_back(f);
+    if (step % 3 == 0)
+    {
+      for (int j = 0; j < 12; ++j)
+        S[faces[rng() % faces.size()]] = 0;
+    }
+    else
+    {
+      const Vec3 center = mesh.faceCentroids[faces[rng() % faces.size()]];
+      const double radius = (step == 5 ? 0.3 : 0.03) * mesh.diagonal;
+      for (int f : faces)
+        if ((mesh.faceCentroids[f] - center).norm() < radius)
+          S[f] = 0;
+    }
+    S = LargestConnectedRegion(mesh, S);
+  }
+  EXPECT(steps == 12, name << ": only " << steps << " steps");
+  const int shrinking = comparison.FullUpdates();
+  if (expectedFull > 0)
+    EXPECT(shrinking == expectedFull,
+      name << ": " << shrinking << " full updates, expected " << expectedFull);
+  else
+    EXPECT(shrinking > 1, name << ": the subsets all matched the first: no full update tested");
+  comparison.Check(std::vector<char>(nf, 1), "grown back");
+  EXPECT(comparison.FullUpdates() == shrinking + 1, name << ": a larger S did not start over");
+  EXPECT(comparison.Finite > 0 && comparison.Within > 0 && comparison.NotWithin > 0,
+    name << ": a case did not occur: " << comparison.Finite << " finite distances, "
+         << comparison.Within << " mirrored faces within, " << comparison.NotWithin << " not");
+  std::printf("%s: %d full updates in %d steps; %d finite distances, %d/%d mirrored faces within\n",
+    name.c_str(),
+    shrinking,
+    steps,
+    comparison.Finite,
+    comparison.Within,
+    comparison.Within + comparison.NotWithin);
+}
+}
+
+int main()
+{
+  const auto t0 = std::chrono::steady_clock::now();
+  using namespace foldingmeshes::testing;
+  ProceduralMesh blob = MakeBilateralBlob(4000, 3);
+  ApplyRigidMotion(blob, RandomRigidMotion(11));
+  const TriangleMesh soup = coretest::ToTriangleMesh(blob.mesh);
+  REQUIRE(blob.planes.size() == 1, "the bilateral blob should have one plane");
+  // The symmetry plane tilted by 1.5 degrees: mirror images up to about 1.3% of the diagonal
+  // off the surface, so distances, partners and mirrored faces vary within eps = 2%.
+  const PreparedMesh mesh = coretest::Prepare(soup);
+  Vec3 center = Vec3::Zero();
+  for (const Vec3& p : mesh.points)
+    center += p / mesh.NumberOfPoints();
+  Plane plane;
+  plane.normal = Eigen::AngleAxisd(1.5 * kPi / 180.0, blob.planes[0].normal.unitOrthogonal()) *
+    blob.planes[0].normal.normalized();
+  plane.origin = center;
+  Run(mesh, plane, "blob", 1);
+  {
+    // Random input normals: their signs follow the subset's own faces, which change.
+    std::mt19937 rng(9);
+    std::vector<Vec3> normals(soup.points.size());
+    for (Vec3& n : normals)
+      n = Vec3(double(rng() % 2001) - 1000.0,
+        double(rng() % 2001) - 1000.0,
+        double(rng() % 2001) - 1000.0);
+    PreparedMesh random;
+    std::string error;
+    REQUIRE(PrepareMesh(soup, normals, random, error), error);
+    Run(random, plane, "blob with random normals", 0);
+  }
+  std::printf("TestShrinkingRegion: %.2f s\n", coretest::Seconds(t0));
+  return coretest::Finish("TestShrinkingRegion");
+}
