@@ -31,7 +31,8 @@
  *   the lowest sum of rho. This finds local symmetries on asymmetric bodies and
  *   resists large asymmetric attachments. The finalists end with a polish
  *   phase at sigma = epsilon (support d <= 2 epsilon). Meshes above 50k faces search
- *   candidates on a simplified copy and refine the best on the full mesh.
+ *   candidates on a sampled copy (some of their own vertices, measured against
+ *   the full mesh) and refine the best on the full mesh.
  * - PAPER: exactly one start (the principal axes of the area-weighted mesh, or
  *   the user's initial plane), as in the paper.
  *

@@ -29,12 +29,13 @@ FaceTree::FaceTree(const PreparedMesh& mesh)
     this->Build(0, count, 0);
   }
   this->OrderIndex.assign(mesh.NumberOfFaces(), -1);
-  this->Packed.resize(this->Order.size());
+  // Appended (reserve, not resize: value-initialising PackedFace zeroes every byte first).
+  this->Packed.reserve(this->Order.size());
   for (size_t k = 0; k < this->Order.size(); ++k)
   {
     const int f = this->Order[k];
     const Triangle& t = mesh.triangles[f];
-    PackedFace& face = this->Packed[k];
+    PackedFace face;
     face.a = mesh.points[t[0]];
     face.b = mesh.points[t[1]];
     face.c = mesh.points[t[2]];
@@ -51,7 +52,7 @@ FaceTree::FaceTree(const PreparedMesh& mesh)
       (face.c - face.b).squaredNorm() });
     face.planeBound = face.regular && cross.squaredNorm() > 1e-12 * longest2 * longest2;
     face.normal = face.planeBound ? Vec3(cross.normalized()) : Vec3::Zero();
-
+    this->Packed.push_back(face);
     this->OrderIndex[f] = static_cast<int>(k);
   }
 }

@@ -60,6 +60,9 @@ public:
 
   int NumberOfNodes() const { return static_cast<int>(this->Nodes.size()); }
 
+  /// The mesh whose faces this tree holds.
+  const PreparedMesh& Surface() const { return this->Mesh; }
+
 private:
   struct Node
   {

@@ -194,11 +194,17 @@ int Builder::Build(WorkMesh w, int parent, int depth, double eps, int folds, uin
 
   SymmetryOptions so = O.symmetry;
   so.epsilon = eps;
+  so.sampledSearchAboveFaces = O.sampledSearchAboveFaces;
+  so.refineSampledFinalists = false;
+  so.distancesUpTo3Sigma = false;
   const double base = this->Fraction(this->DoneFaces);
   const double span = 0.5 * this->Fraction(nf);
   so.progress = [&](double p) { return this->Report(base + p * span); };
   const auto detectionStart = std::chrono::steady_clock::now();
-  const SymmetryResult result = DetectSymmetry(pm, so);
+  // One face tree of the region for detection, the trim's face bound and the runner-up
+  // planes of ChooseSymmetricRegion; released before the recursion below.
+  auto regionFaces = std::make_unique<FaceTree>(pm);
+  const SymmetryResult result = DetectSymmetry(pm, so, regionFaces.get());
   FoldingNode& node = this->Tree.nodes[index];
   node.detectionRun = true;
   node.detectionStarts = result.startsTried;
@@ -211,7 +217,9 @@ int Builder::Build(WorkMesh w, int parent, int depth, double eps, int folds, uin
   }
 
   Plane plane;
-  std::vector<char> S = this->ChooseSymmetricRegion(w, pm, result, eps, pathFolds, plane);
+  std::vector<char> S =
+    this->ChooseSymmetricRegion(w, pm, *regionFaces, result, eps, pathFolds, plane);
+  regionFaces.reset();
   // Input-degenerate faces (never in S: detection ignores them) follow S when all their
   // vertices are vertices of S.
   {
@@ -237,8 +245,7 @@ int Builder::Build(WorkMesh w, int parent, int depth, double eps, int folds, uin
     meaningful = meaningful && (result.found || !O.requireTightSymmetry) &&
       node.symmetricAreaFraction >= O.symmetry.minimumSymmetricAreaFraction &&
       sFaces >= (O.useMinimumFaces ? std::max(1, O.minimumFaces) : 1);
-    meaningful =
-      meaningful && !this->IsAncestorPlane(plane, pathFolds, RegionCentroid(pm, S), eps);
+    meaningful = meaningful && !this->IsAncestorPlane(plane, pathFolds, RegionCentroid(pm, S), eps);
   }
   if (!meaningful)
     return this->MakeLeaf(index, w, LeafReason::NoSymmetry), index;

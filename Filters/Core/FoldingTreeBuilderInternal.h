@@ -27,26 +27,6 @@ bool KeepsPositiveSide(const std::vector<Vec3>& points,
   const Plane& plane,
   KeepSide keepSide);
 
-/// A FaceTree over a node's region, built on first use (most nodes' trims never need it).
-class RegionFaces
-{
-public:
-  explicit RegionFaces(const PreparedMesh& mesh)
-    : Mesh(mesh)
-  {
-  }
-  const FaceTree& Get()
-  {
-    if (!this->Tree)
-      this->Tree = std::make_unique<FaceTree>(this->Mesh);
-    return *this->Tree;
-  }
-
-private:
-  const PreparedMesh& Mesh;
-  std::unique_ptr<FaceTree> Tree;
-};
-
 class Builder
 {
 public:
@@ -107,7 +87,7 @@ private:
    */
   std::vector<char> Trim(const WorkMesh& w,
     const PreparedMesh& pm,
-    RegionFaces& region,
+    const FaceTree& region,
     std::vector<char> S,
     const Plane& plane,
     double eps) const;
@@ -126,6 +106,7 @@ private:
    */
   std::vector<char> ChooseSymmetricRegion(const WorkMesh& w,
     const PreparedMesh& pm,
+    const FaceTree& region,
     const SymmetryResult& result,
     double eps,
     uint64_t pathFolds,
@@ -134,7 +115,7 @@ private:
   /// S as trimmed and polished for `plane` (see ChooseSymmetricRegion).
   std::vector<char> TrimAndPolish(const WorkMesh& w,
     const PreparedMesh& pm,
-    RegionFaces& region,
+    const FaceTree& region,
     std::vector<char> S,
     double eps,
     Plane& plane) const;

@@ -83,7 +83,7 @@ Plane Builder::Polish(const WorkMesh& w,
 
 std::vector<char> Builder::TrimAndPolish(const WorkMesh& w,
   const PreparedMesh& pm,
-  RegionFaces& region,
+  const FaceTree& region,
   std::vector<char> S,
   double eps,
   Plane& plane) const
@@ -105,6 +105,7 @@ std::vector<char> Builder::TrimAndPolish(const WorkMesh& w,
 
 std::vector<char> Builder::ChooseSymmetricRegion(const WorkMesh& w,
   const PreparedMesh& pm,
+  const FaceTree& region,
   const SymmetryResult& result,
   double eps,
   uint64_t pathFolds,
@@ -115,7 +116,6 @@ std::vector<char> Builder::ChooseSymmetricRegion(const WorkMesh& w,
   for (int f = 0; f < nf; ++f)
     best[f] = result.faceLabel[f] == 2;
   plane = result.plane;
-  RegionFaces region(pm); // for the mirrored faces' bound (Trim), built when first needed
   best = this->TrimAndPolish(w, pm, region, std::move(best), eps, plane);
   double bestArea = RegionArea(pm, best);
   if (!this->Options.trimToMirrorConsistent)
@@ -129,7 +129,8 @@ std::vector<char> Builder::ChooseSymmetricRegion(const WorkMesh& w,
       PlaneOffsetAt(result.plane, candidate, candidate.origin) < eps)
       continue;
     if (!distances)
-      distances = std::make_unique<MirrorDistance>(pm, this->Options.symmetry.compatibilityAngle);
+      distances =
+        std::make_unique<MirrorDistance>(pm, region, this->Options.symmetry.compatibilityAngle);
     distances->Compute(candidate, DistanceMetric::Fine, eps, d);
     std::vector<char> S = LargestConnectedRegion(pm, FacesWithVerticesWithin(pm, d, eps, true));
     // Trimming only removes faces: a region no larger than the best S cannot win.
@@ -159,7 +160,7 @@ constexpr int MirroredFaceLevels = 6;
 
 std::vector<char> Builder::Trim(const WorkMesh& w,
   const PreparedMesh& pm,
-  RegionFaces& region,
+  const FaceTree& region,
   std::vector<char> S,
   const Plane& plane,
   double eps) const
@@ -171,7 +172,7 @@ std::vector<char> Builder::Trim(const WorkMesh& w,
   ShrinkingMirrorBudget budget(
     w.points, w.budget, plane, eps, std::max(eps, 1e-12 * this->Tree.diagonal));
   MirroredFaceCache mirroredFaces(
-    pm, [&]() -> const FaceTree& { return region.Get(); }, plane, MirroredFaceLevels);
+    pm, [&]() -> const FaceTree& { return region; }, plane, MirroredFaceLevels);
   for (int iteration = 0; iteration < 8; ++iteration)
   {
     if (!distances.Update(S))

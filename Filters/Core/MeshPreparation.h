@@ -33,14 +33,6 @@ bool PrepareMesh(const TriangleMesh& input,
  */
 void ComputeBoundsAndAreas(PreparedMesh& mesh);
 
-/**
- * A coarse version of `mesh` with about `targetFaces` triangles, by vertex clustering on a
- * uniform grid (cluster point: area-weighted mean; collapsed and duplicate triangles are
- * dropped), as a triangle soup for PrepareMesh. Used to find candidate planes of very
- * large meshes cheaply; the final refinement always runs on the full mesh.
- */
-TriangleMesh SimplifiedMesh(const PreparedMesh& mesh, int targetFaces);
-
 /// For every point, the smallest index of a point with exactly the same coordinates (itself
 /// when it has no earlier duplicate): the representatives of a weld of coincident points.
 std::vector<int> CoincidentPointRepresentatives(const std::vector<Vec3>& points);

@@ -1,22 +1,47 @@
 #include "MirrorDistance.h"
 
-#include <vtkSMPTools.h>
+#include "ParallelTasks.h"
 
 #include <cmath>
 
 namespace foldingmeshes
 {
 MirrorDistance::MirrorDistance(const PreparedMesh& mesh, double compatibilityAngleDegrees)
-  : Mesh(mesh)
-  , Faces(mesh)
+  : MirrorDistance(mesh, mesh, compatibilityAngleDegrees)
+{
+}
+
+MirrorDistance::MirrorDistance(const PreparedMesh& query,
+  const PreparedMesh& target,
+  double compatibilityAngleDegrees)
+  : Mesh(query)
+  , OwnedFaces(std::make_unique<FaceTree>(target))
+  , Faces(*OwnedFaces)
+  , Target(target)
   , CosLimit(std::cos(compatibilityAngleDegrees * 3.14159265358979323846 / 180.0))
 {
-  this->VertexUsed.assign(mesh.NumberOfPoints(), 0);
-  for (int f = 0; f < mesh.NumberOfFaces(); ++f)
-    if (!mesh.faceDegenerate[f])
-      for (int v : mesh.triangles[f])
+  this->MarkUsedVertices();
+}
+
+MirrorDistance::MirrorDistance(const PreparedMesh& query,
+  const FaceTree& targetFaces,
+  double compatibilityAngleDegrees)
+  : Mesh(query)
+  , Faces(targetFaces)
+  , Target(targetFaces.Surface())
+  , CosLimit(std::cos(compatibilityAngleDegrees * 3.14159265358979323846 / 180.0))
+{
+  this->MarkUsedVertices();
+}
+
+void MirrorDistance::MarkUsedVertices()
+{
+  this->VertexUsed.assign(this->Mesh.NumberOfPoints(), 0);
+  for (int f = 0; f < this->Mesh.NumberOfFaces(); ++f)
+    if (!this->Mesh.faceDegenerate[f])
+      for (int v : this->Mesh.triangles[f])
         this->VertexUsed[v] = 1;
-  this->LastFace.assign(mesh.NumberOfPoints(), -1);
+  this->LastFace.assign(this->Mesh.NumberOfPoints(), -1);
 }
 
 void MirrorDistance::Compute(const Plane& plane,
@@ -25,9 +50,13 @@ void MirrorDistance::Compute(const Plane& plane,
   std::vector<double>& d,
   std::vector<Vec3>* closest,
   std::vector<Vec3>* closestNormals,
-  std::vector<int>* closestFaces) const
+  std::vector<int>* closestFaces,
+  std::vector<int>* hints) const
 {
   const int nv = Mesh.NumberOfPoints();
+  if (hints && static_cast<int>(hints->size()) != nv)
+    hints->assign(nv, -1);
+  std::vector<int>& lastFace = hints ? *hints : this->LastFace;
   // Every entry is (re)set in the parallel loop: vectors reused across calls are not
   // cleared serially first.
   d.resize(nv);
@@ -37,8 +66,7 @@ void MirrorDistance::Compute(const Plane& plane,
     closestNormals->resize(nv);
   if (closestFaces)
     closestFaces->resize(nv);
-  vtkSMPTools::For(0,
-    nv,
+  ForRanges(nv,
     256,
     [&](vtkIdType begin, vtkIdType end)
     {
@@ -60,28 +88,28 @@ void MirrorDistance::Compute(const Plane& plane,
           // The previous answer for this vertex (a nearby plane, usually the same face)
           // speeds the search up without changing its result.
           const FaceTree::Hit hit =
-            Faces.ClosestCompatibleFace(r, rn, CosLimit, maxDistance, LastFace[i]);
+            Faces.ClosestCompatibleFace(r, rn, CosLimit, maxDistance, lastFace[i]);
           if (hit.face >= 0)
-            LastFace[i] = hit.face;
+            lastFace[i] = hit.face;
           d[i] = hit.distance;
           if (closest)
             (*closest)[i] = hit.point;
           if (closestNormals && hit.face >= 0)
-            (*closestNormals)[i] = Mesh.faceNormals[hit.face];
+            (*closestNormals)[i] = Target.faceNormals[hit.face];
           if (closestFaces)
             (*closestFaces)[i] = hit.face;
         }
         else
         {
           const int f = Faces.NearestCentroidFace(r);
-          if (f >= 0 && Mesh.faceNormals[f].dot(rn) > 0.0)
+          if (f >= 0 && Target.faceNormals[f].dot(rn) > 0.0)
           {
-            const double h = Mesh.faceNormals[f].dot(r - Mesh.faceCentroids[f]);
+            const double h = Target.faceNormals[f].dot(r - Target.faceCentroids[f]);
             d[i] = std::abs(h);
             if (closest)
-              (*closest)[i] = r - h * Mesh.faceNormals[f];
+              (*closest)[i] = r - h * Target.faceNormals[f];
             if (closestNormals)
-              (*closestNormals)[i] = Mesh.faceNormals[f];
+              (*closestNormals)[i] = Target.faceNormals[f];
             if (closestFaces)
               (*closestFaces)[i] = f;
           }
@@ -97,8 +125,7 @@ void MirrorDistance::Recompute(const Plane& plane,
   std::vector<double>& d,
   std::vector<int>& closestFaces) const
 {
-  vtkSMPTools::For(0,
-    static_cast<vtkIdType>(vertices.size()),
+  ForRanges(static_cast<vtkIdType>(vertices.size()),
     64,
     [&](vtkIdType begin, vtkIdType end)
     {

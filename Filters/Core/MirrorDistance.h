@@ -5,6 +5,8 @@
 #include "FaceTree.h"
 #include "Plane.h"
 
+#include <memory>
+
 namespace foldingmeshes
 {
 enum class DistanceMetric
@@ -24,20 +26,38 @@ enum class DistanceMetric
 class MirrorDistance
 {
 public:
+  /// Distances of the reflected vertices of `mesh` to `mesh` itself.
   MirrorDistance(const PreparedMesh& mesh, double compatibilityAngleDegrees);
+
+  /// Distances of the reflected vertices of `query` (points and vertex normals) to the
+  /// surface `target`: a sampled copy made of some of target's vertices (ClusterVertices)
+  /// is measured against the full surface. Both meshes must outlive this object.
+  MirrorDistance(const PreparedMesh& query,
+    const PreparedMesh& target,
+    double compatibilityAngleDegrees);
+
+  /// The same with a face tree of the target that the caller already has (shared, not
+  /// copied; it must outlive this object).
+  MirrorDistance(const PreparedMesh& query,
+    const FaceTree& targetFaces,
+    double compatibilityAngleDegrees);
 
   /// d[i] for all vertices; distances beyond maxDistance (fine metric) are infinite.
   /// With `closest`, also the closest compatible point of the mesh (fine metric) or the
   /// foot of the perpendicular on the face plane (coarse metric), with `closestNormals` the
   /// unit normal of the face holding it, and with `closestFaces` that face's id (-1 where
-  /// d[i] is infinite).
+  /// d[i] is infinite). One entry per query vertex; faces are the target's.
+  /// `hints`: the closest faces of an earlier call, updated (resized to one per vertex if
+  /// needed); they only speed the search up. Without it, this object's own hints are used
+  /// (then concurrent calls on one object are not safe; with separate hints they are).
   void Compute(const Plane& plane,
     DistanceMetric metric,
     double maxDistance,
     std::vector<double>& d,
     std::vector<Vec3>* closest = nullptr,
     std::vector<Vec3>* closestNormals = nullptr,
-    std::vector<int>* closestFaces = nullptr) const;
+    std::vector<int>* closestFaces = nullptr,
+    std::vector<int>* hints = nullptr) const;
 
   /**
    * The fine metric again for the vertices `vertices` only, on the mesh without the faces
@@ -57,13 +77,18 @@ public:
   const FaceTree& Tree() const { return this->Faces; }
 
 private:
-  const PreparedMesh& Mesh;
-  FaceTree Faces;
+  /// VertexUsed and LastFace for the query mesh.
+  void MarkUsedVertices();
+
+  const PreparedMesh& Mesh;             ///< the query vertices
+  std::unique_ptr<FaceTree> OwnedFaces; ///< the target's face tree, unless shared
+  const FaceTree& Faces;
+  const PreparedMesh& Target; ///< the surface measured against (Faces.Surface())
   double CosLimit;
   std::vector<char> VertexUsed;
-  /// Last closest compatible face per vertex: a search hint only (each vertex is written by
-  /// the one thread that handles it; results never depend on it). Not safe for concurrent
-  /// Compute calls on one object.
+  /// Last closest compatible face (of Target) per vertex: a search hint only (each vertex is
+  /// written by the one thread that handles it; results never depend on it), unless the
+  /// caller passes its own.
   mutable std::vector<int> LastFace;
 };
 }

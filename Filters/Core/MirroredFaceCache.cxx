@@ -1,5 +1,6 @@
 #include "MirroredFaceCache.h"
 
+#include <algorithm>
 #include <cstring>
 #include <utility>
 
@@ -35,10 +36,13 @@ std::vector<char> MirroredFaceCache::Within(const std::vector<int>& keys,
 {
   std::vector<char> within(faces.size(), 0);
   std::vector<int> untested; // indices into faces
+  int largestKey = -1;
+  for (int key : keys)
+    largestKey = std::max(largestKey, key);
+  if (largestKey >= static_cast<int>(this->Entries.size()))
+    this->Entries.resize(largestKey + 1); // once per growth, not once per new key
   for (size_t k = 0; k < faces.size(); ++k)
   {
-    if (static_cast<size_t>(keys[k]) >= this->Entries.size())
-      this->Entries.resize(keys[k] + 1);
     Entry& e = this->Entries[keys[k]];
     const Triangle& t = faces[k];
     const std::array<Vec3, 3> corners = { points[t[0]], points[t[1]], points[t[2]] };

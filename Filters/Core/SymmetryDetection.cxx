@@ -1,8 +1,10 @@
 #include "SymmetryDetection.h"
 
 #include "CandidatePlanes.h"
+#include "ClusteredMesh.h"
 #include "MeshPreparation.h"
 #include "MirrorDistance.h"
+#include "ParallelTasks.h"
 #include "RegionGrowing.h"
 #include "RobustCost.h"
 
@@ -12,6 +14,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <limits>
+#include <memory>
 #include <string>
 
 namespace foldingmeshes
@@ -35,19 +38,31 @@ struct Run
   std::vector<double> cost;
   int coarseIterations = 0;
   int fineIterations = 0;
+  double sigmaScale = 3.0; ///< fine sigma in units of epsilon (the paper: 3; polish: 1)
+  std::vector<int> hints;  ///< closest faces of the last distance pass (search hints only)
   // Scores, after the final region is extracted.
   std::vector<char> region;
   double regionArea = 0.0;
   double rms = 0.0;
 };
 
+/// A probe and what its judgement needs of its state after the first two iterations.
+struct Probe
+{
+  Run run;
+  Plane earlyPlane;
+  double earlySupportArea = 0.0;
+};
+
 class Refiner
 {
 public:
-  Refiner(const PreparedMesh& mesh, const SymmetryOptions& options)
+  /// Iterations over the vertices of `mesh`, their distances measured to the surface of
+  /// `targetFaces` (the same mesh, or the full mesh of a sampled copy).
+  Refiner(const PreparedMesh& mesh, const FaceTree& targetFaces, const SymmetryOptions& options)
     : Mesh(mesh)
     , Options(options)
-    , Distances(mesh, options.compatibilityAngle)
+    , Distances(mesh, targetFaces, options.compatibilityAngle)
   {
   }
 
@@ -77,9 +92,9 @@ public:
   /// near-symmetric surroundings the 3-epsilon support lets in.
   void Polish(Run& run, int iterations) const
   {
-    this->SigmaScale = 1.0;
+    run.sigmaScale = 1.0;
     Iterate(run, DistanceMetric::Fine, false, iterations);
-    this->SigmaScale = 3.0;
+    run.sigmaScale = 3.0;
   }
 
   /// A run starting at `plane` with all faces in the support (or `from`'s state).
@@ -102,7 +117,14 @@ public:
   void Score(Run& run, double searchLimit) const
   {
     const double eps = Options.epsilon;
-    Distances.Compute(run.plane, DistanceMetric::Fine, std::max(searchLimit, eps), run.distance);
+    Distances.Compute(run.plane,
+      DistanceMetric::Fine,
+      std::max(searchLimit, eps),
+      run.distance,
+      nullptr,
+      nullptr,
+      nullptr,
+      &run.hints);
     run.region =
       LargestConnectedRegion(Mesh, FacesWithVerticesWithin(Mesh, run.distance, eps, true));
     run.regionArea = RegionArea(Mesh, run.region);
@@ -138,11 +160,12 @@ public:
 private:
   double Sigma(DistanceMetric metric,
     const std::vector<double>& d,
-    const std::vector<char>& vertexInSupport) const
+    const std::vector<char>& vertexInSupport,
+    double fineScale = 3.0) const
   {
     const double floor = 3.0 * Options.epsilon;
     if (metric == DistanceMetric::Fine)
-      return SigmaScale * Options.epsilon;
+      return fineScale * Options.epsilon;
     // Median of the finite distances of the support's vertices (a vertex without a
     // compatible face in the coarse metric has no distance to take a median of).
     std::vector<double> values;
@@ -179,11 +202,11 @@ private:
   /// 2 sigma (a hair more, so that d == 2 sigma is never lost to rounding) - 6 epsilon
   /// instead of 9, and 2 instead of 9 in the polish phase: the same support, weights and
   /// planes for a fraction of the search.
-  double IterationMaxDistance(DistanceMetric metric) const
+  double IterationMaxDistance(DistanceMetric metric, double fineScale) const
   {
     if (metric != DistanceMetric::Fine)
       return MaxDistance(metric);
-    return std::min(MaxDistance(metric), 2.0 * SigmaScale * Options.epsilon * (1.0 + 1e-9));
+    return std::min(MaxDistance(metric), 2.0 * fineScale * Options.epsilon * (1.0 + 1e-9));
   }
 
   double Cost(const std::vector<double>& d,
@@ -246,13 +269,15 @@ private:
       if (!haveDistances)
         Distances.Compute(run.plane,
           metric,
-          IterationMaxDistance(metric),
+          IterationMaxDistance(metric, run.sigmaScale),
           d,
           Options.robust ? &closest : nullptr,
-          Options.robust ? &closestNormals : nullptr);
+          Options.robust ? &closestNormals : nullptr,
+          nullptr,
+          &run.hints);
       haveDistances = false;
       const std::vector<char> vin = SupportVertices(run.support);
-      double sigma = Sigma(metric, d, vin);
+      double sigma = Sigma(metric, d, vin, run.sigmaScale);
       if (firstSigmaAtFloor && it == 0)
         sigma = 3.0 * Options.epsilon;
       if (!std::isfinite(sigma))
@@ -313,7 +338,6 @@ private:
   const PreparedMesh& Mesh;
   const SymmetryOptions& Options;
   MirrorDistance Distances;
-  mutable double SigmaScale = 3.0; ///< fine sigma in units of epsilon (the paper: 3)
 };
 
 /// Iterations of the polish phase (sigma = epsilon) at most. It refines a converged plane; a
@@ -368,7 +392,9 @@ void Finish(const PreparedMesh& mesh,
   SymmetryResult& result)
 {
   const int nf = mesh.NumberOfFaces();
-  refiner.Score(best, 9.0 * options.epsilon); // distances up to 3 sigma for the output
+  // Distances up to 3 sigma for the output (the run's own reach epsilon: the same region).
+  if (options.distancesUpTo3Sigma)
+    refiner.Score(best, 9.0 * options.epsilon);
   result.plane = CanonicalPlane(best.plane, best.plane.origin);
   result.distance = best.distance;
   result.weight = best.weight;
@@ -385,22 +411,36 @@ void Finish(const PreparedMesh& mesh,
     best.rms <= FoundResidualRatio * options.epsilon;
 }
 
-/// Large meshes: candidate search on a simplified copy, finalists refined on the full mesh.
-SymmetryResult DetectOnSimplified(const PreparedMesh& mesh, const SymmetryOptions& options)
+/// The detection proper: iterations over the vertices of `mesh`, distances measured to the
+/// surface of `targetFaces` (the mesh itself, or the full mesh of a sampled copy).
+SymmetryResult DetectOn(const PreparedMesh& mesh,
+  const FaceTree& targetFaces,
+  const SymmetryOptions& options);
+
+/// Large meshes: the candidate search on a sampled copy (ClusterVertices: some of the mesh's
+/// own vertices) whose distances are measured to the full mesh; its finalists are then
+/// refined (refineSampledFinalists) and scored on the full mesh: a tight first one settles
+/// it, else the best of them wins.
+SymmetryResult DetectOnSampledCopy(const PreparedMesh& mesh,
+  const FaceTree& meshFaces,
+  const SymmetryOptions& options)
 {
   SymmetryResult result;
   auto report = [&](double p) { return !options.progress || options.progress(p); };
   const auto t0 = Clock::now();
   PreparedMesh small;
   std::string error;
-  if (!PrepareMesh(SimplifiedMesh(mesh, SimplifiedMeshFaces), {}, small, error) ||
-    small.NumberOfFaces() < 4)
-    return DetectSymmetryOnFullMesh(mesh, options);
+  const int sampledFaces = std::min(
+    MaximumSampledFaces, static_cast<int>(std::ceil(SampledFaceFraction * mesh.NumberOfFaces())));
+  const ClusteredMesh clustered = ClusterVertices(mesh, sampledFaces);
+  if (!PrepareMesh(clustered.mesh, clustered.normals, small, error) || small.NumberOfFaces() < 4)
+    return DetectOn(mesh, meshFaces, options);
   if (!mesh.proximityLinks.empty())
     LinkNearbyParts(small, options.epsilon);
   SymmetryOptions coarseOptions = options;
   coarseOptions.progress = [&](double p) { return report(0.6 * p); };
-  const SymmetryResult coarse = DetectSymmetryOnFullMesh(small, coarseOptions); // no recursion
+  coarseOptions.distancesUpTo3Sigma = false; // the copy's distances are not returned
+  const SymmetryResult coarse = DetectOn(small, meshFaces, coarseOptions);
   result.candidateSeconds = Seconds(t0);
   if (coarse.aborted)
   {
@@ -408,14 +448,17 @@ SymmetryResult DetectOnSimplified(const PreparedMesh& mesh, const SymmetryOption
     return result;
   }
   const auto t1 = Clock::now();
-  Refiner refiner(mesh, options);
+  Refiner refiner(mesh, meshFaces, options);
   std::vector<Run> runs;
   for (size_t k = 0; k < coarse.finalists.size(); ++k)
   {
     Run run;
     refiner.Seed(run, coarse.finalists[k], nullptr);
-    refiner.Fine(run, options.maximumIterations);
-    refiner.Polish(run, std::min(options.maximumIterations, PolishIterations));
+    if (options.refineSampledFinalists)
+    {
+      refiner.Fine(run, options.maximumIterations);
+      refiner.Polish(run, std::min(options.maximumIterations, PolishIterations));
+    }
     refiner.Score(run, options.epsilon);
     const bool tight = Tight(run, options, mesh.totalArea);
     runs.push_back(std::move(run));
@@ -424,15 +467,15 @@ SymmetryResult DetectOnSimplified(const PreparedMesh& mesh, const SymmetryOption
       result.aborted = true;
       return result;
     }
-    // The finalists come best first: a tight refinement of the best one settles it (the
-    // others could only win with a larger tight region, which the small mesh ranked lower).
+    // The finalists come best first: a tight result for the best one settles it (the
+    // others could only win with a larger tight region, which the sampled copy ranked lower).
     if (k == 0 && tight)
       break;
   }
   result.fineSeconds = Seconds(t1);
   result.startsTried = coarse.startsTried;
   if (runs.empty())
-    return DetectSymmetryOnFullMesh(mesh, options);
+    return DetectOn(mesh, meshFaces, options);
   int bestRun = 0;
   for (size_t k = 1; k < runs.size(); ++k)
     if (Better(runs[k], runs[bestRun], mesh.totalArea, options))
@@ -445,15 +488,25 @@ SymmetryResult DetectOnSimplified(const PreparedMesh& mesh, const SymmetryOption
 }
 }
 
-SymmetryResult DetectSymmetry(const PreparedMesh& mesh, const SymmetryOptions& options)
+SymmetryResult DetectSymmetry(const PreparedMesh& mesh,
+  const SymmetryOptions& options,
+  const FaceTree* meshFaces)
 {
-  if (options.robust && mesh.NumberOfFaces() > SimplifyAboveFaces)
-    return DetectOnSimplified(mesh, options);
-  return DetectSymmetryOnFullMesh(mesh, options);
+  std::unique_ptr<FaceTree> own;
+  if (!meshFaces || &meshFaces->Surface() != &mesh)
+    meshFaces = (own = std::make_unique<FaceTree>(mesh)).get();
+  if (options.robust && mesh.NumberOfFaces() > options.sampledSearchAboveFaces)
+    return DetectOnSampledCopy(mesh, *meshFaces, options);
+  return DetectOn(mesh, *meshFaces, options);
 }
 
-SymmetryResult DetectSymmetryOnFullMesh(const PreparedMesh& mesh, const SymmetryOptions& options)
+namespace
 {
+SymmetryResult DetectOn(const PreparedMesh& mesh,
+  const FaceTree& targetFaces,
+  const SymmetryOptions& options)
+{
+  const PreparedMesh& target = targetFaces.Surface();
   SymmetryResult result;
   auto report = [&](double p) { return !options.progress || options.progress(p); };
   const bool debug = std::getenv("FOLDINGMESHES_DEBUG") != nullptr;
@@ -472,7 +525,7 @@ SymmetryResult DetectSymmetryOnFullMesh(const PreparedMesh& mesh, const Symmetry
         run.plane.normal.y(),
         run.plane.normal.z());
   };
-  Refiner refiner(mesh, options);
+  Refiner refiner(mesh, targetFaces, options);
   std::vector<Run> runs;
   std::vector<size_t> finished; // runs iterated to convergence
 
@@ -497,81 +550,98 @@ SymmetryResult DetectSymmetryOnFullMesh(const PreparedMesh& mesh, const Symmetry
   if (options.robust)
   {
     // More starts, each refined directly by a few fine iterations (sigma = 3 epsilon):
-    // the coarse metric tends to drag a good start away.
-    const auto t1 = Clock::now();
-    std::vector<Plane> seeds;
-    seeds.push_back(runs[0].plane);
-    if (options.useInitialPlane)
-      seeds.push_back(options.initialPlane);
-    std::array<Plane, 3> principal;
-    if (SurfacePrincipalPlanes(mesh, principal))
-      seeds.insert(seeds.end(), principal.begin(), principal.end());
-    for (const Plane& p :
-      VotedPlanes(mesh, options.numberOfCandidates, options.epsilon, options.seed))
-      seeds.push_back(p);
-    std::vector<Plane> distinct;
-    for (const Plane& p : seeds)
-    {
-      bool duplicate = false;
-      for (const Plane& q : distinct)
-        duplicate = duplicate || SamePlane(q, p, options.epsilon);
-      if (!duplicate)
-        distinct.push_back(p);
-    }
-    result.candidateSeconds = Seconds(t1);
-
+    // the coarse metric tends to drag a good start away. Probes: two fine iterations each;
+    // probes that land on the plane of an earlier probe are dropped; the rest get four more
+    // iterations and are scored by their region. The first probe continues the paper start
+    // and comes alone: a globally symmetric mesh settles there, and needs no other start.
+    // The others run in parallel, each serially (RunTasksInParallel), and are then judged
+    // one after the other exactly as if they had run in turn - the same decisions and
+    // results for any thread count, at the price of finishing probes that are then dropped.
     const auto t2 = Clock::now();
-    // Probes: two fine iterations each; probes that land on the plane of an earlier probe
-    // are dropped; the rest get four more iterations and are scored by their region.
+    std::vector<Plane> distinct{ runs[0].plane };
     std::vector<size_t> probes;
+    std::vector<Probe> started;
     size_t tried = 0;
-    for (size_t k = 0; k < distinct.size(); ++k)
+    bool settled = false;
+    for (size_t first = 0; first < distinct.size() && !settled; first = started.size())
     {
-      ++tried;
-      Run run;
-      refiner.Seed(run, distinct[k], k == 0 ? &runs[0] : nullptr);
-      refiner.Fine(run, std::min(options.maximumIterations, 2));
-      bool duplicate = false;
-      for (size_t j : probes)
-        duplicate = duplicate || SamePlane(runs[j].plane, run.plane, options.epsilon);
-      bool settled = false;
-      // A probe whose support after two iterations is already below half the best region
-      // so far is dropped too: it would not be finished (see PromisingFraction).
-      if (!duplicate)
+      started.resize(distinct.size());
+      RunTasksInParallel(started.size() - first,
+        [&](size_t i)
+        {
+          const size_t k = first + i;
+          Probe& probe = started[k];
+          refiner.Seed(probe.run, distinct[k], k == 0 ? &runs[0] : nullptr);
+          refiner.Fine(probe.run, std::min(options.maximumIterations, 2));
+          probe.earlyPlane = probe.run.plane;
+          probe.earlySupportArea = RegionArea(mesh, probe.run.support);
+          refiner.Fine(probe.run, std::min(options.maximumIterations, 4));
+          refiner.Score(probe.run, options.epsilon);
+        });
+      for (size_t k = first; k < started.size() && !settled; ++k)
       {
-        double bestArea = 0.0;
+        ++tried;
+        Probe& probe = started[k];
+        bool duplicate = false;
         for (size_t j : probes)
-          bestArea = std::max(bestArea, runs[j].regionArea);
-        duplicate = RegionArea(mesh, run.support) < PromisingFraction * bestArea;
+          duplicate = duplicate || SamePlane(runs[j].plane, probe.earlyPlane, options.epsilon);
+        // A probe whose support after two iterations is already below half the best region
+        // so far is dropped too: it would not be finished (see PromisingFraction).
+        if (!duplicate)
+        {
+          double bestArea = 0.0;
+          for (size_t j : probes)
+            bestArea = std::max(bestArea, runs[j].regionArea);
+          duplicate = probe.earlySupportArea < PromisingFraction * bestArea;
+        }
+        if (!duplicate)
+        {
+          trace("probe", k, probe.run);
+          // A tight region covering almost the whole mesh cannot be beaten by the region
+          // rule (Better: more than 2% of the area larger): no need to probe further.
+          settled = Tight(probe.run, options, mesh.totalArea) &&
+            probe.run.regionArea >= (1.0 - GlobalSymmetryMargin) * mesh.totalArea;
+          probes.push_back(runs.size());
+          runs.push_back(std::move(probe.run));
+        }
       }
-      if (!duplicate)
-      {
-        refiner.Fine(run, std::min(options.maximumIterations, 4));
-        refiner.Score(run, options.epsilon);
-        trace("probe", k, run);
-        // A tight region covering almost the whole mesh cannot be beaten by the region
-        // rule (Better: more than 2% of the area larger): no need to probe further.
-        settled = Tight(run, options, mesh.totalArea) &&
-          run.regionArea >= (1.0 - GlobalSymmetryMargin) * mesh.totalArea;
-        probes.push_back(runs.size());
-        runs.push_back(std::move(run));
-      }
-      if (!report(0.2 + 0.5 * static_cast<double>(k + 1) / distinct.size()))
+      if (!report(0.2 + (first == 0 ? 0.1 : 0.5)))
       {
         result.aborted = true;
         return result;
       }
-      if (settled)
+      if (first == 0 && !settled)
       {
-        if (!report(0.7))
+        // The other starts: the user's plane, the principal planes of the surface and the
+        // voted planes, all from the full surface (target: a sampled copy has fewer vertex
+        // pairs to vote with; small local symmetries were missed, triceratops 60% -> 50%).
+        const auto t1 = Clock::now();
+        std::vector<Plane> seeds;
+        if (options.useInitialPlane)
+          seeds.push_back(options.initialPlane);
+        std::array<Plane, 3> principal;
+        if (SurfacePrincipalPlanes(target, principal))
+          seeds.insert(seeds.end(), principal.begin(), principal.end());
+        for (const Plane& p :
+          VotedPlanes(target, options.numberOfCandidates, options.epsilon, options.seed))
+          seeds.push_back(p);
+        for (const Plane& p : seeds)
         {
-          result.aborted = true;
-          return result;
+          bool duplicate = false;
+          for (const Plane& q : distinct)
+            duplicate = duplicate || SamePlane(q, p, options.epsilon);
+          if (!duplicate)
+            distinct.push_back(p);
         }
-        break;
+        result.candidateSeconds = Seconds(t1);
       }
     }
-    // Finish the best three distinct probes that could still win.
+    if (!report(0.7))
+    {
+      result.aborted = true;
+      return result;
+    }
+    // Finish the best three distinct probes that could still win, in parallel.
     std::stable_sort(probes.begin(),
       probes.end(),
       [&](size_t a, size_t b) { return Better(runs[a], runs[b], mesh.totalArea, options); });
@@ -581,30 +651,26 @@ SymmetryResult DetectSymmetryOnFullMesh(const PreparedMesh& mesh, const Symmetry
       bool duplicate = false;
       for (size_t c : chosen)
         duplicate = duplicate || SamePlane(runs[c].plane, runs[k].plane, options.epsilon);
-      const bool promising =
-        runs[k].regionArea >= PromisingFraction * runs[probes[0]].regionArea;
+      const bool promising = runs[k].regionArea >= PromisingFraction * runs[probes[0]].regionArea;
       if (!duplicate && promising && chosen.size() < 3)
         chosen.push_back(k);
     }
-    for (size_t i = 0; i < chosen.size(); ++i)
+    RunTasksInParallel(chosen.size(),
+      [&](size_t i)
+      {
+        Run& run = runs[chosen[i]];
+        refiner.Fine(run, options.maximumIterations);
+        refiner.Polish(run, std::min(options.maximumIterations, PolishIterations));
+        refiner.Score(run, options.epsilon);
+      });
+    for (size_t k : chosen)
+      trace("final", k, runs[k]);
+    if (!report(1.0))
     {
-      Run& run = runs[chosen[i]];
-      refiner.Fine(run, options.maximumIterations);
-      if (!report(0.7 + 0.3 * (static_cast<double>(i) + 0.5) / chosen.size()))
-      {
-        result.aborted = true;
-        return result;
-      }
-      refiner.Polish(run, std::min(options.maximumIterations, PolishIterations));
-      refiner.Score(run, options.epsilon);
-      trace("final", chosen[i], run);
-      if (!report(0.7 + 0.3 * static_cast<double>(i + 1) / chosen.size()))
-      {
-        result.aborted = true;
-        return result;
-      }
+      result.aborted = true;
+      return result;
     }
-    result.fineSeconds = Seconds(t2);
+    result.fineSeconds = Seconds(t2) - result.candidateSeconds;
     result.startsTried = static_cast<int>(tried);
   }
   else
@@ -626,5 +692,6 @@ SymmetryResult DetectSymmetryOnFullMesh(const PreparedMesh& mesh, const Symmetry
     result.finalists.push_back(runs[k].plane);
   Finish(mesh, options, refiner, runs[finished[0]], result);
   return result;
+}
 }
 }

@@ -2,6 +2,7 @@
 #ifndef foldingmeshes_SymmetryDetection_h
 #define foldingmeshes_SymmetryDetection_h
 
+#include "FaceTree.h"
 #include "Plane.h"
 
 #include <functional>
@@ -9,6 +10,14 @@
 
 namespace foldingmeshes
 {
+/// Meshes with more faces than this are searched for candidate planes on a sampled copy by
+/// default (SymmetryOptions::sampledSearchAboveFaces).
+constexpr int SampledSearchAboveFaces = 50000;
+/// The sampled copy has about this fraction of the mesh's faces ...
+constexpr double SampledFaceFraction = 0.25;
+/// ... and at most this many.
+constexpr int MaximumSampledFaces = 30000;
+
 struct SymmetryOptions
 {
   double epsilon = 0.0; ///< tolerance as a length (required, > 0)
@@ -20,6 +29,17 @@ struct SymmetryOptions
   double compatibilityAngle = 45.0;
   double minimumSymmetricAreaFraction = 0.1;
   unsigned seed = 1;
+  /// Robust only: meshes with more faces than this search their candidate planes on a
+  /// sampled copy (see DetectSymmetry).
+  int sampledSearchAboveFaces = SampledSearchAboveFaces;
+  /// With the sampled search, the copy's finalists get the fine and polish iterations on
+  /// the full mesh before they are scored there; false: they are only scored (for callers
+  /// that refine the plane on its region themselves, like the folding-tree builder).
+  bool refineSampledFinalists = true;
+  /// SymmetryResult::distance up to 3 sigma (9 epsilon: the detector's SymmetryDistance
+  /// output), one more distance pass at the end; false: only those below epsilon are finite
+  /// (the folding-tree builder needs no more). The plane and the regions are the same.
+  bool distancesUpTo3Sigma = true;
   /// Called with progress in [0,1]; return false to abort.
   std::function<bool(double)> progress;
 };
@@ -29,9 +49,10 @@ struct SymmetryResult
   Plane plane;
   bool found = false; ///< the documented "symmetry found" rule holds
   bool aborted = false;
-  std::vector<double> distance; ///< fine d_i per vertex (infinite: no compatible face near)
-  std::vector<double> weight;   ///< final IRLS weight per vertex
-  std::vector<char> faceLabel;  ///< 2 symmetric region, 1 support only, 0 outside
+  /// Fine d_i per vertex (infinite: no compatible face near; see distancesUpTo3Sigma).
+  std::vector<double> distance;
+  std::vector<double> weight;  ///< final IRLS weight per vertex
+  std::vector<char> faceLabel; ///< 2 symmetric region, 1 support only, 0 outside
   double symmetricArea = 0.0;
   double symmetricAreaFraction = 0.0;
   double rmsResidual = 0.0; ///< area-weighted RMS of d over the symmetric region
@@ -52,19 +73,24 @@ struct SymmetryResult
  * SymmetryFound: area(S) >= minimumSymmetricAreaFraction * area(M) and the area-weighted
  * RMS of d over S <= 0.35 epsilon.
  */
-SymmetryResult DetectSymmetry(const PreparedMesh& mesh, const SymmetryOptions& options);
+SymmetryResult DetectSymmetry(const PreparedMesh& mesh,
+  const SymmetryOptions& options,
+  const FaceTree* meshFaces = nullptr);
+// `meshFaces`: a FaceTree of `mesh` (its Surface() is `mesh`) the caller already has (else
+// one is built).
+// Meshes with more faces than options.sampledSearchAboveFaces (robust method) are searched
+// on a sampled copy: about SampledFaceFraction of the faces (at most MaximumSampledFaces) by
+// vertex clustering whose points are vertices of the mesh (ClusterVertices), iterated with
+// their distances measured to the full mesh - so an exact symmetry stays exact; the copy's
+// finalists are then refined (refineSampledFinalists) and scored on the full mesh: a tight
+// first one settles it, else all of them are, and the best wins.
+// The probes after the first and the finals run in parallel (vtkSMPTools), so an abort
+// requested through `progress` takes effect after a batch of probes or the finals.
 // Setting the environment variable FOLDINGMESHES_DEBUG prints every run (start, iterations,
 // region, RMS/epsilon, plane) and region statistics to stderr.
 
-/// DetectSymmetry without the simplified-copy candidate search of very large meshes.
-SymmetryResult DetectSymmetryOnFullMesh(const PreparedMesh& mesh, const SymmetryOptions& options);
-
-/// Meshes with more faces than this are searched for candidate planes on a simplified
-/// copy (SimplifiedMeshFaces faces); the finalists are then refined on the full mesh.
-constexpr int SimplifyAboveFaces = 50000;
 /// The "symmetry found" residual rule: area-weighted RMS of d over S <= this * epsilon.
 constexpr double FoundResidualRatio = 0.35;
-constexpr int SimplifiedMeshFaces = 30000;
 }
 
 #endif
