@@ -44,6 +44,8 @@ Piece Unfolder::Unfold(int index)
       else
         this->CountTears(node, piece, seam);
       this->Result.seams.push_back(seam);
+      if (this->Options.stitch && this->Options.removeProjectedPoints)
+        this->Result.removedProjectedPoints += this->RemoveProjectedPoints(&node, piece, nullptr);
       break;
     }
   }

@@ -67,7 +67,10 @@ struct UnfoldOptions
    * diagonal midpoints against the star; the ring's budgets are charged what it moved). With
    * the budget used up only stars planar within planeTolerance * diagonal qualify (the same
    * polygon, triangulated differently); without budgets (respectErrorBudget off, older trees)
-   * the folding node's epsilon is the limit. Points are tried in index order (deterministic).
+   * the folding node's epsilon is the limit. Copies that a fold below mirrored off the fold
+   * line they were projected onto (on no fold plane) are tried after the stitching at each
+   * segmentation node, once their ring is closed. Points are tried in index order
+   * (deterministic).
    * See UnfoldedMesh::removedProjectedPoints.
    */
   bool removeProjectedPoints = true;

@@ -211,8 +211,10 @@ private:
   // FoldingTreeUnfolderProjectedPoints.cxx
 public:
   /// Removes the projected points of `piece` (UnfoldOptions::removeProjectedPoints) that can
-  /// go: after the reflection at `node`, those on its plane; with node == nullptr (after the
-  /// traversal) any. `added` (optional, per point) is compacted with the points. Returns
+  /// go: after the reflection at a folding `node`, those on its plane; after the stitching
+  /// at a segmentation `node`, those on no fold plane (copies a fold below mirrored off the
+  /// fold line they were projected onto, which no fold tries); with node == nullptr (after
+  /// the traversal) any. `added` (optional, per point) is compacted with the points. Returns
   /// the number removed.
   int RemoveProjectedPoints(const FoldingNode* node, Piece& piece, std::vector<char>* added);
 

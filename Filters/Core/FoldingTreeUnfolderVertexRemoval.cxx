@@ -108,6 +108,15 @@ double VertexRemover::Limit(int v, double fallback) const
   return std::max(limit, this->Slack);
 }
 
+bool VertexRemover::Interior(int v) const
+{
+  std::vector<int> star, ring, ringFace;
+  for (int f : this->VertexFaces[v])
+    if (this->FaceAlive[f])
+      star.push_back(f);
+  return star.size() >= 3 && ClosedRing(this->Mesh.triangles, star, v, ring, ringFace);
+}
+
 bool VertexRemover::Try(int v,
   double limit,
   const RingRules& rules,

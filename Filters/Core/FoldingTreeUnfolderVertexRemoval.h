@@ -72,6 +72,9 @@ public:
     const char*& why) const;
   void Apply(const RingRemoval& removal);
 
+  /// Whether v is interior: its star's ring edges form one closed loop (Try's first check).
+  bool Interior(int v) const;
+
   bool Removed(int v) const { return this->IsRemoved[v] != 0; }
   /// The faces of v that are still there.
   const std::vector<int>& FacesOf(int v) const { return this->VertexFaces[v]; }
