@@ -6,6 +6,7 @@
 #include <vtkDataArray.h>
 #include <vtkFieldData.h>
 #include <vtkLookupTable.h>
+#include <vtkMath.h>
 #include <vtkNew.h>
 #include <vtkPNGWriter.h>
 #include <vtkPolyData.h>
@@ -24,6 +25,60 @@
 
 namespace foldingmeshes
 {
+namespace
+{
+/**
+ * Places the camera, already aimed with its view up set, at the distance along its view
+ * direction where all eight corners of the visible props' bounding box fit in a view of the
+ * given aspect ratio
+ * (width / height) with a small margin. vtkRenderer::ResetCamera fits the bounding sphere
+ * and, before the window is sized, assumes a square view: a long mesh standing up in a
+ * 4:3 picture (a hammer) came out cut off at the top and bottom once zoomed.
+ */
+void FitCameraToVisibleProps(vtkRenderer* renderer, double aspect)
+{
+  double bounds[6];
+  renderer->ComputeVisiblePropBounds(bounds);
+  if (!vtkMath::AreBoundsInitialized(bounds))
+  {
+    renderer->ResetCamera();
+    return;
+  }
+  vtkCamera* camera = renderer->GetActiveCamera();
+  double focal[3], position[3], up[3];
+  camera->GetFocalPoint(focal);
+  camera->GetPosition(position);
+  camera->OrthogonalizeViewUp();
+  camera->GetViewUp(up);
+  double view[3] = { focal[0] - position[0], focal[1] - position[1], focal[2] - position[2] };
+  vtkMath::Normalize(view);
+  vtkMath::Normalize(up);
+  double right[3];
+  vtkMath::Cross(view, up, right);
+  const double margin = 1.06; // the box fills 1/1.06 of the picture's height or width
+  const double halfTan = std::tan(vtkMath::RadiansFromDegrees(camera->GetViewAngle()) / 2.0);
+  double distance = 0.0;
+  for (int corner = 0; corner < 8; ++corner)
+  {
+    const double offset[3] = { bounds[(corner & 1) ? 1 : 0] - focal[0],
+      bounds[(corner & 2) ? 3 : 2] - focal[1], bounds[(corner & 4) ? 5 : 4] - focal[2] };
+    const double x = std::abs(vtkMath::Dot(offset, right));
+    const double y = std::abs(vtkMath::Dot(offset, up));
+    const double depth = vtkMath::Dot(offset, view); // towards the camera is negative
+    distance = std::max(distance, margin * y / halfTan - depth);
+    distance = std::max(distance, margin * x / (halfTan * std::max(aspect, 1e-6)) - depth);
+  }
+  if (!(distance > 0.0))
+  {
+    renderer->ResetCamera();
+    return;
+  }
+  camera->SetPosition(
+    focal[0] - distance * view[0], focal[1] - distance * view[1], focal[2] - distance * view[2]);
+  renderer->ResetCameraClippingRange();
+}
+}
+
 vtkSmartPointer<vtkRenderWindow> MakeSymmetryScene(vtkPolyData* labelledMesh,
   vtkPolyData* planeGlyph,
   int width,
@@ -104,8 +159,7 @@ vtkSmartPointer<vtkRenderWindow> MakeSymmetryScene(vtkPolyData* labelledMesh,
     dir[k] = (len > 0 ? side[k] / len : 0.0) + 0.6 * n[k] + 0.35 * up[k];
   camera->SetPosition(center[0] + dir[0], center[1] + dir[1], center[2] + dir[2]);
   camera->SetViewUp(up);
-  renderer->ResetCamera();
-  camera->Zoom(1.15);
+  FitCameraToVisibleProps(renderer, static_cast<double>(width) / height);
 
   vtkSmartPointer<vtkRenderWindow> window = vtkSmartPointer<vtkRenderWindow>::New();
   window->SetOffScreenRendering(1);
@@ -197,8 +251,7 @@ vtkSmartPointer<vtkRenderWindow> MakeCategoryScene(vtkPolyData* mesh,
   camera->SetFocalPoint(center);
   camera->SetPosition(center[0] + dir[0], center[1] + dir[1], center[2] + dir[2]);
   camera->SetViewUp(up);
-  renderer->ResetCamera();
-  camera->Zoom(1.15);
+  FitCameraToVisibleProps(renderer, static_cast<double>(width) / height);
 
   vtkSmartPointer<vtkRenderWindow> window = vtkSmartPointer<vtkRenderWindow>::New();
   window->SetOffScreenRendering(1);
