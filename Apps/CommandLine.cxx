@@ -50,6 +50,8 @@ original and stored faces, compression, tree height, folds, leaves and time.
   --max-folds N            leaf when N folds lie above a region (default 8, at most 63)
   --tight-symmetry         fold only clear symmetries (RMS mirror distance <= 0.35 epsilon);
                            default: every epsilon-symmetric region of >= 10% area, as the paper
+  --sampled-search-above N regions with more than N faces search candidate planes on a sampled
+                           copy (default 1000; 0: every region; a huge N: the full search)
   --keep-projected-points  (roundtrip only) as for unfold
   --keep-copy-density      (roundtrip only) as for unfold
   --outdir DIR             folder for the outputs (default: current folder)

@@ -94,6 +94,15 @@ FoldSettings ParseFoldArguments(int argc, char* argv[])
     }
     else if (arg == "--tight-symmetry")
       f.tightSymmetry = true;
+    else if (arg == "--sampled-search-above")
+    {
+      const std::string v = value("--sampled-search-above");
+      const double n = ParseNumber(arg, v, 0, 1e9, false);
+      if (n != std::floor(n))
+        throw std::runtime_error(
+          "--sampled-search-above needs a non-negative integer, got '" + v + "'");
+      f.sampledSearchAboveFaces = static_cast<int>(n);
+    }
     else if (arg == "--keep-projected-points")
       f.keepProjectedPoints = true;
     else if (arg == "--keep-copy-density")
@@ -158,6 +167,8 @@ void ConfigureBuilder(vtkFoldingTreeBuilder* builder, const FoldSettings& f)
   builder->SetMinimumAreaFraction(f.minAreaFraction);
   builder->SetMaximumFolds(f.maxFolds);
   builder->SetRequireTightSymmetry(f.tightSymmetry);
+  if (f.sampledSearchAboveFaces >= 0)
+    builder->SetSampledSearchAboveFaces(f.sampledSearchAboveFaces);
 }
 
 /// A number of the tree's "Tree" information block (block 1), or `fallback`.

@@ -27,6 +27,7 @@ struct FoldSettings
   double minAreaFraction = 0.05;
   int maxFolds = 8;
   bool tightSymmetry = false;
+  int sampledSearchAboveFaces = -1; // -1: the builder's default
   bool keepProjectedPoints = false; // roundtrip's unfolder: RemoveProjectedPoints off
   bool keepCopyDensity = false;     // roundtrip's unfolder: MatchDiscardedDensity off
 };

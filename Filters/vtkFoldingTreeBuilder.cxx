@@ -136,6 +136,7 @@ int vtkFoldingTreeBuilder::RequestWholeData(vtkInformation*,
   options.epsilon = epsilon;
   options.symmetry.robust = this->Method == ROBUST;
   options.symmetry.seed = static_cast<unsigned>(this->RandomSeed);
+  options.sampledSearchAboveFaces = this->SampledSearchAboveFaces;
   options.useMinimumFaces = this->UseMinimumFaces;
   options.minimumFaces = this->MinimumFaces;
   options.useMinimumAreaFraction = this->UseMinimumAreaFraction;
@@ -225,6 +226,7 @@ void vtkFoldingTreeBuilder::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "RequireTightSymmetry: " << this->RequireTightSymmetry << "\n";
   os << indent << "ConnectNearbyParts: " << this->ConnectNearbyParts << "\n";
   os << indent << "Method: " << (this->Method == PAPER ? "Paper" : "Robust") << "\n";
+  os << indent << "SampledSearchAboveFaces: " << this->SampledSearchAboveFaces << "\n";
   os << indent << "RandomSeed: " << this->RandomSeed << "\n";
   os << indent << "ToleranceLength: " << this->ToleranceLength << "\n";
   os << indent << "OriginalFaces: " << this->OriginalFaces << "\n";

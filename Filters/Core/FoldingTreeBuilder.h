@@ -45,7 +45,7 @@ struct FoldingTreeOptions
    * Regions with more faces than this search their candidate planes on a sampled copy
    * (DetectSymmetry) and only score the copy's finalists on the full region, without the
    * fine and polish iterations there: the trim and the polish of the plane on S below refine
-   * it anyway. (The core option only; vtkFoldingTreeBuilder keeps the default.) Half the build time
+   * it anyway (vtkFoldingTreeBuilder::SampledSearchAboveFaces). Half the build time
    * of the shared meshes at the same mean compression (docs/benchmarks.md); 0: every node, a very
    * large value: none.
    */

@@ -462,27 +462,45 @@ int TestFoldingTreeFilters(int argc, char* argv[])
       defaults->GetMinimumAreaFraction() == 0.05 && defaults->GetMaximumFolds() == 8 &&
       defaults->GetRequireMeaningfulSymmetry() && !defaults->GetRequireTightSymmetry() &&
       defaults->GetConnectNearbyParts() && defaults->GetMethod() == 0 &&
-      defaults->GetRandomSeed() == 1,
+      defaults->GetRandomSeed() == 1 &&
+      defaults->GetSampledSearchAboveFaces() == 1000,
     "builder defaults differ from FoldingTreeOptions");
 
   std::vector<Case> cases;
+  const auto threeFolds = [](const std::vector<NodeInfo>& nodes)
+  {
+    // Fold 0 -> Fold 1 -> Fold 2 -> Leaf 3.
+    EXPECT(nodes.size() == 4, "three-plane shape: " << nodes.size() << " nodes");
+    for (size_t k = 0; k < nodes.size() && k < 3; ++k)
+      EXPECT(nodes[k].kind == 1 && nodes[k].index == static_cast<int>(k),
+        "three-plane shape: node " << k << " is " << nodes[k].name);
+    if (nodes.size() == 4)
+      EXPECT(nodes[3].kind == 0 && nodes[3].name == "Leaf 3",
+        "three-plane shape: last node " << nodes[3].name);
+  };
   cases.push_back({ "three-plane shape",
     pm::MakeThreePlaneShape(4000),
     [](vtkFoldingTreeBuilder* b) { b->SetMinimumAreaFraction(0.13); },
-    [](const std::vector<NodeInfo>& nodes)
-    {
-      // Fold 0 -> Fold 1 -> Fold 2 -> Leaf 3.
-      EXPECT(nodes.size() == 4, "three-plane shape: " << nodes.size() << " nodes");
-      for (size_t k = 0; k < nodes.size() && k < 3; ++k)
-        EXPECT(nodes[k].kind == 1 && nodes[k].index == static_cast<int>(k),
-          "three-plane shape: node " << k << " is " << nodes[k].name);
-      if (nodes.size() == 4)
-        EXPECT(nodes[3].kind == 0 && nodes[3].name == "Leaf 3",
-          "three-plane shape: last node " << nodes[3].name);
-    },
+    threeFolds,
     true,
     true,
     8 });
+  // The sampled candidate search (default above 1000 faces: every node of this 4000-face
+  // shape but the last) switched off, and on for every node: the same three folds.
+  for (const int above : { 1000000000, 0 })
+    cases.push_back({ above == 0 ? "three-plane shape, sampled search everywhere"
+                                 : "three-plane shape, full search",
+      pm::MakeThreePlaneShape(4000),
+      [above](vtkFoldingTreeBuilder* b)
+      {
+        b->SetMinimumAreaFraction(0.13);
+        b->SetSampledSearchAboveFaces(above);
+        EXPECT(b->GetSampledSearchAboveFaces() == above, "SampledSearchAboveFaces not set");
+      },
+      threeFolds,
+      true,
+      true,
+      8 });
   cases.push_back({ "bilateral blob",
     pm::MakeBilateralBlob(4000),
     [](vtkFoldingTreeBuilder* b) { b->SetMaximumFolds(1); },
