@@ -2,7 +2,7 @@
 
 #include <Eigen/Eigenvalues>
 
-#include <vtkSMPTools.h>
+#include "ParallelTasks.h"
 
 #include <algorithm>
 #include <cmath>
@@ -159,11 +159,10 @@ std::vector<Plane> VotedPlanes(const PreparedMesh& mesh, int count, double epsil
   // Partners are drawn mostly among vertices of similar curvature (mirror images have the
   // same): a discrete mean normal curvature per vertex, ranked; q is sampled within a window
   // of p's rank. One vote in four pairs p with a uniformly sampled q.
-  // Per-vertex and per-vote loops below run through vtkSMPTools: each element is computed
+  // Per-vertex and per-vote loops below run in parallel (ForRanges): each element is computed
   // alone, in a fixed order, so the result does not depend on the thread count.
   std::vector<double> curvature(nv, 0.0);
-  vtkSMPTools::For(0,
-    nv,
+  ForRanges(nv,
     1024,
     [&](vtkIdType first, vtkIdType last)
     {
@@ -252,8 +251,7 @@ std::vector<Plane> VotedPlanes(const PreparedMesh& mesh, int count, double epsil
       static_cast<int>(lo - sortedOffsets.begin()), static_cast<int>(hi - sortedOffsets.begin()));
   };
   std::vector<double> strength(nvotes, 0.0);
-  vtkSMPTools::For(0,
-    nvotes,
+  ForRanges(nvotes,
     64,
     [&](vtkIdType first, vtkIdType last)
     {

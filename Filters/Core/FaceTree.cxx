@@ -2,7 +2,7 @@
 
 #include "PointTriangleDistance.h"
 
-#include <vtkSMPTools.h>
+#include "ParallelTasks.h"
 
 #include <algorithm>
 #include <cmath>
@@ -156,12 +156,11 @@ void FaceTree::Build(int first, int count, int index)
   node.right = index + 1 + SubtreeNodes(half);
   this->Nodes[index] = node;
   // Preorder numbering fixed in advance: the two halves touch disjoint ranges of Order and
-  // Nodes, so large ones are built in parallel (vtkSMPTools; nested calls run serially) with
+  // Nodes, so large ones are built in parallel (ForRanges; nested calls run serially) with
   // the same tree for any thread count.
   const int firsts[2] = { first, first + half }, counts[2] = { half, count - half };
   const int indices[2] = { node.left, node.right };
-  vtkSMPTools::For(0,
-    2,
+  ForRanges(2,
     count >= ParallelBuildFaces ? 1 : 2,
     [&](vtkIdType begin, vtkIdType end)
     {

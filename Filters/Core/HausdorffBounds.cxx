@@ -3,7 +3,7 @@
 // corners' distances to the triangle closest to c (convexity).
 #include "SurfaceDistance.h"
 
-#include <vtkSMPTools.h>
+#include "ParallelTasks.h"
 
 #include <algorithm>
 #include <array>
@@ -135,8 +135,8 @@ HausdorffBounds DirectedHausdorffBounds(const TriangleMesh& from,
     for (double x : d)
       result.lower = std::max(result.lower, x);
     std::vector<double> bounds(children.size());
-    vtkSMPTools::For(0,
-      static_cast<vtkIdType>(children.size()),
+    ForRanges(static_cast<vtkIdType>(children.size()),
+      0,
       [&](vtkIdType begin, vtkIdType end)
       {
         for (vtkIdType c = begin; c < end; ++c)

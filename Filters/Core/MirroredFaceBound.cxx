@@ -2,7 +2,7 @@
 
 #include "PointTriangleDistance.h"
 
-#include <vtkSMPTools.h>
+#include "ParallelTasks.h"
 
 #include <algorithm>
 #include <array>
@@ -93,8 +93,8 @@ std::vector<char> MirroredFacesWithin(const PreparedMesh& mesh,
 {
   // The quick proof: every point of a triangle is within (longest edge) / sqrt(3) of a corner.
   std::vector<char> ok(faces.size(), 0);
-  vtkSMPTools::For(0,
-    static_cast<vtkIdType>(faces.size()),
+  ForRanges(static_cast<vtkIdType>(faces.size()),
+    0,
     [&](vtkIdType begin, vtkIdType end)
     {
       for (vtkIdType k = begin; k < end; ++k)
@@ -137,8 +137,8 @@ std::vector<char> MirroredFacesWithin(const PreparedMesh& mesh,
     return ok;
   const FaceTree& faceTree = tree();
   std::vector<Corner> mirrored(corners.size());
-  vtkSMPTools::For(0,
-    static_cast<vtkIdType>(corners.size()),
+  ForRanges(static_cast<vtkIdType>(corners.size()),
+    0,
     [&](vtkIdType begin, vtkIdType end)
     {
       for (vtkIdType i = begin; i < end; ++i)
@@ -147,8 +147,8 @@ std::vector<char> MirroredFacesWithin(const PreparedMesh& mesh,
         mirrored[i].hit = faceTree.ClosestFace(mirrored[i].x, radius);
       }
     });
-  vtkSMPTools::For(0,
-    static_cast<vtkIdType>(open.size()),
+  ForRanges(static_cast<vtkIdType>(open.size()),
+    0,
     [&](vtkIdType begin, vtkIdType end)
     {
       for (vtkIdType j = begin; j < end; ++j)

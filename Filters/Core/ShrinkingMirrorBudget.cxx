@@ -1,6 +1,6 @@
 #include "ShrinkingMirrorBudget.h"
 
-#include <vtkSMPTools.h>
+#include "ParallelTasks.h"
 
 #include <algorithm>
 
@@ -49,8 +49,7 @@ void ShrinkingMirrorBudget::Start(const std::vector<int>& ids)
     this->InRegion[v] = 1;
   this->Partner.assign(this->Points.size(), -1);
   // Every point alone (read-only buckets): the same partners for any thread count.
-  vtkSMPTools::For(0,
-    static_cast<vtkIdType>(ids.size()),
+  ForRanges(static_cast<vtkIdType>(ids.size()),
     256,
     [&](vtkIdType first, vtkIdType last)
     {
@@ -79,8 +78,7 @@ void ShrinkingMirrorBudget::Shrink(const std::vector<int>& ids)
   for (int v : ids)
     if (this->Partner[v] >= 0 && !this->InRegion[this->Partner[v]])
       lost.push_back(v);
-  vtkSMPTools::For(0,
-    static_cast<vtkIdType>(lost.size()),
+  ForRanges(static_cast<vtkIdType>(lost.size()),
     64,
     [&](vtkIdType first, vtkIdType last)
     {

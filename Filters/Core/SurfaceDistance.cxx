@@ -3,7 +3,7 @@
 #include "FaceTree.h"
 #include "PointTriangleDistance.h"
 
-#include <vtkSMPTools.h>
+#include "ParallelTasks.h"
 
 #include <algorithm>
 #include <cmath>
@@ -45,8 +45,8 @@ double SurfaceDistanceQuery::Distance(const Vec3& p) const
 std::vector<double> SurfaceDistanceQuery::Distances(const std::vector<Vec3>& points) const
 {
   std::vector<double> d(points.size(), std::numeric_limits<double>::infinity());
-  vtkSMPTools::For(0,
-    static_cast<vtkIdType>(points.size()),
+  ForRanges(static_cast<vtkIdType>(points.size()),
+    0,
     [&](vtkIdType begin, vtkIdType end)
     {
       for (vtkIdType i = begin; i < end; ++i)
@@ -61,8 +61,8 @@ void SurfaceDistanceQuery::Closest(const std::vector<Vec3>& points,
 {
   distances.assign(points.size(), std::numeric_limits<double>::infinity());
   faces.assign(points.size(), -1);
-  vtkSMPTools::For(0,
-    static_cast<vtkIdType>(points.size()),
+  ForRanges(static_cast<vtkIdType>(points.size()),
+    0,
     [&](vtkIdType begin, vtkIdType end)
     {
       for (vtkIdType i = begin; i < end; ++i)

@@ -11,20 +11,17 @@
 //   an exactly symmetric blob: the exact plane and the whole mesh, as the full search finds
 //   them; on a blob with a 30% asymmetric attachment: the plane of the body;
 // - the same plane, regions, finalists and starts with vtkSMPTools Sequential and STDThread
-//   (2 threads), where several probes and finals run in parallel (the attachment);
-// - ParallelTasks: every task runs once, loops through ForRanges run serially inside a task.
+//   (2 threads), where several probes and finals run in parallel (the attachment).
 #include "ClusteredMesh.h"
 #include "CoreTestUtilities.h"
 #include "MeshPreparation.h"
 #include "MirrorDistance.h"
-#include "ParallelTasks.h"
 #include "ProceduralMeshes.h"
 #include "RegionGrowing.h"
 #include "SymmetryDetection.h"
 
 #include <vtkSMPTools.h>
 
-#include <atomic>
 #include <cmath>
 #include <cstring>
 #include <limits>
@@ -276,45 +273,6 @@ void CheckDetection()
     }
   }
 }
-
-void CheckParallelTasks()
-{
-  vtkSMPTools::SetBackend("STDThread");
-  vtkSMPTools::Initialize(2);
-  std::vector<std::atomic<int>> runs(37);
-  std::atomic<int> innerCalls{ 0 }, innerWhole{ 0 };
-  foldingmeshes::RunTasksInParallel(runs.size(),
-    [&](size_t i)
-    {
-      ++runs[i];
-      foldingmeshes::ForRanges(1000,
-        16,
-        [&](vtkIdType begin, vtkIdType end)
-        {
-          ++innerCalls;
-          innerWhole += begin == 0 && end == 1000;
-        });
-    });
-  bool once = true;
-  for (const auto& r : runs)
-    once = once && r == 1;
-  EXPECT(once, "every task runs exactly once");
-  EXPECT(innerCalls == 37 && innerWhole == 37, "loops inside a task run serially, in one range");
-
-  std::vector<std::atomic<int>> covered(1000);
-  foldingmeshes::ForRanges(1000,
-    16,
-    [&](vtkIdType begin, vtkIdType end)
-    {
-      for (vtkIdType k = begin; k < end; ++k)
-        ++covered[k];
-    });
-  bool all = true;
-  for (const auto& c : covered)
-    all = all && c == 1;
-  EXPECT(all, "ForRanges outside a task covers every index once");
-  vtkSMPTools::SetBackend("Sequential");
-}
 }
 
 int main()
@@ -323,6 +281,5 @@ int main()
   CheckClusterVertices();
   CheckDistancesToFullMesh();
   CheckDetection();
-  CheckParallelTasks();
   return coretest::Finish("TestSampledSearch");
 }

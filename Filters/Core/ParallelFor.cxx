@@ -1,0 +1,198 @@
+#include "ParallelFor.h"
+
+#include <vtkSMPTools.h>
+
+#include <pthread.h>
+
+#include <algorithm>
+#include <atomic>
+#include <condition_variable>
+#include <cstring>
+#include <exception>
+#include <mutex>
+#include <thread>
+#include <vector>
+
+namespace foldingmeshes
+{
+namespace
+{
+thread_local bool insideLoop = false;
+
+/// Marks the current thread as running ranges; restores the previous state however it ends.
+struct InsideLoopScope
+{
+  const bool outer = insideLoop;
+  InsideLoopScope() { insideLoop = true; }
+  ~InsideLoopScope() { insideLoop = outer; }
+  InsideLoopScope(const InsideLoopScope&) = delete;
+  InsideLoopScope& operator=(const InsideLoopScope&) = delete;
+};
+
+/**
+ * Worker threads parked between loops. One loop at a time: the calling thread claims ranges
+ * too, the workers asked to take part claim the rest, and the caller returns when all of
+ * them are done. The pool is never destroyed (its parked threads end with the process), so
+ * no static destructor has to join threads during exit or a plugin's unloading.
+ */
+class ThreadPool
+{
+public:
+  /// False, without running anything, when another thread's loop occupies the pool.
+  bool Run(int threads, vtkIdType n, vtkIdType grain, const RangeBody& body)
+  {
+    std::unique_lock<std::mutex> busy(this->Busy, std::try_to_lock);
+    if (!busy.owns_lock())
+      return false;
+    const vtkIdType ranges = (n + grain - 1) / grain;
+    const int helpers = static_cast<int>(std::min<vtkIdType>(threads - 1, ranges - 1));
+    {
+      std::lock_guard<std::mutex> lock(this->Lock);
+      while (static_cast<int>(this->Workers.size()) < helpers)
+      {
+        const int index = static_cast<int>(this->Workers.size());
+        this->Workers.emplace_back([this, index]() { this->Work(index); });
+      }
+      this->Body = &body;
+      this->N = n;
+      this->Grain = grain;
+      this->Next = 0;
+      this->Error = nullptr;
+      this->Helpers = helpers;
+      this->Running = helpers;
+      ++this->Generation;
+    }
+    this->Wake.notify_all();
+    this->RunRanges();
+    std::unique_lock<std::mutex> lock(this->Lock);
+    this->Finished.wait(lock, [this]() { return this->Running == 0; });
+    this->Body = nullptr;
+    std::exception_ptr error = this->Error;
+    this->Error = nullptr;
+    lock.unlock();
+    if (error)
+      std::rethrow_exception(error);
+    return true;
+  }
+
+private:
+  void Work(int index)
+  {
+    unsigned long long seen = 0;
+    std::unique_lock<std::mutex> lock(this->Lock);
+    for (;;)
+    {
+      this->Wake.wait(lock, [&]() { return this->Generation != seen; });
+      seen = this->Generation;
+      if (index >= this->Helpers)
+        continue;
+      lock.unlock();
+      this->RunRanges();
+      lock.lock();
+      if (--this->Running == 0)
+        this->Finished.notify_one();
+    }
+  }
+
+  /// Claims and runs ranges until none is left.
+  void RunRanges()
+  {
+    InsideLoopScope inside;
+    for (;;)
+    {
+      const vtkIdType begin = this->Next.fetch_add(this->Grain);
+      if (begin >= this->N)
+        return;
+      try
+      {
+        (*this->Body)(begin, std::min(this->N, begin + this->Grain));
+      }
+      catch (...)
+      {
+        std::lock_guard<std::mutex> lock(this->ErrorLock);
+        if (!this->Error)
+          this->Error = std::current_exception();
+        this->Next = this->N; // the other threads stop after their current range
+      }
+    }
+  }
+
+  std::mutex Busy; ///< held by the thread whose loop uses the pool
+  std::mutex Lock; ///< guards the loop's fields and the counters below
+  std::condition_variable Wake, Finished;
+  std::vector<std::thread> Workers;
+  unsigned long long Generation = 0; ///< one more per loop
+  int Helpers = 0;                   ///< workers taking part in the current loop
+  int Running = 0;                   ///< of them, those not finished yet
+  const RangeBody* Body = nullptr;
+  vtkIdType N = 0, Grain = 1;
+  std::atomic<vtkIdType> Next{ 0 }; ///< first index of the next unclaimed range
+  std::mutex ErrorLock;
+  std::exception_ptr Error; ///< the first exception thrown by a range
+};
+
+std::mutex poolCreation;
+ThreadPool* pool = nullptr;
+
+/// The pool, created on first use. A process forked from one with a pool starts a new one:
+/// the parent's workers do not exist in the child (the old pool is abandoned, never touched).
+ThreadPool& Pool()
+{
+  static const bool registered = []()
+  {
+    pthread_atfork([]() { poolCreation.lock(); },
+      []() { poolCreation.unlock(); },
+      []()
+      {
+        pool = nullptr;
+        poolCreation.unlock();
+      });
+    return true;
+  }();
+  (void)registered;
+  std::lock_guard<std::mutex> lock(poolCreation);
+  if (!pool)
+    pool = new ThreadPool();
+  return *pool;
+}
+}
+
+bool InsideParallelLoop()
+{
+  return insideLoop;
+}
+
+void ParallelForRanges(vtkIdType n, vtkIdType grain, const RangeBody& body)
+{
+  if (n <= 0)
+    return;
+  const int threads = vtkSMPTools::GetEstimatedNumberOfThreads();
+  if (grain <= 0)
+    grain = std::max<vtkIdType>(1, n / (4 * std::max(1, threads)));
+  if (insideLoop || threads <= 1 || grain >= n)
+  {
+    body(0, n);
+    return;
+  }
+  const char* backend = vtkSMPTools::GetBackend();
+  if (backend && std::strcmp(backend, "STDThread") == 0)
+  {
+    if (!Pool().Run(threads, n, grain, body))
+      body(0, n);
+    return;
+  }
+  if (backend && std::strcmp(backend, "Sequential") == 0)
+  {
+    body(0, n);
+    return;
+  }
+  vtkSMPTools::For(0,
+    n,
+    grain,
+    [&](vtkIdType begin, vtkIdType end)
+    {
+      InsideLoopScope inside;
+      body(begin, end);
+    });
+}
+}

@@ -1,0 +1,38 @@
+// A parallel loop over index ranges on vtkSMPTools' threads, without VTK 9.2's cost per loop.
+#ifndef foldingmeshes_ParallelFor_h
+#define foldingmeshes_ParallelFor_h
+
+#include <vtkType.h>
+
+#include <functional>
+
+namespace foldingmeshes
+{
+/// body(begin, end) over consecutive ranges covering [0, n) once.
+using RangeBody = std::function<void(vtkIdType, vtkIdType)>;
+
+/**
+ * Calls body(begin, end) for ranges that together cover [0, n) exactly once: in parallel,
+ * ranges of at most `grain` indices (grain <= 0: about a quarter of an equal share per
+ * thread); serially (one thread, the Sequential backend, grain >= n, nested), one range.
+ *
+ * The thread count and the backend are vtkSMPTools' (vtkSMPTools::Initialize,
+ * VTK_SMP_MAX_THREADS, VTK_SMP_BACKEND_IN_USE). With the STDThread backend the ranges run on a
+ * pool of threads kept between loops, the calling thread taking part: VTK 9.2's STDThread
+ * backend starts and joins a new pool for every vtkSMPTools::For (about 0.13 ms with two
+ * threads, measured; hundreds of loops per folding tree). Other parallel backends (TBB,
+ * OpenMP) keep their own threads: the loop is a vtkSMPTools::For there; Sequential runs one
+ * range.
+ *
+ * Loops started inside a range (nested), or while another thread's loop occupies the pool,
+ * run serially on the calling thread as one range. Which thread runs a range is not fixed:
+ * bodies must write disjoint results per index (no per-thread state) for results that do not
+ * depend on the thread count.
+ */
+void ParallelForRanges(vtkIdType n, vtkIdType grain, const RangeBody& body);
+
+/// True on a thread while it runs a range of ParallelForRanges (or a task of RunTasksInParallel).
+bool InsideParallelLoop();
+}
+
+#endif

@@ -1,0 +1,213 @@
+// ParallelForRanges (the loops of the core on vtkSMPTools' threads, with a pool kept between
+// loops under the STDThread backend) and RunTasksInParallel / ForRanges on top of it:
+// - every index of [0, n) is covered exactly once, in ranges of at most `grain` (or one serial
+//   range), for the
+//   Sequential and STDThread backends and 1, 2 and 3 threads; with 2 threads and many ranges
+//   both threads take part;
+// - a loop started inside a range (nested) runs serially, as one range, on that thread;
+//   every task of RunTasksInParallel runs once, and ForRanges inside a task is one range;
+// - loops started at the same time from several threads all complete (one gets the pool, the
+//   others run serially) and cover their indices once;
+// - an exception thrown by a range reaches the caller, and the pool works afterwards;
+// - a process forked after the pool started (its workers do not exist in the child) still
+//   runs loops, in parallel, to the end;
+// - the thread count follows vtkSMPTools::Initialize between loops.
+#include "CoreTestUtilities.h"
+#include "ParallelTasks.h"
+
+#include <vtkSMPTools.h>
+
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <atomic>
+#include <mutex>
+#include <set>
+#include <stdexcept>
+#include <thread>
+#include <vector>
+
+namespace
+{
+using foldingmeshes::ParallelForRanges;
+
+/// Runs one loop; true when [0, n) was covered exactly once, in ranges of at most grain or in
+/// one serial range.
+/// `threadsSeen`: how many distinct threads ran ranges.
+bool CoversOnce(vtkIdType n, vtkIdType grain, size_t* threadsSeen = nullptr)
+{
+  std::vector<std::atomic<int>> hits(static_cast<size_t>(n));
+  std::atomic<bool> tooLong{ false };
+  std::mutex lock;
+  std::set<std::thread::id> threads;
+  ParallelForRanges(n,
+    grain,
+    [&](vtkIdType begin, vtkIdType end)
+    {
+      if (grain > 0 && end - begin > grain && !(begin == 0 && end == n))
+        tooLong = true;
+      for (vtkIdType k = begin; k < end; ++k)
+        ++hits[static_cast<size_t>(k)];
+      // Enough work per range that a parked worker wakes up before the caller is done.
+      volatile double x = 0.0;
+      for (int i = 0; i < 20000; ++i)
+        x = x + 1e-9 * i;
+      std::lock_guard<std::mutex> guard(lock);
+      threads.insert(std::this_thread::get_id());
+    });
+  if (threadsSeen)
+    *threadsSeen = threads.size();
+  bool once = !tooLong;
+  for (const auto& h : hits)
+    once = once && h == 1;
+  return once;
+}
+
+void CheckCoverage()
+{
+  for (const char* backend : { "Sequential", "STDThread" })
+    for (int threads : { 1, 2, 3 })
+    {
+      vtkSMPTools::SetBackend(backend);
+      vtkSMPTools::Initialize(threads);
+      for (vtkIdType n : { 1, 2, 7, 64, 1000, 4099 })
+        for (vtkIdType grain : { 0, 1, 16, 5000 })
+          EXPECT(CoversOnce(n, grain),
+            backend << ", " << threads << " threads: n " << n << " grain " << grain
+                    << " not covered exactly once in ranges of at most the grain");
+    }
+  vtkSMPTools::SetBackend("STDThread");
+  vtkSMPTools::Initialize(2);
+  size_t seen = 0;
+  bool both = false;
+  for (int attempt = 0; attempt < 20 && !both; ++attempt)
+  {
+    EXPECT(CoversOnce(400, 1, &seen), "400 ranges, 2 threads: not covered once");
+    both = seen == 2;
+  }
+  EXPECT(both, "2 threads, 400 ranges: only " << seen << " thread(s) ran ranges");
+  vtkSMPTools::Initialize(1);
+  EXPECT(CoversOnce(400, 1, &seen) && seen == 1,
+    "after Initialize(1): " << seen << " threads ran ranges");
+}
+
+void CheckNesting()
+{
+  vtkSMPTools::SetBackend("STDThread");
+  vtkSMPTools::Initialize(2);
+  std::atomic<int> innerCalls{ 0 }, innerWhole{ 0 }, sameThread{ 0 }, outerRanges{ 0 };
+  ParallelForRanges(64,
+    4,
+    [&](vtkIdType, vtkIdType)
+    {
+      ++outerRanges;
+      const std::thread::id outer = std::this_thread::get_id();
+      EXPECT(foldingmeshes::InsideParallelLoop(), "a range does not know it runs inside a loop");
+      ParallelForRanges(1000,
+        16,
+        [&](vtkIdType begin, vtkIdType end)
+        {
+          ++innerCalls;
+          innerWhole += begin == 0 && end == 1000;
+          sameThread += std::this_thread::get_id() == outer;
+        });
+    });
+  EXPECT(outerRanges == 16 && innerCalls == 16 && innerWhole == 16 && sameThread == 16,
+    "nested loops: " << innerCalls << " inner calls for " << outerRanges
+                     << " outer ranges, not one whole serial range each");
+  EXPECT(!foldingmeshes::InsideParallelLoop(), "the flag stays set after a loop");
+
+  std::vector<std::atomic<int>> runs(37);
+  std::atomic<int> taskInnerCalls{ 0 }, taskInnerWhole{ 0 };
+  foldingmeshes::RunTasksInParallel(runs.size(),
+    [&](size_t i)
+    {
+      ++runs[i];
+      foldingmeshes::ForRanges(1000,
+        16,
+        [&](vtkIdType begin, vtkIdType end)
+        {
+          ++taskInnerCalls;
+          taskInnerWhole += begin == 0 && end == 1000;
+        });
+    });
+  bool once = true;
+  for (const auto& r : runs)
+    once = once && r == 1;
+  EXPECT(once, "every task runs exactly once");
+  EXPECT(taskInnerCalls == 37 && taskInnerWhole == 37,
+    "loops inside a task run serially, in one range");
+}
+
+void CheckConcurrentCallers()
+{
+  vtkSMPTools::SetBackend("STDThread");
+  vtkSMPTools::Initialize(2);
+  std::atomic<int> good{ 0 };
+  std::vector<std::thread> callers;
+  for (int c = 0; c < 4; ++c)
+    callers.emplace_back(
+      [&]()
+      {
+        for (int k = 0; k < 25; ++k)
+          good += CoversOnce(300, 8);
+      });
+  for (auto& t : callers)
+    t.join();
+  EXPECT(good == 100, "concurrent loops from 4 threads: " << good << " of 100 covered once");
+}
+
+void CheckException()
+{
+  vtkSMPTools::SetBackend("STDThread");
+  vtkSMPTools::Initialize(2);
+  bool caught = false;
+  try
+  {
+    ParallelForRanges(1000,
+      10,
+      [](vtkIdType begin, vtkIdType)
+      {
+        if (begin == 500)
+          throw std::runtime_error("range 500");
+      });
+  }
+  catch (const std::runtime_error& e)
+  {
+    caught = std::string(e.what()) == "range 500";
+  }
+  EXPECT(caught, "an exception thrown by a range does not reach the caller");
+  EXPECT(CoversOnce(1000, 10), "the pool does not work after an exception");
+}
+
+void CheckFork()
+{
+  vtkSMPTools::SetBackend("STDThread");
+  vtkSMPTools::Initialize(2);
+  EXPECT(CoversOnce(200, 1), "before the fork: not covered once"); // the pool exists now
+  const pid_t child = fork();
+  if (child == 0)
+  {
+    size_t seen = 0;
+    bool ok = CoversOnce(400, 1, &seen);
+    for (int attempt = 0; attempt < 20 && ok && seen < 2; ++attempt)
+      ok = CoversOnce(400, 1, &seen);
+    _exit(ok && seen == 2 ? 0 : 1);
+  }
+  int status = -1;
+  EXPECT(child > 0 && waitpid(child, &status, 0) == child, "fork/waitpid failed");
+  EXPECT(WIFEXITED(status) && WEXITSTATUS(status) == 0,
+    "a forked child could not run a parallel loop (status " << status << ")");
+}
+}
+
+int main()
+{
+  CheckCoverage();
+  CheckNesting();
+  CheckConcurrentCallers();
+  CheckException();
+  CheckFork();
+  vtkSMPTools::SetBackend("Sequential");
+  return coretest::Finish("TestParallelFor");
+}
