@@ -10,6 +10,7 @@
 #include <cstring>
 #include <exception>
 #include <mutex>
+#include <system_error>
 #include <thread>
 #include <vector>
 
@@ -31,41 +32,57 @@ struct InsideLoopScope
 
 /**
  * Worker threads parked between loops. One loop at a time: the calling thread claims ranges
- * too, the workers asked to take part claim the rest, and the caller returns when all of
- * them are done. The pool is never destroyed (its parked threads end with the process), so
+ * too, the workers asked to take part claim the rest while the loop is open, and the caller,
+ * once every range is claimed, closes the loop and returns when the workers that joined are
+ * done. The pool is never destroyed (its parked threads end with the process), so
  * no static destructor has to join threads during exit or a plugin's unloading.
  */
 class ThreadPool
 {
 public:
-  /// False, without running anything, when another thread's loop occupies the pool.
+  /// False, without running anything, when another thread's loop occupies the pool or no
+  /// worker thread could be started.
   bool Run(int threads, vtkIdType n, vtkIdType grain, const RangeBody& body)
   {
     std::unique_lock<std::mutex> busy(this->Busy, std::try_to_lock);
     if (!busy.owns_lock())
       return false;
     const vtkIdType ranges = (n + grain - 1) / grain;
-    const int helpers = static_cast<int>(std::min<vtkIdType>(threads - 1, ranges - 1));
+    int helpers = static_cast<int>(std::min<vtkIdType>(threads - 1, ranges - 1));
     {
       std::lock_guard<std::mutex> lock(this->Lock);
-      while (static_cast<int>(this->Workers.size()) < helpers)
+      try
       {
-        const int index = static_cast<int>(this->Workers.size());
-        this->Workers.emplace_back([this, index]() { this->Work(index); });
+        while (static_cast<int>(this->Workers.size()) < helpers)
+        {
+          const int index = static_cast<int>(this->Workers.size());
+          this->Workers.emplace_back([this, index]() { this->Work(index); });
+        }
       }
+      catch (const std::system_error&)
+      {
+        // No more threads (a process or system limit): the ones there are.
+        helpers = static_cast<int>(this->Workers.size());
+      }
+      if (helpers < 1)
+        return false;
       this->Body = &body;
       this->N = n;
       this->Grain = grain;
       this->Next = 0;
       this->Error = nullptr;
       this->Helpers = helpers;
-      this->Running = helpers;
+      this->Open = true;
+      this->Active = 0;
       ++this->Generation;
     }
     this->Wake.notify_all();
     this->RunRanges();
+    // Every range is claimed now: workers that have not joined yet need not (under load they
+    // may wake much later); wait only for those that did.
     std::unique_lock<std::mutex> lock(this->Lock);
-    this->Finished.wait(lock, [this]() { return this->Running == 0; });
+    this->Open = false;
+    this->Finished.wait(lock, [this]() { return this->Active == 0; });
     this->Body = nullptr;
     std::exception_ptr error = this->Error;
     this->Error = nullptr;
@@ -84,12 +101,13 @@ private:
     {
       this->Wake.wait(lock, [&]() { return this->Generation != seen; });
       seen = this->Generation;
-      if (index >= this->Helpers)
+      if (index >= this->Helpers || !this->Open)
         continue;
+      ++this->Active;
       lock.unlock();
       this->RunRanges();
       lock.lock();
-      if (--this->Running == 0)
+      if (--this->Active == 0 && !this->Open)
         this->Finished.notify_one();
     }
   }
@@ -122,8 +140,9 @@ private:
   std::condition_variable Wake, Finished;
   std::vector<std::thread> Workers;
   unsigned long long Generation = 0; ///< one more per loop
-  int Helpers = 0;                   ///< workers taking part in the current loop
-  int Running = 0;                   ///< of them, those not finished yet
+  int Helpers = 0;                   ///< workers that may take part in the current loop
+  bool Open = false;                 ///< workers may still join the current loop
+  int Active = 0;                    ///< workers that joined it and have not finished
   const RangeBody* Body = nullptr;
   vtkIdType N = 0, Grain = 1;
   std::atomic<vtkIdType> Next{ 0 }; ///< first index of the next unclaimed range

@@ -25,13 +25,17 @@ using RangeBody = std::function<void(vtkIdType, vtkIdType)>;
  * range.
  *
  * Loops started inside a range (nested), or while another thread's loop occupies the pool,
- * run serially on the calling thread as one range. Which thread runs a range is not fixed:
- * bodies must write disjoint results per index (no per-thread state) for results that do not
- * depend on the thread count.
+ * or when no worker thread can be started, run serially on the calling thread as one range.
+ * Which thread runs a range is not fixed: bodies must write disjoint results per index (no
+ * per-thread state) for results that do not depend on the thread count. An exception thrown
+ * by a range reaches the caller (the first one; the other threads stop after their current
+ * range). A process forked outside a loop gets a pool of its own; one forked inside a range
+ * must exec (or exit) without returning from it.
  */
 void ParallelForRanges(vtkIdType n, vtkIdType grain, const RangeBody& body);
 
-/// True on a thread while it runs a range of ParallelForRanges (or a task of RunTasksInParallel).
+/// True on a thread while it runs a range of a parallel ParallelForRanges (so also a task of a
+/// parallel RunTasksInParallel); not in the serial cases above.
 bool InsideParallelLoop();
 }
 

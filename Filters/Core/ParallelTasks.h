@@ -12,8 +12,9 @@ namespace foldingmeshes
 /**
  * task(i) for every i in [0, n), in parallel (ParallelForRanges, one task at a time per
  * thread). Tasks must touch disjoint state; the results are then those of a serial loop,
- * for any thread count. Loops inside a task (ForRanges, ParallelForRanges) run serially:
- * the tasks are the parallelism there.
+ * for any thread count. Loops inside tasks that run in parallel (ForRanges,
+ * ParallelForRanges) run serially: the tasks are the parallelism there (a single task, or
+ * tasks run one after the other, may use parallel loops).
  */
 template <typename Task>
 void RunTasksInParallel(std::size_t n, const Task& task)
