@@ -166,7 +166,9 @@ public:
    * half's density where the discarded half was coarser. Interior vertices of the copy are
    * removed and their 1-rings re-triangulated as for RemoveProjectedPoints, each move
    * bounded by the point's error budget; the kept half, seams and fold lines stay as they
-   * are (UnfoldOptions::matchDiscardedDensity). Reported in the field data
+   * are (UnfoldOptions::matchDiscardedDensity). A folding root's copy is thinned once more
+   * after the final repair (CloseHoles), where seam gaps it closed had kept points of the copy
+   * on open edges, never below the input's point count. Reported in the field data
    * ("ThinnedCopyPoints", and "FoldExcessFaces": faces the folds' results still have above
    * their regions' counts).
    */

@@ -3,6 +3,7 @@
 #include "FoldingTreeUnfolderInternal.h"
 
 #include <algorithm>
+#include <cstdlib>
 #include <array>
 #include <cmath>
 #include <limits>
@@ -196,7 +197,10 @@ void Unfolder::Reflect(const FoldingNode& node, Piece& piece)
     this->Result.removedProjectedPoints += this->RemoveProjectedPoints(&node, piece, nullptr);
   if (this->Options.matchDiscardedDensity)
     this->Result.thinnedCopyPoints += this->MatchDiscardedDensity(node, piece);
-  this->Result.foldExcessFaces += std::max(0, FoldExcessFaces(node, piece));
+  const int excess = std::max(0, FoldExcessFaces(node, piece));
+  this->Result.foldExcessFaces += excess;
+  if (node.parent < 0)
+    this->RootFoldExcess = excess;
 }
 
 void Unfolder::CountTears(const FoldingNode& node, Piece& piece, SeamReport& seam)
@@ -275,6 +279,16 @@ bool UnfoldFoldingTree(const FoldingTree& tree,
   if (!unfolder.Aborted && options.removeProjectedPoints)
     result.removedProjectedPoints +=
       unfolder.RemoveProjectedPoints(nullptr, piece, &result.pointAdded);
+  // A folding root's copy once more, now that the repair closed the seam gaps on which some
+  // of its points lay (they were on open edges at the fold).
+  if (!unfolder.Aborted && options.matchDiscardedDensity &&
+    tree.nodes[0].kind == FoldingNodeKind::Folding)
+  {
+    result.thinnedCopyPoints += unfolder.MatchDiscardedDensity(
+      tree.nodes[0], piece, &result.pointAdded, tree.numberOfOriginalPoints);
+    result.foldExcessFaces += std::max(0, Unfolder::FoldExcessFaces(tree.nodes[0], piece)) -
+      unfolder.RootFoldExcess;
+  }
   result.projectedPoints = static_cast<int>(piece.projected.size()) -
     static_cast<int>(std::count(piece.projected.begin(), piece.projected.end(), char(0)));
   result.aborted = unfolder.Aborted;

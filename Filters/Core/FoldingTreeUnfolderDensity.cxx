@@ -52,7 +52,10 @@ int Unfolder::FoldExcessFaces(const FoldingNode& node, const Piece& piece)
   return piece.NumberOfFaces() - 2 * pending - node.numberOfFaces;
 }
 
-int Unfolder::MatchDiscardedDensity(const FoldingNode& node, Piece& piece)
+int Unfolder::MatchDiscardedDensity(const FoldingNode& node,
+  Piece& piece,
+  std::vector<char>* added,
+  int pointFloor)
 {
   int excess = FoldExcessFaces(node, piece);
   const bool debug = std::getenv("FOLDINGMESHES_DENSITY_DEBUG") != nullptr;
@@ -162,8 +165,16 @@ int Unfolder::MatchDiscardedDensity(const FoldingNode& node, Piece& piece)
   for (int v = 0; v < n; ++v)
     if (candidate[v])
       queue.push({ StarArea(piece, remover, v) / meanArea, v, 0 });
+  int usedPoints = 0;
+  {
+    std::vector<char> used(n, 0);
+    for (const Triangle& t : piece.triangles)
+      for (int v : t)
+        used[v] = 1;
+    usedPoints = static_cast<int>(std::count(used.begin(), used.end(), char(1)));
+  }
   std::vector<int> ring;
-  while (!queue.empty() && excess >= 2)
+  while (!queue.empty() && excess >= 2 && usedPoints > pointFloor)
   {
     const Entry top = queue.top();
     queue.pop();
@@ -179,6 +190,7 @@ int Unfolder::MatchDiscardedDensity(const FoldingNode& node, Piece& piece)
     }
     remover.Apply(removal);
     excess -= 2;
+    --usedPoints;
     ring = removal.ring;
     for (int a : ring)
       if (candidate[a])
@@ -186,10 +198,20 @@ int Unfolder::MatchDiscardedDensity(const FoldingNode& node, Piece& piece)
   }
   if (debug)
     std::printf(": removed %d points, %d faces above S left\n", remover.Count(), excess);
-  const int removed = remover.Compact(&unknown);
-  for (size_t v = 0; v < unknown.size(); ++v)
-    if (unknown[v])
+  // Bit 0: the budget was unknown; bit 1: the point is flagged in `added`.
+  std::vector<char> flags(n, 0);
+  for (int v = 0; v < n; ++v)
+    flags[v] = static_cast<char>(unknown[v] | (added && (*added)[v] ? 2 : 0));
+  const int removed = remover.Compact(&flags);
+  if (added)
+    added->resize(flags.size());
+  for (size_t v = 0; v < flags.size(); ++v)
+  {
+    if (flags[v] & 1)
       piece.budget[v] = std::numeric_limits<double>::infinity();
+    if (added)
+      (*added)[v] = (flags[v] & 2) ? 1 : 0;
+  }
   return removed;
 }
 } // namespace unfolder_detail

@@ -199,6 +199,8 @@ public:
   }
 
   bool Aborted = false;
+  /// The excess of a folding root after its thinning in the traversal (foldExcessFaces).
+  int RootFoldExcess = 0;
 
   Piece Unfold(int index);
 
@@ -221,7 +223,14 @@ public:
   // FoldingTreeUnfolderDensity.cxx
   /// Thins the mirrored copy made at `node` (UnfoldOptions::matchDiscardedDensity) towards
   /// the face count of the node's region; returns the number of points removed.
-  int MatchDiscardedDensity(const FoldingNode& node, Piece& piece);
+  /// Thins the copy mirrored at `node` towards the node's face count (the comment in
+  /// FoldingTreeUnfolderDensity.cxx); `added`, when given, is a per-point flag kept in step
+  /// with the points; with `pointFloor` >= 0 it also stops before the points used by faces
+  /// drop below that number.
+  int MatchDiscardedDensity(const FoldingNode& node,
+    Piece& piece,
+    std::vector<char>* added = nullptr,
+    int pointFloor = -1);
   /// The faces of the result of `node` (after its reflection) above its region's count,
   /// less two per projected point still to be removed later (UnfoldedMesh::foldExcessFaces).
   static int FoldExcessFaces(const FoldingNode& node, const Piece& piece);

@@ -190,13 +190,13 @@ void TestMatchDiscardedDensity()
   std::printf("full candidate search: %d folds\n", searched.NumberOfFolds());
   Check("full candidate search, thinned", m, coretest::Unfold(searched), diagonal, 0.05, -1.0);
 
-  // Default options (the sampled candidate search above 1000 faces): 7 folds, +9.6%: the
-  // thinning at the root stops short where its copy's points lie on seam gaps that only the
-  // final repair closes (README, Limitations: vertex count).
+  // Default options (the sampled candidate search above 1000 faces): 7 folds. The thinning at
+  // the root stops short where its copy's points lie on seam gaps that only the final repair
+  // closes (+9.6% points); the root's thinning once more after the repair brings it to +0.7%.
   const FoldingTree full = Fold(m, 0.02 * diagonal);
   const UnfoldedMesh fullThinned = coretest::Unfold(full), fullKept = coretest::Unfold(full, keep);
   std::printf("default options: %d folds\n", full.NumberOfFolds());
-  Check("default options, thinned", m, fullThinned, diagonal, 0.12, -1.0);
+  Check("default options, thinned", m, fullThinned, diagonal, 0.05, -1.0);
   Check("default options, kept dense", m, fullKept, diagonal, 1.0, 0.2);
 
   // Deterministic: trees built on one and on two threads, unfolded twice.
