@@ -197,10 +197,7 @@ void Unfolder::Reflect(const FoldingNode& node, Piece& piece)
     this->Result.removedProjectedPoints += this->RemoveProjectedPoints(&node, piece, nullptr);
   if (this->Options.matchDiscardedDensity)
     this->Result.thinnedCopyPoints += this->MatchDiscardedDensity(node, piece);
-  const int excess = std::max(0, FoldExcessFaces(node, piece));
-  this->Result.foldExcessFaces += excess;
-  if (node.parent < 0)
-    this->RootFoldExcess = excess;
+  this->Result.foldExcessFaces += std::max(0, FoldExcessFaces(node, piece));
 }
 
 void Unfolder::CountTears(const FoldingNode& node, Piece& piece, SeamReport& seam)
@@ -279,16 +276,13 @@ bool UnfoldFoldingTree(const FoldingTree& tree,
   if (!unfolder.Aborted && options.removeProjectedPoints)
     result.removedProjectedPoints +=
       unfolder.RemoveProjectedPoints(nullptr, piece, &result.pointAdded);
-  // A folding root's copy once more, now that the repair closed the seam gaps on which some
-  // of its points lay (they were on open edges at the fold).
+  // A folding root's copy once more, towards the root's face count, which the seams and the
+  // repair's fills raise (and copy points on seam gaps that only the repair closed were on
+  // open edges at the fold); never below the input's point count.
   if (!unfolder.Aborted && options.matchDiscardedDensity &&
-    tree.nodes[0].kind == FoldingNodeKind::Folding)
-  {
+    tree.nodes[0].kind == FoldingNodeKind::Folding && tree.numberOfOriginalPoints > 0)
     result.thinnedCopyPoints += unfolder.MatchDiscardedDensity(
       tree.nodes[0], piece, &result.pointAdded, tree.numberOfOriginalPoints);
-    result.foldExcessFaces += std::max(0, Unfolder::FoldExcessFaces(tree.nodes[0], piece)) -
-      unfolder.RootFoldExcess;
-  }
   result.projectedPoints = static_cast<int>(piece.projected.size()) -
     static_cast<int>(std::count(piece.projected.begin(), piece.projected.end(), char(0)));
   result.aborted = unfolder.Aborted;

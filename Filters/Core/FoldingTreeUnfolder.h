@@ -97,11 +97,13 @@ struct UnfoldOptions
    * surface move relative to the limit; index order on ties; a priority queue in which the
    * ring of a removed vertex is re-queued and each vertex is measured again when it comes
    * first. Deterministic (serial). When the root is a folding node, its copy is thinned once
-   * more after the final repair (closeHoles) and the last removal of projected points: points
-   * of the copy on seam gaps that only the repair closed were on open edges at the fold
-   * (a blob whose halves are tessellated 1.3 times apart: +9.6% points -> +0.7%); that pass
-   * also stops before the points used by faces drop below the input's count (fill faces
-   * count as faces, not points). See UnfoldedMesh::thinnedCopyPoints and foldExcessFaces.
+   * more after the final repair (closeHoles) and the last removal of projected points,
+   * towards the root's face count, which seams and the repair's fills elsewhere raise, and
+   * where points of the copy on seam gaps that only the repair closed were on open edges at
+   * the fold (a blob whose halves are tessellated 1.3 times apart: +9.6% points -> +0.7%);
+   * that pass stops before the points used by faces drop below the input's point count, and
+   * where a budget is unknown it only re-triangulates planar stars. See
+   * UnfoldedMesh::thinnedCopyPoints and foldExcessFaces.
    */
   bool matchDiscardedDensity = true;
   /**
@@ -244,9 +246,10 @@ struct UnfoldedMesh
   int projectedPoints = 0;
   /// Vertices removed from mirrored copies (UnfoldOptions::matchDiscardedDensity), and the
   /// faces the folding nodes' results still had above their regions' face counts after it
-  /// (less two per projected point still to be removed; summed over the folding nodes, a
-  /// folding root's after its pass that follows the repair; with the thinning off, the excess
-  /// it would have removed).
+  /// (less two per projected point still to be removed; summed over the folding nodes, as
+  /// left by the thinning in the traversal: a folding root's second pass after the repair is
+  /// counted in thinnedCopyPoints only; with the thinning off, the excess it would have
+  /// removed).
   int thinnedCopyPoints = 0;
   int foldExcessFaces = 0;
   std::vector<SeamReport> seams; ///< one per segmentation node (postorder)

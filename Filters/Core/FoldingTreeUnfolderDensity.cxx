@@ -57,7 +57,10 @@ int Unfolder::MatchDiscardedDensity(const FoldingNode& node,
   std::vector<char>* added,
   int pointFloor)
 {
-  int excess = FoldExcessFaces(node, piece);
+  // The pass after the final repair (pointFloor >= 0): no projected point is removed later,
+  // so none counts as pending.
+  const bool finalPass = pointFloor >= 0;
+  int excess = finalPass ? piece.NumberOfFaces() - node.numberOfFaces : FoldExcessFaces(node, piece);
   const bool debug = std::getenv("FOLDINGMESHES_DENSITY_DEBUG") != nullptr;
   if (debug)
     std::printf("[density] fold at depth %d: S %d faces (%d discarded), result %d faces, %d "
@@ -99,9 +102,10 @@ int Unfolder::MatchDiscardedDensity(const FoldingNode& node,
         return false;
     return true;
   };
+  // Points the final repair added (fan centres) are not the copy's.
   std::vector<char> candidate(n, 0);
   for (int v = 0; v < n; ++v)
-    candidate[v] = !fixed[v] && !piece.projected[v] && isFree(v);
+    candidate[v] = !fixed[v] && !piece.projected[v] && isFree(v) && !(added && (*added)[v]);
 
   VertexRemover remover(piece, tolerance);
   RingRules rules;
@@ -148,13 +152,14 @@ int Unfolder::MatchDiscardedDensity(const FoldingNode& node,
   };
   // Without budgets (respectErrorBudget off, older trees) the node's epsilon is the budget of
   // every point for this thinning, so that removals next to each other cannot add up beyond
-  // it; the points keep no budget afterwards.
+  // it; the points keep no budget afterwards. The final pass grants nothing there (the fold's
+  // thinning in the traversal had the epsilon already): only planar stars qualify.
   std::vector<char> unknown(n, 0);
   for (int v = 0; v < n; ++v)
     if (!std::isfinite(piece.budget[v]))
     {
       unknown[v] = 1;
-      piece.budget[v] = node.epsilon;
+      piece.budget[v] = finalPass ? 0.0 : node.epsilon;
     }
   // (cost, point, version): entries of points whose star changed since are stale. A point
   // enters with its area term alone, a lower bound of its cost: it is measured when it comes

@@ -199,8 +199,6 @@ public:
   }
 
   bool Aborted = false;
-  /// The excess of a folding root after its thinning in the traversal (foldExcessFaces).
-  int RootFoldExcess = 0;
 
   Piece Unfold(int index);
 
@@ -224,9 +222,10 @@ public:
   /// Thins the mirrored copy made at `node` (UnfoldOptions::matchDiscardedDensity) towards
   /// the face count of the node's region; returns the number of points removed.
   /// Thins the copy mirrored at `node` towards the node's face count (the comment in
-  /// FoldingTreeUnfolderDensity.cxx); `added`, when given, is a per-point flag kept in step
-  /// with the points; with `pointFloor` >= 0 it also stops before the points used by faces
-  /// drop below that number.
+  /// FoldingTreeUnfolderDensity.cxx). The final pass (after the repair; `pointFloor` >= 0)
+  /// counts no projected point as pending, stops before the points used by faces drop below
+  /// `pointFloor`, grants no budget where it is unknown and leaves the points flagged in
+  /// `added` (kept in step with the points) alone.
   int MatchDiscardedDensity(const FoldingNode& node,
     Piece& piece,
     std::vector<char>* added = nullptr,
