@@ -58,9 +58,12 @@ int Unfolder::MatchDiscardedDensity(const FoldingNode& node,
   int pointFloor)
 {
   // The pass after the final repair (pointFloor >= 0): no projected point is removed later,
-  // so none counts as pending.
+  // so those left count as pending only where they are kept on purpose (removeProjectedPoints
+  // off: not made up for by thinning the copy).
   const bool finalPass = pointFloor >= 0;
-  int excess = finalPass ? piece.NumberOfFaces() - node.numberOfFaces : FoldExcessFaces(node, piece);
+  int excess = finalPass && this->Options.removeProjectedPoints
+    ? piece.NumberOfFaces() - node.numberOfFaces
+    : FoldExcessFaces(node, piece);
   const bool debug = std::getenv("FOLDINGMESHES_DENSITY_DEBUG") != nullptr;
   if (debug)
     std::printf("[density] fold at depth %d: S %d faces (%d discarded), result %d faces, %d "

@@ -223,7 +223,7 @@ public:
   /// the face count of the node's region; returns the number of points removed.
   /// Thins the copy mirrored at `node` towards the node's face count (the comment in
   /// FoldingTreeUnfolderDensity.cxx). The final pass (after the repair; `pointFloor` >= 0)
-  /// counts no projected point as pending, stops before the points used by faces drop below
+  /// counts no projected point as pending (unless removeProjectedPoints is off), stops before the points used by faces drop below
   /// `pointFloor`, grants no budget where it is unknown and leaves the points flagged in
   /// `added` (kept in step with the points) alone.
   int MatchDiscardedDensity(const FoldingNode& node,
