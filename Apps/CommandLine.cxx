@@ -1,5 +1,7 @@
 #include "CommandLine.h"
 
+#include <stdexcept>
+
 #include <cstdlib>
 #include <sstream>
 
@@ -7,6 +9,15 @@ namespace foldingmeshes
 {
 namespace cli
 {
+int ParseUpAxis(const std::string& value)
+{
+  if (value == "auto")
+    return -1;
+  if (value == "x" || value == "y" || value == "z")
+    return value[0] - 'x';
+  throw std::runtime_error("--up must be auto, x, y or z, got '" + value + "'");
+}
+
 const char* const Usage = R"(usage: foldingmeshes detect MESH [options]
        foldingmeshes fold MESH [fold options]
        foldingmeshes unfold TREE.vtm [unfold options]
@@ -30,6 +41,8 @@ connected region that has it (Folding meshes, SGP 2006, section 3).
   --output FILE            labelled mesh (default: MESH stem + "_symmetry.vtp" in --outdir)
   --plane-output FILE      plane glyph (default: MESH stem + "_plane.vtp" in --outdir)
   --picture FILE           PNG picture (default: MESH stem + "_symmetry.png" in --outdir)
+  --up auto|x|y|z          the picture's up axis (default auto: the longest axis lying in the
+                           plane; files differ in which axis is up)
   --outdir DIR             folder for default outputs (default: current folder)
   --no-files               write nothing, only print
   --json                   print the result as JSON
@@ -54,6 +67,8 @@ original and stored faces, compression, tree height, folds, leaves and time.
                            copy (default 1000; 0: every region; a huge N: the full search)
   --keep-projected-points  (roundtrip only) as for unfold
   --keep-copy-density      (roundtrip only) as for unfold
+  --up auto|x|y|z          the picture's up axis (default auto: +Y, +Z when Y is the thinnest
+                           extent)
   --outdir DIR             folder for the outputs (default: current folder)
   --json                   print the result as JSON
   --quiet                  no progress on stderr
@@ -75,6 +90,7 @@ projected points removed and left, points removed from mirrored copies, and stit
                            keeps the denser half, whose mirror image would double it)
   --original MESH          also measure the distance to MESH (the folded input): Hausdorff
                            and mean distance, also as fractions of its diagonal (-1 without)
+  --up auto|x|y|z          the picture's up axis, as for fold
   --outdir DIR             folder for the outputs (default: current folder)
   --json, --quiet          as for fold
 

@@ -15,6 +15,10 @@ namespace cli
 /// The --help text of all commands.
 extern const char* const Usage;
 
+/// The value of --up: -1 for "auto", 0, 1, 2 for "x", "y", "z"; throws std::runtime_error on
+/// anything else.
+int ParseUpAxis(const std::string& value);
+
 /// Collects the text of VTK ErrorEvents (without the file/line prefix).
 struct ErrorCollector
 {

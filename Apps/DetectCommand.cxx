@@ -27,6 +27,7 @@ namespace cli
 int Detect(int argc, char* argv[])
 {
   std::string meshPath, output, planeOutput, picture, outdir = ".";
+  int upAxis = -1;
   bool json = false, quiet = false, noFiles = false;
   vtkNew<vtkSymmetryPlaneDetector> detector;
   for (int i = 0; i < argc; ++i)
@@ -89,6 +90,8 @@ int Detect(int argc, char* argv[])
       planeOutput = value("--plane-output");
     else if (arg == "--picture")
       picture = value("--picture");
+    else if (arg == "--up")
+      upAxis = ParseUpAxis(value("--up"));
     else if (arg == "--outdir")
       outdir = value("--outdir");
     else if (arg == "--no-files")
@@ -169,7 +172,7 @@ int Detect(int argc, char* argv[])
     else
     {
       auto window =
-        foldingmeshes::MakeSymmetryScene(detector->GetOutput(0), detector->GetOutput(1), 800, 600);
+        foldingmeshes::MakeSymmetryScene(detector->GetOutput(0), detector->GetOutput(1), 800, 600, upAxis);
       if (!foldingmeshes::WritePicture(window, picture, error))
       {
         std::cerr << "foldingmeshes: " << error << "\n";

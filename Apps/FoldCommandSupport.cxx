@@ -109,6 +109,8 @@ FoldSettings ParseFoldArguments(int argc, char* argv[])
       f.keepCopyDensity = true;
     else if (arg == "--outdir")
       f.outdir = value("--outdir");
+    else if (arg == "--up")
+      f.upAxis = ParseUpAxis(value("--up"));
     else if (arg == "--json")
       f.json = true;
     else if (arg == "--quiet")
@@ -241,6 +243,7 @@ vtkSmartPointer<vtkMultiBlockDataSet> ReadTree(const std::string& path, std::str
 /// display (the returned path is then empty). False (with error) when it cannot be written.
 bool WriteCategoryPicture(vtkPolyData* mesh,
   const char* arrayName,
+  int upAxis,
   std::string& picture,
   std::string& error)
 {
@@ -250,7 +253,7 @@ bool WriteCategoryPicture(vtkPolyData* mesh,
     picture.clear();
     return true;
   }
-  auto window = foldingmeshes::MakeCategoryScene(mesh, arrayName, 800, 600);
+  auto window = foldingmeshes::MakeCategoryScene(mesh, arrayName, 800, 600, upAxis);
   return foldingmeshes::WritePicture(window, picture, error);
 }
 

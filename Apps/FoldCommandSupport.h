@@ -28,6 +28,7 @@ struct FoldSettings
   int maxFolds = 8;
   bool tightSymmetry = false;
   int sampledSearchAboveFaces = -1; // -1: the builder's default
+  int upAxis = -1;                  // the picture's up axis (--up; -1: auto)
   bool keepProjectedPoints = false; // roundtrip's unfolder: RemoveProjectedPoints off
   bool keepCopyDensity = false;     // roundtrip's unfolder: MatchDiscardedDensity off
 };
@@ -50,10 +51,11 @@ double FieldValue(vtkPolyData* mesh, const char* name, double fallback = 0.0);
 bool WriteTree(vtkMultiBlockDataSet* tree, const std::string& path, std::string& error);
 vtkSmartPointer<vtkMultiBlockDataSet> ReadTree(const std::string& path, std::string& error);
 
-/// Writes a picture of `mesh` coloured by the cell array `arrayName`; skipped without a
-/// display (the returned path is then empty). False (with error) when it cannot be written.
+/// Writes a picture of `mesh` coloured by the cell array `arrayName`, up along `upAxis`
+/// (MakeCategoryScene); skipped without a display (the returned path is then empty). False (with error) when it cannot be written.
 bool WriteCategoryPicture(vtkPolyData* mesh,
   const char* arrayName,
+  int upAxis,
   std::string& picture,
   std::string& error);
 

@@ -52,7 +52,7 @@ int Fold(int argc, char* argv[])
   std::string picture = (dir / (stem + "_segmentation.png")).string();
   if (!MakeOutdir(f.outdir, error) || !WriteTree(tree, treePath, error) ||
     !foldingmeshes::WriteMesh(segmentation, segPath, error) ||
-    !WriteCategoryPicture(segmentation, "FoldingLeafId", picture, error))
+    !WriteCategoryPicture(segmentation, "FoldingLeafId", f.upAxis, picture, error))
   {
     std::cerr << "foldingmeshes: " << error << "\n";
     return 3;
@@ -114,6 +114,7 @@ int Fold(int argc, char* argv[])
 int Unfold(int argc, char* argv[])
 {
   std::string treePath, outdir = ".", originalPath;
+  int upAxis = -1;
   bool json = false, quiet = false, stitch = true, closeHoles = true, removeProjected = true,
        matchDensity = true;
   for (int i = 0; i < argc; ++i)
@@ -129,6 +130,12 @@ int Unfold(int argc, char* argv[])
       if (i + 1 >= argc)
         throw std::runtime_error("missing value after --outdir");
       outdir = argv[++i];
+    }
+    else if (arg == "--up")
+    {
+      if (i + 1 >= argc)
+        throw std::runtime_error("missing value after --up");
+      upAxis = ParseUpAxis(argv[++i]);
     }
     else if (arg == "--no-stitch")
       stitch = false;
@@ -197,7 +204,7 @@ int Unfold(int argc, char* argv[])
   const std::string meshPath = (dir / (stem + "_unfolded.vtp")).string();
   std::string picture = (dir / (stem + "_unfolded.png")).string();
   if (!MakeOutdir(outdir, error) || !foldingmeshes::WriteMesh(mesh, meshPath, error) ||
-    !WriteCategoryPicture(mesh, "FoldingLeafId", picture, error))
+    !WriteCategoryPicture(mesh, "FoldingLeafId", upAxis, picture, error))
   {
     std::cerr << "foldingmeshes: " << error << "\n";
     return 3;

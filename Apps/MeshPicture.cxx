@@ -82,7 +82,8 @@ void FitCameraToVisibleProps(vtkRenderer* renderer, double aspect)
 vtkSmartPointer<vtkRenderWindow> MakeSymmetryScene(vtkPolyData* labelledMesh,
   vtkPolyData* planeGlyph,
   int width,
-  int height)
+  int height,
+  int upAxis)
 {
   vtkNew<vtkLookupTable> colors;
   colors->SetNumberOfTableValues(3);
@@ -134,12 +135,15 @@ vtkSmartPointer<vtkRenderWindow> MakeSymmetryScene(vtkPolyData* labelledMesh,
   const double center[3] = {
     0.5 * (bounds[0] + bounds[1]), 0.5 * (bounds[2] + bounds[3]), 0.5 * (bounds[4] + bounds[5])
   };
-  // Up: the coordinate axis along which the mesh is longest, among those lying in the plane.
+  // Up: the given axis, else the coordinate axis along which the mesh is longest, among those
+  // lying in the plane.
   double up[3] = { 0, 0, 1 };
   double bestScore = -1.0;
   for (int k = 0; k < 3; ++k)
   {
-    const double score = (bounds[2 * k + 1] - bounds[2 * k]) * (1.0 - std::abs(n[k]));
+    const double score = upAxis >= 0 && upAxis <= 2
+      ? (k == upAxis ? 1.0 : 0.0)
+      : (bounds[2 * k + 1] - bounds[2 * k]) * (1.0 - std::abs(n[k]));
     if (score > bestScore + 1e-12)
     {
       bestScore = score;
@@ -147,11 +151,19 @@ vtkSmartPointer<vtkRenderWindow> MakeSymmetryScene(vtkPolyData* labelledMesh,
       up[k] = 1.0;
     }
   }
-  // In-plane direction perpendicular to up and n.
+  // In-plane direction perpendicular to up and n (a plane across the up axis: any
+  // direction across up).
   double side[3] = {
     up[1] * n[2] - up[2] * n[1], up[2] * n[0] - up[0] * n[2], up[0] * n[1] - up[1] * n[0]
   };
-  const double len = std::sqrt(side[0] * side[0] + side[1] * side[1] + side[2] * side[2]);
+  double len = std::sqrt(side[0] * side[0] + side[1] * side[1] + side[2] * side[2]);
+  if (len < 1e-6)
+  {
+    const int across = up[0] != 0.0 ? 1 : 0;
+    side[0] = side[1] = side[2] = 0.0;
+    side[across] = 1.0;
+    len = 1.0;
+  }
   vtkCamera* camera = renderer->GetActiveCamera();
   camera->SetFocalPoint(center);
   double dir[3];
@@ -172,7 +184,8 @@ vtkSmartPointer<vtkRenderWindow> MakeSymmetryScene(vtkPolyData* labelledMesh,
 vtkSmartPointer<vtkRenderWindow> MakeCategoryScene(vtkPolyData* mesh,
   const char* cellArrayName,
   int width,
-  int height)
+  int height,
+  int upAxis)
 {
   vtkNew<vtkPolyDataMapper> mapper;
   mapper->SetInputData(mesh);
@@ -235,12 +248,13 @@ vtkSmartPointer<vtkRenderWindow> MakeCategoryScene(vtkPolyData* mesh,
   const double center[3] = {
     0.5 * (bounds[0] + bounds[1]), 0.5 * (bounds[2] + bounds[3]), 0.5 * (bounds[4] + bounds[5])
   };
-  // Up: +Y (the convention of most mesh files) unless Y is the mesh's thinnest extent, then
-  // +Z; view: mostly along the thinner horizontal axis, turned towards the longer one and
+  // Up: the given axis, else +Y (the convention of most mesh files) unless Y is the mesh's
+  // thinnest extent, then +Z; view: mostly along the thinner horizontal axis, turned towards the longer one and
   // slightly from above, so a side view of animals and furniture with visible depth.
   const double extent[3] = { bounds[1] - bounds[0], bounds[3] - bounds[2], bounds[5] - bounds[4] };
-  const int upAxis = (extent[1] <= extent[0] && extent[1] <= extent[2]) ? 2 : 1;
-  const int h1 = 0, h2 = upAxis == 1 ? 2 : 1;
+  if (upAxis < 0 || upAxis > 2)
+    upAxis = (extent[1] <= extent[0] && extent[1] <= extent[2]) ? 2 : 1;
+  const int h1 = upAxis == 0 ? 1 : 0, h2 = upAxis == 2 ? 1 : 2;
   const int thin = extent[h1] <= extent[h2] ? h1 : h2, wide = thin == h1 ? h2 : h1;
   double up[3] = { 0, 0, 0 }, dir[3] = { 0, 0, 0 };
   up[upAxis] = 1.0;
@@ -266,12 +280,13 @@ vtkSmartPointer<vtkRenderWindow> MakeSideBySideScene(vtkPolyData* left,
   vtkPolyData* right,
   const char* rightCellArrayName,
   int width,
-  int height)
+  int height,
+  int upAxis)
 {
   vtkSmartPointer<vtkRenderWindow> a =
-    MakeCategoryScene(left, leftCellArrayName, width / 2, height);
+    MakeCategoryScene(left, leftCellArrayName, width / 2, height, upAxis);
   vtkSmartPointer<vtkRenderWindow> b =
-    MakeCategoryScene(right, rightCellArrayName, width / 2, height);
+    MakeCategoryScene(right, rightCellArrayName, width / 2, height, upAxis);
   vtkSmartPointer<vtkRenderer> l = a->GetRenderers()->GetFirstRenderer();
   vtkSmartPointer<vtkRenderer> r = b->GetRenderers()->GetFirstRenderer();
   a->RemoveRenderer(l);

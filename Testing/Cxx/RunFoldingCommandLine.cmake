@@ -6,6 +6,8 @@
 # 3. `foldingmeshes fold` without a mesh exits 1 (bad command line);
 # 4. `foldingmeshes unfold` on a file that is not a .vtm tree exits 2 and says so;
 # 4b. `foldingmeshes unfold TREE --original MESH` reports the roundtrip's Hausdorff distance;
+# 4c. `--up` takes auto, x, y or z on detect, fold and unfold (exit 0 with z), anything else
+#     exits 1 and names the option;
 # 5. `--help` exits 0 and documents every command and the exit codes; `--version` exits 0.
 foreach (var FOLDINGMESHES MESH WORK_DIR)
   if (NOT DEFINED ${var})
@@ -80,13 +82,30 @@ if (NOT rc EQUAL 2 OR NOT err MATCHES "not a VTK XML multiblock")
   message(FATAL_ERROR "unfold on a non-.vtm file exited with ${rc}, expected 2 and a clear message")
 endif ()
 
+foreach (command IN ITEMS detect fold unfold)
+  set(input "${MESH}")
+  if (command STREQUAL "unfold")
+    set(input "${WORK_DIR}/${stem}_tree.vtm")
+  endif ()
+  execute_process(COMMAND "${FOLDINGMESHES}" ${command} "${input}" --up z --quiet
+    --outdir "${WORK_DIR}/up_${command}" RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  if (NOT rc EQUAL 0)
+    message(FATAL_ERROR "${command} --up z exited with ${rc}, expected 0: ${err}")
+  endif ()
+  execute_process(COMMAND "${FOLDINGMESHES}" ${command} "${input}" --up sideways --quiet
+    --outdir "${WORK_DIR}/up_${command}" RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  if (NOT rc EQUAL 1 OR NOT err MATCHES "--up must be auto, x, y or z")
+    message(FATAL_ERROR "${command} --up sideways exited with ${rc}, expected 1 and a clear message: ${err}")
+  endif ()
+endforeach ()
+
 execute_process(COMMAND "${FOLDINGMESHES}" --help
   RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
 if (NOT rc EQUAL 0)
   message(FATAL_ERROR "--help exited with ${rc}, expected 0")
 endif ()
 foreach (text IN ITEMS "detect MESH" "fold MESH" "unfold TREE.vtm" "roundtrip MESH" "exit codes: 0"
-    "--tolerance" "--keep" "--max-folds" "--min-area-fraction" "--no-stitch" "--version")
+    "--tolerance" "--keep" "--max-folds" "--min-area-fraction" "--no-stitch" "--up" "--version")
   string(FIND "${out}" "${text}" found)
   if (found EQUAL -1)
     message(FATAL_ERROR "--help does not mention '${text}'")
