@@ -1,4 +1,6 @@
 #include "MeshPreparation.h"
+
+#include "PointBuckets.h"
 #include "UnionFind.h"
 
 #include <Eigen/Geometry>
@@ -400,46 +402,23 @@ void LinkNearbyParts(PreparedMesh& mesh, double gap)
   for (int f = 0; f < mesh.NumberOfFaces(); ++f)
     for (int v : mesh.triangles[f])
       vertexPart[v] = mesh.facePart[f];
-  // Hash grid of cell size `gap`.
-  auto key = [&](const Vec3& p)
-  {
-    const Eigen::Vector3d q = ((p - mesh.boundsMin) / gap).array().floor();
-    return std::array<long long, 3>{
-      static_cast<long long>(q.x()), static_cast<long long>(q.y()), static_cast<long long>(q.z())
-    };
-  };
-  std::map<std::array<long long, 3>, std::vector<int>> cells;
+  PointBuckets buckets;
+  buckets.cell = gap;
   for (int v = 0; v < nv; ++v)
     if (vertexPart[v] >= 0)
-      cells[key(mesh.points[v])].push_back(v);
+      buckets.Add(mesh.points[v], v);
+  // Closer than `gap` (strictly: the largest double below it as the radius).
+  const double radius = std::nextafter(gap, 0.0);
   for (int v = 0; v < nv; ++v)
   {
     if (vertexPart[v] < 0)
       continue;
-    const auto c = key(mesh.points[v]);
     // Only the nearest vertex of another part: linear in the mesh size even for triangle
     // soups, where every face is its own part.
-    std::pair<double, int> nearest{ gap, -1 };
-    for (long long dx = -1; dx <= 1; ++dx)
-      for (long long dy = -1; dy <= 1; ++dy)
-        for (long long dz = -1; dz <= 1; ++dz)
-        {
-          auto it = cells.find({ c[0] + dx, c[1] + dy, c[2] + dz });
-          if (it == cells.end())
-            continue;
-          for (int w : it->second)
-          {
-            if (vertexPart[w] == vertexPart[v])
-              continue;
-            const double d = (mesh.points[w] - mesh.points[v]).norm();
-            if (d > gap)
-              continue;
-            if (d < nearest.first || (d == nearest.first && w < nearest.second))
-              nearest = { d, w };
-          }
-        }
-    if (nearest.second >= 0)
-      mesh.proximityLinks.push_back({ v, nearest.second });
+    const int nearest = buckets.NearestWhere(
+      mesh.points, mesh.points[v], radius, [&](int w) { return vertexPart[w] != vertexPart[v]; });
+    if (nearest >= 0)
+      mesh.proximityLinks.push_back({ v, nearest });
   }
 }
 
