@@ -1,9 +1,9 @@
 #include "CommandLine.h"
 
-#include <stdexcept>
-
+#include <cmath>
 #include <cstdlib>
 #include <sstream>
+#include <stdexcept>
 
 namespace foldingmeshes
 {
@@ -30,14 +30,18 @@ MESH is a .vtp .vtk .ply .obj .stl or .off file; outputs are named after its ste
 
 detect: finds the dominant planar reflection symmetry of a triangle mesh and the largest
 connected region that has it (Folding meshes, SGP 2006, section 3).
-  --tolerance F            epsilon as a fraction of the bounding-box diagonal (default 0.02)
+  --tolerance F            epsilon as a fraction of the bounding-box diagonal (default 0.02,
+                           range 1e-12..1)
   --absolute-tolerance L   epsilon as a length (overrides --tolerance)
   --method robust|paper    several starts judged by final region (default) or the paper's one start
   --initial-plane OX,OY,OZ,NX,NY,NZ
-                           start from this plane instead of the principal axes
-  --candidates N           voted candidate planes tried by the robust method (default 8)
+                           start from this plane too (robust: an extra start; paper:
+                           instead of the principal axes)
+  --candidates N           voted candidate planes tried by the robust method (default 8,
+                           range 0..64)
   --separate-parts         regions never span separate parts (default: parts touching within
                            epsilon are connected)
+  --seed N                 seed of the candidate sampling (default 1)
   --output FILE            labelled mesh (default: MESH stem + "_symmetry.vtp" in --outdir)
   --plane-output FILE      plane glyph (default: MESH stem + "_plane.vtp" in --outdir)
   --picture FILE           PNG picture (default: MESH stem + "_symmetry.png" in --outdir)
@@ -61,12 +65,20 @@ original and stored faces, compression, tree height, folds, leaves and time.
                            fewer (less storage)
   --min-area-fraction F    leaf when a region's area is below F of the mesh's (default 0.05)
   --max-folds N            leaf when N folds lie above a region (default 8, at most 63)
+  --min-faces N            leaf when a region has fewer than N faces (default 50)
+  --method robust|paper    every node's detection, as for detect (default robust)
+  --separate-parts         as for detect: regions and components never span separate parts
+  --seed N                 seed of the candidate sampling, as for detect (default 1)
   --tight-symmetry         fold only clear symmetries (RMS mirror distance <= 0.35 epsilon);
                            default: every epsilon-symmetric region of >= 10% area, as the paper
   --sampled-search-above N regions with more than N faces search candidate planes on a sampled
                            copy (default 1000; 0: every region; a huge N: the full search)
   --keep-projected-points  (roundtrip only) as for unfold
   --keep-copy-density      (roundtrip only) as for unfold
+  --no-stitch              (roundtrip only) as for unfold
+  --no-close-holes         (roundtrip only) as for unfold
+  Other builder parameters (the Use* switches of the stop criteria, RequireMeaningfulSymmetry)
+  keep their defaults here; they are set in C++, Python and ParaView.
   --up auto|x|y|z          the picture's up axis (default auto: +Y, +Z when Y is the thinnest
                            extent)
   --outdir DIR             folder for the outputs (default: current folder)
@@ -78,7 +90,8 @@ unfold: reconstructs the mesh from a tree written by fold (section 4.3) and writ
 the tree's file stem without a trailing "_tree"; prints faces, open edges, stitched vertices,
 projected points removed and left, points removed from mirrored copies, and stitch gaps
 (before the final repair).
-  --no-stitch              the raw union of the copies: no stitching or smoothing of tears
+  --no-stitch              the raw union of the copies: no stitching or smoothing of tears,
+                           no final weld and no final repair
   --no-close-holes         no final repair (non-manifold faces dropped, orientation made
                            consistent, holes that are not the input's border filled)
   --keep-projected-points  keep the vertices the builder projected onto fold planes (default:
@@ -110,6 +123,37 @@ exit codes: 0 success, 1 bad command line, 2 unreadable or invalid input, 3 cann
               proved over whole surfaces, to 1e-7 of the diagonal)
 )";
 
+double ParseNumber(const std::string& what,
+  const std::string& text,
+  double lo,
+  double hi,
+  bool positive)
+{
+  char* end = nullptr;
+  const double x = std::strtod(text.c_str(), &end);
+  if (end == text.c_str() || *end != '\0' || !(x >= lo && x <= hi) || (positive && !(x > 0.0)))
+  {
+    std::ostringstream msg;
+    msg << what << " needs a number" << (positive ? " > 0" : "") << " in [" << lo << ", " << hi
+        << "], got '" << text << "'";
+    throw std::runtime_error(msg.str());
+  }
+  return x;
+}
+
+int ParseInteger(const std::string& what, const std::string& text, int lo, int hi)
+{
+  char* end = nullptr;
+  const double x = std::strtod(text.c_str(), &end);
+  if (end == text.c_str() || *end != '\0' || !(x >= lo && x <= hi) || x != std::floor(x))
+  {
+    std::ostringstream msg;
+    msg << what << " needs an integer in [" << lo << ", " << hi << "], got '" << text << "'";
+    throw std::runtime_error(msg.str());
+  }
+  return static_cast<int>(x);
+}
+
 bool ParseNumbers(const std::string& text, std::vector<double>& values)
 {
   std::stringstream in(text);
@@ -119,7 +163,7 @@ bool ParseNumbers(const std::string& text, std::vector<double>& values)
   {
     char* end = nullptr;
     const double v = std::strtod(item.c_str(), &end);
-    if (end == item.c_str() || *end != '\0')
+    if (end == item.c_str() || *end != '\0' || !std::isfinite(v))
       return false;
     values.push_back(v);
   }

@@ -53,7 +53,17 @@ struct ProgressPrinter
   }
 };
 
-/// Comma-separated numbers; false on anything else.
+/// The number `text` in [lo, hi] (and > 0 when `positive`), for the option `what`; throws
+/// std::runtime_error with a clear message on anything else (trailing text, NaN, infinity).
+double ParseNumber(const std::string& what,
+  const std::string& text,
+  double lo,
+  double hi,
+  bool positive = false);
+/// An integer in [lo, hi], as ParseNumber.
+int ParseInteger(const std::string& what, const std::string& text, int lo, int hi);
+
+/// Comma-separated finite numbers; false on anything else.
 bool ParseNumbers(const std::string& text, std::vector<double>& values);
 /// A JSON string literal.
 std::string JsonString(const std::string& s);

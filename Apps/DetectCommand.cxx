@@ -39,15 +39,6 @@ int Detect(int argc, char* argv[])
         throw std::runtime_error(std::string("missing value after ") + what);
       return argv[++i];
     };
-    auto number = [&](const char* what)
-    {
-      const std::string v = value(what);
-      char* end = nullptr;
-      const double x = std::strtod(v.c_str(), &end);
-      if (end == v.c_str() || *end != '\0' || !(x > 0.0))
-        throw std::runtime_error(std::string(what) + " needs a positive number, got '" + v + "'");
-      return x;
-    };
     if (arg == "--help" || arg == "-h")
     {
       std::cout << Usage;
@@ -55,12 +46,13 @@ int Detect(int argc, char* argv[])
     }
     else if (arg == "--tolerance")
     {
-      detector->SetTolerance(number("--tolerance"));
+      detector->SetTolerance(ParseNumber(arg, value("--tolerance"), 1e-12, 1.0, true));
       detector->SetToleranceMode(vtkSymmetryPlaneDetector::RELATIVE_TO_DIAGONAL);
     }
     else if (arg == "--absolute-tolerance")
     {
-      detector->SetTolerance(number("--absolute-tolerance"));
+      detector->SetTolerance(
+        ParseNumber(arg, value("--absolute-tolerance"), 1e-12, 1e30, true));
       detector->SetToleranceMode(vtkSymmetryPlaneDetector::ABSOLUTE);
     }
     else if (arg == "--method")
@@ -81,7 +73,9 @@ int Detect(int argc, char* argv[])
       detector->SetInitialPlaneNormal(v[3], v[4], v[5]);
     }
     else if (arg == "--candidates")
-      detector->SetNumberOfCandidates(std::atoi(value("--candidates").c_str()));
+      detector->SetNumberOfCandidates(ParseInteger(arg, value("--candidates"), 0, 64));
+    else if (arg == "--seed")
+      detector->SetRandomSeed(ParseInteger(arg, value("--seed"), -2147483647, 2147483647));
     else if (arg == "--separate-parts")
       detector->ConnectNearbyPartsOff();
     else if (arg == "--output")

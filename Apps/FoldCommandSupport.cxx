@@ -26,27 +26,6 @@ namespace foldingmeshes
 {
 namespace cli
 {
-namespace
-{
-double ParseNumber(const std::string& what,
-  const std::string& v,
-  double lo,
-  double hi,
-  bool positive)
-{
-  char* end = nullptr;
-  const double x = std::strtod(v.c_str(), &end);
-  if (end == v.c_str() || *end != '\0' || !(x >= lo && x <= hi) || (positive && !(x > 0.0)))
-  {
-    std::ostringstream msg;
-    msg << what << " needs a number" << (positive ? " > 0" : "") << " in [" << lo << ", " << hi
-        << "], got '" << v << "'";
-    throw std::runtime_error(msg.str());
-  }
-  return x;
-}
-}
-
 FoldSettings ParseFoldArguments(int argc, char* argv[])
 {
   FoldSettings f;
@@ -85,28 +64,33 @@ FoldSettings ParseFoldArguments(int argc, char* argv[])
     else if (arg == "--min-area-fraction")
       f.minAreaFraction = ParseNumber(arg, value("--min-area-fraction"), 0.0, 1.0, false);
     else if (arg == "--max-folds")
+      f.maxFolds = ParseInteger(arg, value("--max-folds"), 0, 63);
+    else if (arg == "--min-faces")
+      f.minFaces = ParseInteger(arg, value("--min-faces"), 1, 1000000000);
+    else if (arg == "--method")
     {
-      const std::string v = value("--max-folds");
-      const double n = ParseNumber(arg, v, 0, 63, false);
-      if (n != std::floor(n))
-        throw std::runtime_error("--max-folds needs an integer in [0, 63], got '" + v + "'");
-      f.maxFolds = static_cast<int>(n);
+      const std::string m = value("--method");
+      if (m != "robust" && m != "paper")
+        throw std::runtime_error("--method must be robust or paper, got '" + m + "'");
+      f.method = m == "paper" ? vtkFoldingTreeBuilder::PAPER : vtkFoldingTreeBuilder::ROBUST;
     }
+    else if (arg == "--seed")
+      f.randomSeed = ParseInteger(arg, value("--seed"), -2147483647, 2147483647);
     else if (arg == "--tight-symmetry")
       f.tightSymmetry = true;
+    else if (arg == "--separate-parts")
+      f.separateParts = true;
     else if (arg == "--sampled-search-above")
-    {
-      const std::string v = value("--sampled-search-above");
-      const double n = ParseNumber(arg, v, 0, 1e9, false);
-      if (n != std::floor(n))
-        throw std::runtime_error(
-          "--sampled-search-above needs a non-negative integer, got '" + v + "'");
-      f.sampledSearchAboveFaces = static_cast<int>(n);
-    }
+      f.sampledSearchAboveFaces =
+        ParseInteger(arg, value("--sampled-search-above"), 0, 1000000000);
     else if (arg == "--keep-projected-points")
       f.keepProjectedPoints = true;
     else if (arg == "--keep-copy-density")
       f.keepCopyDensity = true;
+    else if (arg == "--no-stitch")
+      f.noStitch = true;
+    else if (arg == "--no-close-holes")
+      f.noCloseHoles = true;
     else if (arg == "--outdir")
       f.outdir = value("--outdir");
     else if (arg == "--up")
@@ -162,15 +146,30 @@ bool RunFilter(vtkAlgorithm* algorithm, const char* label, bool quiet, std::stri
 
 void ConfigureBuilder(vtkFoldingTreeBuilder* builder, const FoldSettings& f)
 {
-  builder->SetTolerance(f.tolerance);
-  builder->SetToleranceMode(
-    f.absolute ? vtkFoldingTreeBuilder::ABSOLUTE : vtkFoldingTreeBuilder::RELATIVE_TO_DIAGONAL);
-  builder->SetKeepSide(f.keep);
-  builder->SetMinimumAreaFraction(f.minAreaFraction);
-  builder->SetMaximumFolds(f.maxFolds);
-  builder->SetRequireTightSymmetry(f.tightSymmetry);
-  if (f.sampledSearchAboveFaces >= 0)
-    builder->SetSampledSearchAboveFaces(f.sampledSearchAboveFaces);
+  if (f.tolerance)
+  {
+    builder->SetTolerance(*f.tolerance);
+    builder->SetToleranceMode(
+      f.absolute ? vtkFoldingTreeBuilder::ABSOLUTE : vtkFoldingTreeBuilder::RELATIVE_TO_DIAGONAL);
+  }
+  if (f.keep)
+    builder->SetKeepSide(*f.keep);
+  if (f.minAreaFraction)
+    builder->SetMinimumAreaFraction(*f.minAreaFraction);
+  if (f.maxFolds)
+    builder->SetMaximumFolds(*f.maxFolds);
+  if (f.minFaces)
+    builder->SetMinimumFaces(*f.minFaces);
+  if (f.method)
+    builder->SetMethod(*f.method);
+  if (f.randomSeed)
+    builder->SetRandomSeed(*f.randomSeed);
+  if (f.sampledSearchAboveFaces)
+    builder->SetSampledSearchAboveFaces(*f.sampledSearchAboveFaces);
+  if (f.tightSymmetry)
+    builder->RequireTightSymmetryOn();
+  if (f.separateParts)
+    builder->ConnectNearbyPartsOff();
 }
 
 /// A number of the tree's "Tree" information block (block 1), or `fallback`.

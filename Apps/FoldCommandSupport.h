@@ -11,26 +11,35 @@
 #include <vtkPolyData.h>
 #include <vtkSmartPointer.h>
 
+#include <optional>
 #include <string>
 
 namespace foldingmeshes
 {
 namespace cli
 {
+/// The command line's settings. Builder parameters the user did not give stay unset, so the
+/// filter's own defaults apply (they are stated once, in vtkFoldingTreeBuilder.h).
 struct FoldSettings
 {
   std::string meshPath, outdir = ".";
   bool json = false, quiet = false;
-  double tolerance = 0.02;
+  std::optional<double> tolerance; // with `absolute`: a length, else relative to the diagonal
   bool absolute = false;
-  int keep = vtkFoldingTreeBuilder::MORE_FACES;
-  double minAreaFraction = 0.05;
-  int maxFolds = 8;
-  bool tightSymmetry = false;
-  int sampledSearchAboveFaces = -1; // -1: the builder's default
+  std::optional<int> keep;
+  std::optional<double> minAreaFraction;
+  std::optional<int> maxFolds;
+  std::optional<int> minFaces;
+  std::optional<int> method;
+  std::optional<int> randomSeed;
+  std::optional<int> sampledSearchAboveFaces;
+  bool tightSymmetry = false;       // --tight-symmetry: RequireTightSymmetry on
+  bool separateParts = false;       // --separate-parts: ConnectNearbyParts off
   int upAxis = -1;                  // the picture's up axis (--up; -1: auto)
   bool keepProjectedPoints = false; // roundtrip's unfolder: RemoveProjectedPoints off
   bool keepCopyDensity = false;     // roundtrip's unfolder: MatchDiscardedDensity off
+  bool noStitch = false;            // roundtrip's unfolder: Stitch off
+  bool noCloseHoles = false;        // roundtrip's unfolder: CloseHoles off
 };
 
 /// The arguments of fold / unfold / roundtrip; throws std::runtime_error on a bad one.

@@ -24,6 +24,10 @@ int Fold(int argc, char* argv[])
     throw std::runtime_error("--keep-projected-points is an option of unfold and roundtrip");
   if (f.keepCopyDensity)
     throw std::runtime_error("--keep-copy-density is an option of unfold and roundtrip");
+  if (f.noStitch)
+    throw std::runtime_error("--no-stitch is an option of unfold and roundtrip");
+  if (f.noCloseHoles)
+    throw std::runtime_error("--no-close-holes is an option of unfold and roundtrip");
   std::string error;
   vtkSmartPointer<vtkPolyData> mesh = foldingmeshes::ReadMesh(f.meshPath, error);
   if (!mesh)
@@ -115,8 +119,8 @@ int Unfold(int argc, char* argv[])
 {
   std::string treePath, outdir = ".", originalPath;
   int upAxis = -1;
-  bool json = false, quiet = false, stitch = true, closeHoles = true, removeProjected = true,
-       matchDensity = true;
+  bool json = false, quiet = false;
+  vtkNew<vtkFoldingTreeUnfolder> unfolder; // options not given keep the filter's defaults
   for (int i = 0; i < argc; ++i)
   {
     const std::string arg = argv[i];
@@ -138,13 +142,13 @@ int Unfold(int argc, char* argv[])
       upAxis = ParseUpAxis(argv[++i]);
     }
     else if (arg == "--no-stitch")
-      stitch = false;
+      unfolder->StitchOff();
     else if (arg == "--no-close-holes")
-      closeHoles = false;
+      unfolder->CloseHolesOff();
     else if (arg == "--keep-projected-points")
-      removeProjected = false;
+      unfolder->RemoveProjectedPointsOff();
     else if (arg == "--keep-copy-density")
-      matchDensity = false;
+      unfolder->MatchDiscardedDensityOff();
     else if (arg == "--original")
     {
       if (i + 1 >= argc)
@@ -172,11 +176,6 @@ int Unfold(int argc, char* argv[])
     std::cerr << "foldingmeshes: " << error << "\n";
     return 2;
   }
-  vtkNew<vtkFoldingTreeUnfolder> unfolder;
-  unfolder->SetStitch(stitch);
-  unfolder->SetCloseHoles(closeHoles);
-  unfolder->SetRemoveProjectedPoints(removeProjected);
-  unfolder->SetMatchDiscardedDensity(matchDensity);
   unfolder->SetInputData(tree);
   vtkSmartPointer<vtkPolyData> original;
   if (!originalPath.empty())
@@ -224,6 +223,9 @@ int Unfold(int argc, char* argv[])
   const int foldExcess = static_cast<int>(FieldValue(mesh, "FoldExcessFaces"));
   const int gaps = static_cast<int>(FieldValue(mesh, "OpenGapCount"));
   const double gapLength = FieldValue(mesh, "OpenGapLength");
+  const bool stitch = unfolder->GetStitch(), closeHoles = unfolder->GetCloseHoles();
+  const bool removeProjected = unfolder->GetRemoveProjectedPoints();
+  const bool matchDensity = unfolder->GetMatchDiscardedDensity();
   // With --original: the symmetric Hausdorff distance to it, absolute and / its diagonal.
   const double hausdorff = original ? FieldValue(mesh, "HausdorffToOriginal", -1.0) : -1.0;
   const double hausdorffRelative =

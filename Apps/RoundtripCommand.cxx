@@ -57,8 +57,14 @@ int Roundtrip(int argc, char* argv[])
     return 2;
   }
   vtkNew<vtkFoldingTreeUnfolder> unfolder;
-  unfolder->SetRemoveProjectedPoints(!f.keepProjectedPoints);
-  unfolder->SetMatchDiscardedDensity(!f.keepCopyDensity);
+  if (f.keepProjectedPoints)
+    unfolder->RemoveProjectedPointsOff();
+  if (f.keepCopyDensity)
+    unfolder->MatchDiscardedDensityOff();
+  if (f.noStitch)
+    unfolder->StitchOff();
+  if (f.noCloseHoles)
+    unfolder->CloseHolesOff();
   unfolder->SetInputData(readBack);
   t0 = std::chrono::steady_clock::now();
   if (!RunFilter(unfolder, "unfolding", f.quiet, error))

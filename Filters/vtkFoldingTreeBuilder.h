@@ -149,7 +149,11 @@ public:
   ///@}
 
   ///@{
-  /** Leaf when MaximumFolds folds lie above a region (default on, 8; range 0..63). */
+  /**
+   * Leaf when MaximumFolds folds lie above a region (default on, 8; range 0..63). Whatever
+   * the criteria, the tree has at most 48 levels (folding and segmentation nodes count; a
+   * deeper region becomes a leaf with LeafReason "MaximumDepth"), which bounds the recursion.
+   */
   vtkSetMacro(UseMaximumFolds, bool);
   vtkGetMacro(UseMaximumFolds, bool);
   vtkBooleanMacro(UseMaximumFolds, bool);

@@ -94,7 +94,10 @@ public:
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   ///@{
-  /** Stitch and smooth the tears at segmentation nodes (default on); off: the raw union. */
+  /**
+   * Stitch and smooth the tears at segmentation nodes (default on); off: the raw union of the
+   * copies, with no final weld (WeldBoundaries) or repair (CloseHoles) either.
+   */
   vtkSetMacro(Stitch, bool);
   vtkGetMacro(Stitch, bool);
   vtkBooleanMacro(Stitch, bool);
@@ -182,6 +185,7 @@ public:
    * Finally weld the open boundaries of different copies once more (default on): a vertex on
    * an open edge may merge with, or be zipped into, one of another copy within
    * WeldToleranceScale x the root tolerance (default 0.5, range 0..10). No gaps are filled.
+   * Only with Stitch on: Stitch off gives the raw union of the copies.
    */
   vtkSetMacro(WeldBoundaries, bool);
   vtkGetMacro(WeldBoundaries, bool);
@@ -198,7 +202,8 @@ public:
    * loop is filled) by a minimal-area triangulation of its vertices, when every new face
    * stays within HoleToleranceScale x the root tolerance of the loop (default 1, range
    * 0..10) and the loop has at most MaximumHoleEdges edges (default 400, range 3..100000).
-   * Loops left open are reported ("OpenLoops", "OpenLoopEdges", "OpenLoopLength").
+   * Loops left open are reported ("OpenLoops", "OpenLoopEdges", "OpenLoopLength"). Only with
+   * Stitch on: Stitch off gives the raw union of the copies.
    */
   vtkSetMacro(CloseHoles, bool);
   vtkGetMacro(CloseHoles, bool);

@@ -339,4 +339,7 @@ void vtkSymmetryPlaneDetector::PrintSelf(ostream& os, vtkIndent indent)
      << this->PlaneNormal[2] << "\n";
   os << indent << "SymmetricAreaFraction: " << this->SymmetricAreaFraction << "\n";
   os << indent << "SymmetryFound: " << this->SymmetryFound << "\n";
+  os << indent << "CoarseIterations: " << this->CoarseIterations << "\n";
+  os << indent << "FineIterations: " << this->FineIterations << "\n";
+  os << indent << "ToleranceLength: " << this->ToleranceLength << "\n";
 }

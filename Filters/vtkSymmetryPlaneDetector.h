@@ -172,6 +172,7 @@ public:
   vtkGetVector3Macro(PlaneNormal, double);
   vtkGetMacro(SymmetricAreaFraction, double);
   vtkGetMacro(SymmetryFound, bool);
+  /** Reweighting iterations of the winning start: coarse (sigma = 3 epsilon), fine (epsilon). */
   vtkGetMacro(CoarseIterations, int);
   vtkGetMacro(FineIterations, int);
   /** Epsilon as a length, as used by the last run. */

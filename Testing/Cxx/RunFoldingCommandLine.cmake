@@ -8,6 +8,8 @@
 # 4b. `foldingmeshes unfold TREE --original MESH` reports the roundtrip's Hausdorff distance;
 # 4c. `--up` takes auto, x, y or z on detect, fold and unfold (exit 0 with z), anything else
 #     exits 1 and names the option;
+# 4d. out-of-range numbers exit 1 on detect and fold; --min-faces, --method, --seed and
+#     --separate-parts reach the builder; roundtrip --no-stitch --no-close-holes leaves seams open;
 # 5. `--help` exits 0 and documents every command and the exit codes; `--version` exits 0.
 foreach (var FOLDINGMESHES MESH WORK_DIR)
   if (NOT DEFINED ${var})
@@ -21,6 +23,7 @@ get_filename_component(stem "${MESH}" NAME_WE)
 execute_process(COMMAND "${FOLDINGMESHES}" roundtrip "${MESH}" --outdir "${WORK_DIR}" --json --quiet
   RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
 message("roundtrip output:\n${out}${err}")
+set(out_roundtrip "${out}")
 if (NOT rc EQUAL 0)
   message(FATAL_ERROR "roundtrip exited with ${rc}, expected 0")
 endif ()
@@ -99,13 +102,55 @@ foreach (command IN ITEMS detect fold unfold)
   endif ()
 endforeach ()
 
+# 4d. Numbers out of a parameter's range are rejected on every command (exit 1, the option
+#     named), not clamped; options not given keep the filter's defaults, given ones reach it.
+foreach (bad IN ITEMS "detect;--candidates;abc;--candidates needs an integer"
+    "detect;--candidates;65;--candidates needs an integer"
+    "detect;--tolerance;2;--tolerance needs a number"
+    "detect;--seed;1.5;--seed needs an integer"
+    "fold;--min-faces;0;--min-faces needs an integer"
+    "fold;--seed;x;--seed needs an integer"
+    "fold;--method;fast;--method must be robust or paper")
+  list(GET bad 0 command)
+  list(GET bad 1 option)
+  list(GET bad 2 value)
+  list(GET bad 3 expected)
+  execute_process(COMMAND "${FOLDINGMESHES}" ${command} "${MESH}" ${option} ${value} --quiet
+    --outdir "${WORK_DIR}/bad" RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  if (NOT rc EQUAL 1 OR NOT err MATCHES "${expected}")
+    message(FATAL_ERROR "${command} ${option} ${value} exited with ${rc}, expected 1 and '${expected}': ${err}")
+  endif ()
+endforeach ()
+execute_process(COMMAND "${FOLDINGMESHES}" fold "${MESH}" --min-faces 1000000000 --json --quiet
+  --outdir "${WORK_DIR}/minfaces" RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+if (NOT rc EQUAL 0 OR NOT out MATCHES "\"folds\": 0," OR NOT out MATCHES "\"leaves\": 1,")
+  message(FATAL_ERROR "fold --min-faces 1e9 should give a single leaf (exit ${rc}): ${out}${err}")
+endif ()
+execute_process(COMMAND "${FOLDINGMESHES}" fold "${MESH}" --method paper --seed 3 --separate-parts
+  --json --quiet --outdir "${WORK_DIR}/paper" RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+if (NOT rc EQUAL 0 OR NOT out MATCHES "\"compression\": 0\\.[0-9]*[1-9]")
+  message(FATAL_ERROR "fold --method paper --seed 3 --separate-parts failed (exit ${rc}): ${out}${err}")
+endif ()
+execute_process(COMMAND "${FOLDINGMESHES}" roundtrip "${MESH}" --no-stitch --no-close-holes --json
+  --quiet --outdir "${WORK_DIR}/raw" RESULT_VARIABLE rc OUTPUT_VARIABLE rawOut ERROR_VARIABLE err)
+if (CMAKE_VERSION VERSION_GREATER_EQUAL 3.19)
+  # The raw union keeps the seams open; the stitched and repaired roundtrip above closes them.
+  string(JSON rawOpen ERROR_VARIABLE jsonError GET "${rawOut}" openEdgesAfter)
+  string(JSON repairedOpen ERROR_VARIABLE jsonError2 GET "${out_roundtrip}" openEdgesAfter)
+  if (jsonError OR jsonError2 OR NOT rawOpen GREATER repairedOpen)
+    message(FATAL_ERROR "roundtrip --no-stitch --no-close-holes: ${rawOpen} open edges, "
+      "stitched and repaired ${repairedOpen} (exit ${rc}): ${rawOut}${err}")
+  endif ()
+endif ()
+
 execute_process(COMMAND "${FOLDINGMESHES}" --help
   RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
 if (NOT rc EQUAL 0)
   message(FATAL_ERROR "--help exited with ${rc}, expected 0")
 endif ()
 foreach (text IN ITEMS "detect MESH" "fold MESH" "unfold TREE.vtm" "roundtrip MESH" "exit codes: 0"
-    "--tolerance" "--keep" "--max-folds" "--min-area-fraction" "--no-stitch" "--up" "--version")
+    "--tolerance" "--keep" "--max-folds" "--min-area-fraction" "--min-faces" "--seed"
+    "--no-stitch" "--up" "--version")
   string(FIND "${out}" "${text}" found)
   if (found EQUAL -1)
     message(FATAL_ERROR "--help does not mention '${text}'")

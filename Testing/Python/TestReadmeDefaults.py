@@ -5,12 +5,16 @@ Every row of a "### Parameters" table under a "## vtkXxx" heading names one or m
 properties (`Name`, `Name2`) and their defaults ("on", "off", a number, or "0 `ENUM`").
 For each filter the test creates the wrapped class and compares every documented default
 with its Get<Name>(); it also fails when a table documents no parameter at all, so a
-renamed heading or table cannot make the test pass vacuously.
+renamed heading or table cannot make the test pass vacuously, and when a row gives several
+defaults but not one per name. With the command-line program as second argument it also
+compares the "(default X" of every option of `foldingmeshes --help` that sets a filter
+parameter with that parameter's C++ default (the program sets only the options given).
 
-    PYTHONPATH=<build>/lib/python3/dist-packages TestReadmeDefaults.py README.md
+    PYTHONPATH=<build>/lib/python3/dist-packages TestReadmeDefaults.py README.md [foldingmeshes]
 """
 
 import re
+import subprocess
 import sys
 
 import foldingmeshes
@@ -32,7 +36,10 @@ def parse_tables(text):
         names = re.findall(r"`(\w+)`", cells[0])
         defaults = [d.strip() for d in cells[1].split(",")]
         if len(defaults) != len(names):
-            defaults = [cells[1].strip()] * len(names)
+            if len(defaults) != 1:
+                raise ValueError("README row %s: %d names, %d defaults"
+                                 % (cells[0], len(names), len(defaults)))
+            defaults = defaults * len(names)
         tables.setdefault(current, []).extend(zip(names, defaults))
     return tables
 
@@ -50,6 +57,55 @@ def parse_default(text):
     if not number:
         raise ValueError("cannot read default '%s'" % text)
     return float(number.group(1))
+
+
+# Options of `foldingmeshes --help` whose "(default X" states a filter parameter's default:
+# (command section, option) -> (class, property).
+CLI_OPTIONS = {
+    ("detect", "--tolerance"): ("vtkSymmetryPlaneDetector", "Tolerance"),
+    ("detect", "--candidates"): ("vtkSymmetryPlaneDetector", "NumberOfCandidates"),
+    ("detect", "--seed"): ("vtkSymmetryPlaneDetector", "RandomSeed"),
+    ("fold", "--tolerance"): ("vtkFoldingTreeBuilder", "Tolerance"),
+    ("fold", "--min-area-fraction"): ("vtkFoldingTreeBuilder", "MinimumAreaFraction"),
+    ("fold", "--max-folds"): ("vtkFoldingTreeBuilder", "MaximumFolds"),
+    ("fold", "--min-faces"): ("vtkFoldingTreeBuilder", "MinimumFaces"),
+    ("fold", "--seed"): ("vtkFoldingTreeBuilder", "RandomSeed"),
+    ("fold", "--sampled-search-above"): ("vtkFoldingTreeBuilder", "SampledSearchAboveFaces"),
+}
+
+
+def check_command_line(program):
+    """Failures among the CLI_OPTIONS defaults stated by `program --help`."""
+    usage = subprocess.run([program, "--help"], capture_output=True, text=True,
+                           check=True).stdout
+    section, texts, current = None, {}, None
+    for line in usage.splitlines():
+        heading = re.match(r"^(\w+): ", line)
+        option = re.match(r"^  (--[\w-]+)", line)
+        if heading:
+            section, current = heading.group(1), None
+        elif option and section:
+            current = (section, option.group(1))
+            texts[current] = line
+        elif current and line.startswith(" " * 20):  # an option's continuation line
+            texts[current] += " " + line.strip()
+        else:
+            current = None
+    stated = {}
+    for key, text in texts.items():
+        default = re.search(r"\(default ([-0-9.eE+]+)", text)
+        if default:
+            stated[key] = float(default.group(1))
+    failures = 0
+    for (section, option), (class_name, name) in CLI_OPTIONS.items():
+        actual = getattr(getattr(foldingmeshes, class_name)(), "Get" + name)()
+        ok = (section, option) in stated and \
+            abs(stated[(section, option)] - actual) <= 1e-12 * max(1.0, abs(actual))
+        print("%s %s %s: --help %s, C++ %s.%s %s" % (
+            "ok    " if ok else "FAILED", section, option, stated.get((section, option)),
+            class_name, name, actual))
+        failures += 0 if ok else 1
+    return failures
 
 
 def main():
@@ -94,6 +150,8 @@ def main():
             print("%s %s.%s: README %s, C++ %s" % ("ok    " if ok else "FAILED", class_name,
                                                    name, default, actual))
             failures += 0 if ok else 1
+    if len(sys.argv) > 2:
+        failures += check_command_line(sys.argv[2])
     print("%d failure(s)" % failures if failures else "all README defaults equal the C++ ones")
     return 1 if failures else 0
 
