@@ -15,6 +15,7 @@
 #include <vtkStreamingDemandDrivenPipeline.h>
 
 #include <algorithm>
+#include <string>
 
 namespace foldingmeshes
 {
@@ -58,6 +59,87 @@ void FillMissingBlocks(vtkMultiBlockDataSet* target, vtkMultiBlockDataSet* sourc
       target->SetBlock(b, fromTree ? CopyTree(fromTree).GetPointer() : from);
   }
 }
+}
+
+//------------------------------------------------------------------------------
+std::string TreeStructure(vtkMultiBlockDataSet* tree)
+{
+  // "M<n>;" then per block "<length>:<name>" and the child: a nested "M..." or "L" (leaf).
+  std::string text = "M" + std::to_string(tree->GetNumberOfBlocks()) + ";";
+  for (unsigned int b = 0; b < tree->GetNumberOfBlocks(); ++b)
+  {
+    const char* name = tree->HasMetaData(b)
+      ? tree->GetMetaData(b)->Get(vtkCompositeDataSet::NAME())
+      : nullptr;
+    const std::string blockName = name ? name : "";
+    text += std::to_string(blockName.size()) + ":" + blockName;
+    if (auto child = vtkMultiBlockDataSet::SafeDownCast(tree->GetBlock(b)))
+      text += TreeStructure(child);
+    else
+      text += "L";
+  }
+  return text;
+}
+
+namespace
+{
+/// Reads a number followed by `end` at `pos`; false when the text does not continue so.
+bool ReadCount(const std::string& text, size_t& pos, char end, size_t& value)
+{
+  const size_t stop = text.find(end, pos);
+  if (stop == std::string::npos || stop == pos || stop - pos > 9)
+    return false;
+  value = 0;
+  for (size_t i = pos; i < stop; ++i)
+  {
+    if (text[i] < '0' || text[i] > '9')
+      return false;
+    value = 10 * value + static_cast<size_t>(text[i] - '0');
+  }
+  pos = stop + 1;
+  return true;
+}
+
+bool ReadStructure(const std::string& text, size_t& pos, vtkMultiBlockDataSet* tree, int depth)
+{
+  size_t blocks = 0;
+  if (depth > 1000 || pos >= text.size() || text[pos++] != 'M' ||
+    !ReadCount(text, pos, ';', blocks) || blocks > text.size())
+    return false;
+  tree->SetNumberOfBlocks(static_cast<unsigned int>(blocks));
+  for (unsigned int b = 0; b < blocks; ++b)
+  {
+    size_t length = 0;
+    if (!ReadCount(text, pos, ':', length) || length > text.size() - pos)
+      return false;
+    const std::string name = text.substr(pos, length);
+    pos += length;
+    if (pos >= text.size())
+      return false;
+    if (text[pos] == 'M')
+    {
+      vtkNew<vtkMultiBlockDataSet> child;
+      if (!ReadStructure(text, pos, child, depth + 1))
+        return false;
+      tree->SetBlock(b, child);
+    }
+    else if (text[pos++] != 'L')
+      return false;
+    if (!name.empty())
+      tree->GetMetaData(b)->Set(vtkCompositeDataSet::NAME(), name.c_str());
+  }
+  return true;
+}
+}
+
+bool SetTreeStructure(vtkMultiBlockDataSet* tree, const std::string& structure)
+{
+  tree->Initialize();
+  size_t pos = 0;
+  if (ReadStructure(structure, pos, tree, 0) && pos == structure.size())
+    return true;
+  tree->Initialize();
+  return false;
 }
 
 //------------------------------------------------------------------------------
@@ -201,11 +283,28 @@ void ParallelRun::Broadcast(int& status,
   values.resize(static_cast<size_t>(header[1]));
   if (header[1] > 0)
     this->Controller->Broadcast(values.data(), header[1], 0);
-  if (!this->Root)
+  for (int i = 0; i < outputVector->GetNumberOfInformationObjects(); ++i)
   {
-    for (int i = 0; i < outputVector->GetNumberOfInformationObjects(); ++i)
-      if (vtkDataObject* output = vtkDataObject::GetData(outputVector, i))
-        output->Initialize();
+    vtkDataObject* output = vtkDataObject::GetData(outputVector, i);
+    // A tree output keeps rank 0's block structure (names, no datasets) on the other ranks,
+    // as a parallel .vtm reader gives it: collective writers such as
+    // vtkXMLPMultiBlockDataWriter need the same structure on every rank.
+    auto* tree = vtkMultiBlockDataSet::SafeDownCast(output);
+    std::string structure = this->Root && tree && status ? TreeStructure(tree) : std::string();
+    vtkIdType length = static_cast<vtkIdType>(structure.size());
+    if (tree)
+    {
+      this->Controller->Broadcast(&length, 1, 0);
+      structure.resize(static_cast<size_t>(length));
+      if (length > 0)
+        this->Controller->Broadcast(&structure[0], length, 0);
+    }
+    if (this->Root || !output)
+      continue;
+    if (tree && length > 0)
+      SetTreeStructure(tree, structure);
+    else
+      output->Initialize();
   }
 }
 

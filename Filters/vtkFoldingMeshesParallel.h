@@ -16,6 +16,7 @@
 #include <vtkSmartPointer.h>
 
 #include <functional>
+#include <string>
 #include <vector>
 
 class vtkAlgorithm;
@@ -44,6 +45,14 @@ vtkSmartPointer<vtkPolyData> AppendPieces(const std::vector<vtkSmartPointer<vtkP
  */
 vtkSmartPointer<vtkMultiBlockDataSet> MergeTreePieces(
   const std::vector<vtkSmartPointer<vtkMultiBlockDataSet>>& pieces);
+
+/**
+ * The block structure of a tree (nested multiblocks and block names, not the datasets) as
+ * text, and back: SetTreeStructure makes `tree` that structure with no datasets (false, and
+ * `tree` empty, when the text is not one TreeStructure wrote).
+ */
+std::string TreeStructure(vtkMultiBlockDataSet* tree);
+bool SetTreeStructure(vtkMultiBlockDataSet* tree, const std::string& structure);
 
 /**
  * One execution of a filter in a possibly parallel run. Parallel means `controller` is
@@ -75,8 +84,9 @@ public:
 
   /**
    * Collective: `status` and `values` of rank 0 replace those of the other ranks, whose
-   * outputs (every data object of `outputVector`) are emptied. A failed gather turns the
-   * status into 0 on every rank.
+   * outputs (every data object of `outputVector`) are emptied; a multiblock output (the
+   * folding tree) keeps rank 0's block structure and names there, without datasets. A
+   * failed gather turns the status into 0 on every rank.
    */
   void Broadcast(int& status, std::vector<double>& values, vtkInformationVector* outputVector);
 
