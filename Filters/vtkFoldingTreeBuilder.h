@@ -42,8 +42,11 @@
  *   LeafReasonName (string) and the mirrored-flag records MirroredFlagPoint,
  *   MirroredFlagLevel, MirroredFlagKind (0 tear, 1 plane), MirroredFlagMask (uint64).
  * - a folding node is a vtkMultiBlockDataSet of two blocks: 0 = the child subtree, 1 =
- *   "Plane", a vtkPolyData quad on the plane covering the child's projection (10% margin;
- *   the unfolder ignores its geometry) whose field data holds the node's metadata:
+ *   "Plane", a vtkPolyData outline (one closed polyline of 4 corners) of a rectangle on the
+ *   plane covering the child's projection (10% margin; the unfolder ignores its geometry;
+ *   an outline so that a surface view of the tree does not hide the leaves), its cell
+ *   labelled "FoldingLeafId" = the folding node's index (the active cell scalars, as on the
+ *   leaves, so ParaView colours the whole tree by FoldingLeafId) whose field data holds the node's metadata:
  *   FoldingNodeKind = 1, the common node arrays above, FoldingPlaneOrigin,
  *   FoldingPlaneNormal (3 components, the normal points into the kept half),
  *   FoldingDiscardedFaces, FoldingProjectedPoints, FoldingDiscardedOriginalFaces.

@@ -117,10 +117,14 @@ void CopyArraysById(vtkDataSetAttributes* src,
         dst->SetActiveAttribute(active->GetName(), attribute);
 }
 
-/// A quad on `plane` covering the projection of `points` (10% margin).
+/// The outline (a closed polyline) of a rectangle on `plane` covering the projection of
+/// `points` (10% margin), its one cell labelled FoldingLeafId = `nodeIndex` (the active cell
+/// scalars, as on the leaves: ParaView colours a tree by an array only when every block with
+/// cells has it). An outline, not a filled quad: planes drawn as surfaces hid the leaves.
 void BuildPlaneGlyph(const std::vector<Vec3>& points,
   const Plane& plane,
   double diagonal,
+  int nodeIndex,
   vtkPolyData* glyph)
 {
   const Vec3 n = plane.normal;
@@ -156,11 +160,15 @@ void BuildPlaneGlyph(const std::vector<Vec3>& points,
     const Vec3 p = plane.origin + c[0] * u + c[1] * v;
     corners->InsertNextPoint(p.x(), p.y(), p.z());
   }
-  vtkNew<vtkCellArray> quads;
-  const vtkIdType ids[4] = { 0, 1, 2, 3 };
-  quads->InsertNextCell(4, ids);
+  vtkNew<vtkCellArray> outline;
+  const vtkIdType ids[5] = { 0, 1, 2, 3, 0 };
+  outline->InsertNextCell(5, ids);
   glyph->SetPoints(corners);
-  glyph->SetPolys(quads);
+  glyph->SetLines(outline);
+  vtkNew<vtkIntArray> label;
+  label->SetName("FoldingLeafId");
+  label->InsertNextValue(nodeIndex);
+  glyph->GetCellData()->SetScalars(label);
 }
 
 /**
@@ -236,7 +244,7 @@ struct Writer
     }
     else
     {
-      BuildPlaneGlyph(points, node.plane, this->Tree.diagonal, meta);
+      BuildPlaneGlyph(points, node.plane, this->Tree.diagonal, index, meta);
       vtkFieldData* fd = meta->GetFieldData();
       AddDouble(fd, "FoldingPlaneOrigin", node.plane.origin.data(), 3);
       AddDouble(fd, "FoldingPlaneNormal", node.plane.normal.data(), 3);

@@ -10,7 +10,7 @@ import os
 # The OpenGL back-end registers the render window factories; import it before rendering.
 import vtkmodules.vtkRenderingOpenGL2  # noqa: F401
 from vtkmodules.vtkCommonCore import vtkLookupTable, vtkVariant
-from vtkmodules.vtkCommonDataModel import vtkDataObjectTreeIterator, vtkPolyData
+from vtkmodules.vtkCommonDataModel import vtkCellArray, vtkDataObjectTreeIterator, vtkPolyData
 from vtkmodules.vtkIOGeometry import vtkOBJReader, vtkSTLReader
 from vtkmodules.vtkIOImage import vtkPNGWriter
 from vtkmodules.vtkIOLegacy import vtkPolyDataReader
@@ -102,7 +102,17 @@ def mesh_actor(mesh, cell_array=None, lookup_table=None, color=GREY, opacity=1.0
 
 
 def plane_actor(glyph):
-    """A translucent blue actor for a plane glyph quad."""
+    """A translucent blue quad for a plane glyph: the detector's quad, or the rectangle a
+    folding tree's "Plane" outline (a closed polyline of its 4 corners) goes round."""
+    if glyph.GetNumberOfPolys() == 0 and glyph.GetNumberOfPoints() == 4:
+        quad = vtkCellArray()
+        quad.InsertNextCell(4)
+        for i in range(4):
+            quad.InsertCellPoint(i)
+        filled = vtkPolyData()
+        filled.SetPoints(glyph.GetPoints())
+        filled.SetPolys(quad)
+        glyph = filled
     return mesh_actor(glyph, color=PLANE_BLUE, opacity=0.35)
 
 

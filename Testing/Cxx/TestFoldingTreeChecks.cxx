@@ -3,6 +3,7 @@
 
 #include <vtkAlgorithm.h>
 #include <vtkCallbackCommand.h>
+#include <vtkCellArray.h>
 #include <vtkCellData.h>
 #include <vtkCommand.h>
 #include <vtkCompositeDataSet.h>
@@ -145,8 +146,14 @@ int Walk(vtkDataObject* object,
     {
       EXPECT(mb->GetNumberOfBlocks() == 2,
         label << ": " << name << ": fold with " << mb->GetNumberOfBlocks() << " blocks");
-      EXPECT(meta->GetNumberOfCells() == 1 && meta->GetNumberOfPoints() == 4,
-        label << ": " << name << ": plane glyph is not a quad");
+      EXPECT(meta->GetNumberOfLines() == 1 && meta->GetNumberOfCells() == 1 &&
+          meta->GetNumberOfPoints() == 4 && meta->GetLines()->GetCellSize(0) == 5,
+        label << ": " << name << ": plane glyph is not a closed outline of 4 corners");
+      vtkDataArray* planeLabel = meta->GetCellData()->GetScalars();
+      EXPECT(planeLabel && planeLabel->GetName() &&
+          std::string(planeLabel->GetName()) == "FoldingLeafId" &&
+          planeLabel->GetTuple1(0) == FieldValue(fd, "FoldingNodeIndex"),
+        label << ": " << name << ": plane outline not labelled FoldingLeafId = its node index");
       Vec3 n(FieldValue(fd, "FoldingPlaneNormal", 0),
         FieldValue(fd, "FoldingPlaneNormal", 1),
         FieldValue(fd, "FoldingPlaneNormal", 2));
