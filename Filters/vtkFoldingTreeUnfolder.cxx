@@ -263,6 +263,10 @@ bool vtkFoldingTreeUnfolder::MeasureToOriginal(vtkPolyData* original, vtkPolyDat
   // Over every point of both surfaces, not only the samples: a proved upper bound.
   const foldingmeshes::HausdorffBounds proved =
     foldingmeshes::SymmetricHausdorffBounds(unfolded, reference, BoundTolerance * diagonal);
+  if (!proved.converged)
+    vtkWarningMacro("HausdorffToOriginalBound: the evaluation budget ran out before the bound "
+                    "came within "
+      << BoundTolerance << " of the diagonal; it is still an upper bound, only looser.");
   AddValue(fd, "HausdorffToOriginalBound", proved.upper);
   AddValue(fd, "HausdorffToOriginalBoundRelative", diagonal > 0 ? proved.upper / diagonal : 0.0);
   this->HausdorffToOriginal = c.hausdorff;

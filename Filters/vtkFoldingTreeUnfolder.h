@@ -59,7 +59,8 @@
  * - field data "HausdorffToOriginalBound" (and "HausdorffToOriginalBoundRelative"): the
  *   symmetric Hausdorff distance over every point of both surfaces, not only the samples - a
  *   proved upper bound, within 1e-5 of the diagonal of the true distance (the core's
- *   SymmetricHausdorffBounds: branch and bound over subdivided triangles).
+ *   SymmetricHausdorffBounds: branch and bound over subdivided triangles; if its evaluation
+ *   budget runs out first - not seen on real meshes - a warning says the bound is looser).
  * The measure is the core's CompareSurfaces (Filters/Core/SurfaceDistance.h), the one the
  * command line's roundtrip and the Table 1 benchmark use. The paper's bound: with the builder's
  * defaults, HausdorffToOriginal <= RootEpsilon.

@@ -1,6 +1,7 @@
 // Certified bounds on the Hausdorff distance between triangle surfaces (SurfaceDistance.h):
-// branch and bound over subdivided triangles, bounded by dist(c) + r (Lipschitz) and by the
-// corners' distances to the triangle closest to c (convexity).
+// branch and bound over subdivided triangles, bounded by dist(c) + r (Lipschitz), by the
+// corners' distances to the triangle closest to c (convexity), and across that triangle's
+// edges by the two triangles there, space split between them by a plane.
 #include "SurfaceDistance.h"
 
 #include "ParallelTasks.h"
@@ -44,19 +45,172 @@ double Radius(const std::array<Vec3, 3>& c, const Vec3& centroid)
     (c[2] - centroid).squaredNorm() }));
 }
 
-/// The bound of piece `corner` whose centroid is at distance dc from `to`, closest to face f.
+/// The faces of `to` across each edge: the faces sharing edge k (corners k and k + 1) of
+/// face f, with the index of that edge in them. Vertices are matched by position, so an
+/// unwelded copy (a cut open seam, duplicated points) has its neighbours too.
+class EdgeNeighbors
+{
+public:
+  struct Across
+  {
+    int face; ///< the other face
+    int edge; ///< the shared edge's index in it (its corners edge, edge + 1)
+  };
+
+  explicit EdgeNeighbors(const SurfaceDistanceQuery& to)
+  {
+    const std::vector<Vec3>& points = to.Points();
+    const std::vector<Triangle>& triangles = to.Triangles();
+    // Canonical point ids: the lowest id at the same position (non-finite points: their own).
+    std::vector<int> order, canonical(points.size());
+    for (size_t i = 0; i < points.size(); ++i)
+    {
+      canonical[i] = static_cast<int>(i);
+      if (points[i].allFinite())
+        order.push_back(static_cast<int>(i));
+    }
+    auto less = [&](int i, int j)
+    {
+      const Vec3 &p = points[i], &q = points[j];
+      return p[0] != q[0] ? p[0] < q[0] : p[1] != q[1] ? p[1] < q[1] : p[2] != q[2] ? p[2] < q[2] : i < j;
+    };
+    std::sort(order.begin(), order.end(), less);
+    for (size_t k = 1; k < order.size(); ++k)
+      if (points[order[k]] == points[order[k - 1]])
+        canonical[order[k]] = canonical[order[k - 1]];
+    // Edges by their canonical ends; the faces of one edge are each other's neighbours.
+    struct Edge
+    {
+      int lo, hi, slot; ///< slot: 3 * face + edge
+    };
+    std::vector<Edge> edges;
+    edges.reserve(3 * triangles.size());
+    for (size_t f = 0; f < triangles.size(); ++f)
+      for (int k = 0; k < 3; ++k)
+      {
+        const int a = canonical[triangles[f][k]], b = canonical[triangles[f][(k + 1) % 3]];
+        if (a != b)
+          edges.push_back(Edge{ std::min(a, b), std::max(a, b), static_cast<int>(3 * f) + k });
+      }
+    std::sort(edges.begin(),
+      edges.end(),
+      [](const Edge& x, const Edge& y)
+      { return x.lo != y.lo ? x.lo < y.lo : x.hi != y.hi ? x.hi < y.hi : x.slot < y.slot; });
+    this->Offsets.assign(3 * triangles.size() + 1, 0);
+    std::vector<std::pair<int, Across>> pairs;
+    for (size_t begin = 0, end = 0; begin < edges.size(); begin = end)
+    {
+      for (end = begin + 1;
+           end < edges.size() && edges[end].lo == edges[begin].lo && edges[end].hi == edges[begin].hi;
+           ++end)
+        ;
+      // A non-manifold edge's faces are all candidates, a few of them at most.
+      const size_t last = std::min(end, begin + MaximumFacesPerEdge);
+      for (size_t i = begin; i < last; ++i)
+        for (size_t j = begin; j < last; ++j)
+          if (j != i)
+            pairs.emplace_back(edges[i].slot, Across{ edges[j].slot / 3, edges[j].slot % 3 });
+    }
+    std::sort(pairs.begin(),
+      pairs.end(),
+      [](const std::pair<int, Across>& x, const std::pair<int, Across>& y)
+      { return x.first != y.first ? x.first < y.first : x.second.face < y.second.face; });
+    for (const auto& p : pairs)
+      ++this->Offsets[p.first + 1];
+    for (size_t i = 1; i < this->Offsets.size(); ++i)
+      this->Offsets[i] += this->Offsets[i - 1];
+    this->Faces.reserve(pairs.size());
+    for (const auto& p : pairs)
+      this->Faces.push_back(p.second);
+  }
+
+  const Across* Begin(int face, int edge) const
+  {
+    return this->Faces.data() + this->Offsets[3 * face + edge];
+  }
+  const Across* End(int face, int edge) const
+  {
+    return this->Faces.data() + this->Offsets[3 * face + edge + 1];
+  }
+
+private:
+  static constexpr size_t MaximumFacesPerEdge = 4;
+  std::vector<int> Offsets;
+  std::vector<Across> Faces;
+};
+
+/// The unit direction perpendicular to edge (a, b) towards o (zero if there is none).
+Vec3 Inward(const Vec3& a, const Vec3& b, const Vec3& o)
+{
+  const Vec3 e = b - a, w = o - a;
+  const double ee = e.squaredNorm();
+  if (!(ee > 0.0))
+    return Vec3::Zero();
+  const Vec3 u = w - (w.dot(e) / ee) * e;
+  const double n = u.norm();
+  return n > 0.0 && std::isfinite(n) ? Vec3(u / n) : Vec3::Zero();
+}
+
+/// The bound of piece `corner` whose centroid is at distance dc from `to`, closest to face f:
+/// the least of dist(c) + r, max_i dist(v_i, f) and, for a piece reaching over an edge of f,
+/// the two-face bound of every face g across that edge (see SurfaceDistance.h).
 double Bound(const std::array<Vec3, 3>& corner,
   const Vec3& centroid,
   double dc,
   int f,
-  const SurfaceDistanceQuery& to)
+  const SurfaceDistanceQuery& to,
+  const EdgeNeighbors& neighbors)
 {
   double bound = dc + Radius(corner, centroid);
-  if (f >= 0)
-    bound = std::min(bound,
-      std::max({ to.FaceDistance(corner[0], f),
-        to.FaceDistance(corner[1], f),
-        to.FaceDistance(corner[2], f) }));
+  if (f < 0)
+    return bound;
+  const std::array<double, 3> df = { to.FaceDistance(corner[0], f),
+    to.FaceDistance(corner[1], f),
+    to.FaceDistance(corner[2], f) };
+  bound = std::min(bound, std::max({ df[0], df[1], df[2] }));
+  const std::vector<Vec3>& points = to.Points();
+  const std::vector<Triangle>& triangles = to.Triangles();
+  const Triangle& t = triangles[f];
+  for (int k = 0; k < 3 && bound > dc; ++k)
+  {
+    const Vec3 &a = points[t[k]], &b = points[t[(k + 1) % 3]];
+    const Vec3 u = Inward(a, b, points[t[(k + 2) % 3]]);
+    if (!((corner[0] - a).dot(u) < 0.0 || (corner[1] - a).dot(u) < 0.0 ||
+          (corner[2] - a).dot(u) < 0.0))
+      continue; // the piece does not reach over this edge
+    for (const EdgeNeighbors::Across* g = neighbors.Begin(f, k); g != neighbors.End(f, k); ++g)
+    {
+      // Space split by the plane through the edge between the two faces, normal m: on its
+      // side s >= 0 dist <= dist to f, on s <= 0 dist <= dist to g; both convex, so on the
+      // piece's part on each side the bound is the largest value at that part's corners -
+      // the piece's corners there and the points where its edges cross the plane.
+      const Triangle& tg = triangles[g->face];
+      const Vec3 m = u -
+        Inward(points[tg[g->edge]], points[tg[(g->edge + 1) % 3]], points[tg[(g->edge + 2) % 3]]);
+      std::array<double, 3> s;
+      for (int i = 0; i < 3; ++i)
+        s[i] = (corner[i] - a).dot(m);
+      if (!std::isfinite(s[0] + s[1] + s[2]))
+        continue;
+      double value = 0.0;
+      for (int i = 0; i < 3 && value < bound; ++i)
+      {
+        if (s[i] >= 0.0)
+          value = std::max(value, df[i]);
+        if (s[i] <= 0.0)
+          value = std::max(value, to.FaceDistance(corner[i], g->face));
+      }
+      for (int i = 0; i < 3 && value < bound; ++i)
+      {
+        const int j = (i + 1) % 3;
+        if ((s[i] < 0.0) == (s[j] < 0.0) || s[i] == 0.0 || s[j] == 0.0)
+          continue;
+        const Vec3 x = corner[i] + (s[i] / (s[i] - s[j])) * (corner[j] - corner[i]);
+        value = std::max({ value, to.FaceDistance(x, f), to.FaceDistance(x, g->face) });
+      }
+      bound = std::min(bound, value);
+    }
+  }
   return bound;
 }
 
@@ -87,21 +241,36 @@ HausdorffBounds DirectedHausdorffBounds(const TriangleMesh& from,
     result.upper = result.lower;
     return result;
   }
+  const EdgeNeighbors neighbors(to);
   std::priority_queue<Piece, std::vector<Piece>, ByBound> heap;
   long long created = 0;
+  // Pieces whose bound is settled (at most the stop level, which only grows: they are never
+  // split) leave the heap; only the largest of their bounds is kept. Memory: the open pieces.
+  double settled = 0.0;
+  auto stopLevel = [&]() { return std::max(result.lower, floor) + tolerance; };
+  auto keep = [&](const Piece& piece)
+  {
+    if (piece.bound > stopLevel())
+      heap.push(piece);
+    else
+      settled = std::max(settled, piece.bound);
+  };
   const size_t firstCentroid = samples.size() - from.triangles.size();
   for (size_t f = 0; f < from.triangles.size(); ++f)
   {
     const Triangle& t = from.triangles[f];
     Piece piece{ { from.points[t[0]], from.points[t[1]], from.points[t[2]] }, 0.0, created++ };
-    piece.bound = Bound(
-      piece.corner, samples[firstCentroid + f], d[firstCentroid + f], face[firstCentroid + f], to);
-    heap.push(piece);
+    piece.bound = Bound(piece.corner,
+      samples[firstCentroid + f],
+      d[firstCentroid + f],
+      face[firstCentroid + f],
+      to,
+      neighbors);
+    keep(piece);
   }
   std::vector<Piece> split;
   std::vector<std::array<Vec3, 3>> children;
-  auto open = [&]()
-  { return !heap.empty() && heap.top().bound > std::max(result.lower, floor) + tolerance; };
+  auto open = [&]() { return !heap.empty() && heap.top().bound > stopLevel(); };
   while (open() && result.evaluations < maxEvaluations)
   {
     split.clear();
@@ -142,13 +311,14 @@ HausdorffBounds DirectedHausdorffBounds(const TriangleMesh& from,
         for (vtkIdType c = begin; c < end; ++c)
         {
           const size_t at = 7 * (c / 4) + c % 4;
-          bounds[c] = Bound(children[c], samples[at], d[at], face[at], to);
+          bounds[c] = Bound(children[c], samples[at], d[at], face[at], to, neighbors);
         }
       });
     for (size_t c = 0; c < children.size(); ++c)
-      heap.push(Piece{ children[c], bounds[c], created++ });
+      keep(Piece{ children[c], bounds[c], created++ });
   }
-  result.upper = std::max(result.lower, heap.empty() ? 0.0 : heap.top().bound);
+  result.converged = !open();
+  result.upper = std::max({ result.lower, settled, heap.empty() ? 0.0 : heap.top().bound });
   return result;
 }
 
@@ -173,6 +343,7 @@ HausdorffBounds SymmetricHausdorffBounds(const TriangleMesh& a,
   result.lower = std::max(ab.lower, ba.lower);
   result.upper = std::max(ab.upper, ba.upper);
   result.evaluations = ab.evaluations + ba.evaluations;
+  result.converged = ab.converged && ba.converged;
   return result;
 }
 }

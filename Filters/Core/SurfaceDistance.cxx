@@ -83,6 +83,16 @@ double SurfaceDistanceQuery::FaceDistance(const Vec3& p, int face) const
     ClosestPointTriangle(p, m.points[t[0]], m.points[t[1]], m.points[t[2]]).squaredDistance);
 }
 
+const std::vector<Vec3>& SurfaceDistanceQuery::Points() const
+{
+  return this->Impl->Mesh.points;
+}
+
+const std::vector<Triangle>& SurfaceDistanceQuery::Triangles() const
+{
+  return this->Impl->Mesh.triangles;
+}
+
 std::vector<Vec3> SurfaceSamplePoints(const TriangleMesh& mesh)
 {
   std::vector<char> used(mesh.points.size(), 0);

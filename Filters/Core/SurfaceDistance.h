@@ -35,6 +35,9 @@ public:
     std::vector<int>& faces) const;
   /// Distance from p to triangle `face` of the surface.
   double FaceDistance(const Vec3& p, int face) const;
+  /// The surface's points and triangles (the copy the queries use).
+  const std::vector<Vec3>& Points() const;
+  const std::vector<Triangle>& Triangles() const;
 
 private:
   struct Internal;
@@ -75,7 +78,13 @@ struct HausdorffBounds
   double lower = 0.0;        ///< a distance measured at a point of the surface
   double upper = 0.0;        ///< proved: no point of the surface is farther
   long long evaluations = 0; ///< point-to-surface distances computed
+  /// upper - lower is within the tolerance (or upper within floor + tolerance); false: the
+  /// evaluation budget ran out first, `upper` is still proved but looser.
+  bool converged = true;
 };
+
+/// Evaluation budget of one direction of the bounds below.
+constexpr long long DefaultMaximumEvaluations = 50000000;
 
 /**
  * The directed Hausdorff distance sup over every point x of every triangle of `from` (not
@@ -84,21 +93,28 @@ struct HausdorffBounds
  * proof. On a (sub)triangle P with centroid c and corners v_i within r of c, two bounds hold:
  * dist(x, to) <= dist(c) + r (the distance is 1-Lipschitz), and dist(x, to) <= dist(x, T)
  * <= max_i dist(v_i, T) for T the triangle of `to` closest to c (the distance to one
- * triangle is convex) - the second is exact where P lies over a single flat triangle. Branch
- * and bound: the piece with the largest bound is split into four at its edge midpoints (in
- * batches, the distances in parallel), until upper - lower <= tolerance or maxEvaluations
- * distances were computed (then `upper` is still a bound, only looser). An empty `from`
- * gives 0; an empty `to` infinity. Deterministic, for any thread count.
+ * triangle is convex) - the second is exact where P lies over a single flat triangle. Where
+ * P reaches over an edge of T, for each triangle U across it (vertices matched by position):
+ * a plane through the edge (bisecting the angle of T and U) splits P in two convex parts,
+ * T bounds the one on its side and U the other, each by its largest value at the part's
+ * corners - exact where P lies over two flat triangles, so a piece crossing an edge of `to`
+ * at distance 0 needs no splitting down to the tolerance (only pieces at a vertex of `to`
+ * do: a few per level). Branch and bound: the piece with the largest bound is split into
+ * four at its edge midpoints (in batches, the distances in parallel), until upper - lower <=
+ * tolerance or maxEvaluations distances were computed (then `upper` is still a bound, only
+ * looser, and `converged` false). Memory: the pieces still above the stop level, fewer than
+ * maxEvaluations / 2. An empty `from` gives 0; an empty `to` infinity. Deterministic, for
+ * any thread count.
  */
 HausdorffBounds DirectedHausdorffBounds(const TriangleMesh& from,
   const SurfaceDistanceQuery& to,
   double tolerance,
-  long long maxEvaluations = 50000000,
+  long long maxEvaluations = DefaultMaximumEvaluations,
   double floor = 0.0);
 
 /**
  * Both ways: lower = max of the two lowers, upper = max of the two uppers (the symmetric
- * Hausdorff distance between the two surfaces lies in [lower, upper]). `floor` (both
+ * Hausdorff distance between the two surfaces lies in [lower, upper]), converged if both are. `floor` (both
  * functions): pieces are split only while their bound exceeds max(lower, floor) + tolerance,
  * so with floor = a threshold t the bounds decide quickly whether the distance is within t
  * (upper <= t + tolerance) or not (lower > t); below t they are then not tight.
@@ -106,7 +122,7 @@ HausdorffBounds DirectedHausdorffBounds(const TriangleMesh& from,
 HausdorffBounds SymmetricHausdorffBounds(const TriangleMesh& a,
   const TriangleMesh& b,
   double tolerance,
-  long long maxEvaluations = 50000000,
+  long long maxEvaluations = DefaultMaximumEvaluations,
   double floor = 0.0);
 }
 
