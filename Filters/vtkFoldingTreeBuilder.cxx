@@ -2,6 +2,7 @@
 
 #include "Core/FoldingSegmentation.h"
 #include "Core/FoldingTreeBuilder.h"
+#include "vtkFoldingArrays.h"
 #include "vtkFoldingMeshesParallel.h"
 #include "vtkFoldingTreeIO.h"
 #include "vtkTriangleMeshAdapter.h"
@@ -164,11 +165,14 @@ int vtkFoldingTreeBuilder::RequestWholeData(vtkInformation*,
   {
     vtkWarningMacro("Folding aborted: the tree is incomplete (unfinished regions are leaves).");
   }
-  if (!foldingmeshes::FoldingTreeToMultiBlock(folding, surface, tree, error))
+  std::vector<std::string> notes;
+  if (!foldingmeshes::FoldingTreeToMultiBlock(folding, surface, tree, error, &notes))
   {
     vtkErrorMacro("The builder produced an invalid folding tree: " << error << ".");
     return 0;
   }
+  for (const std::string& note : notes)
+    vtkWarningMacro("Folding tree: " << note << ".");
   this->OriginalFaces = folding.numberOfOriginalFaces;
   this->StoredFaces = folding.StoredFaces();
   this->Compression = folding.Compression();
@@ -176,6 +180,12 @@ int vtkFoldingTreeBuilder::RequestWholeData(vtkInformation*,
 
   // Output 1: the segmentation view.
   segmentation->ShallowCopy(surface);
+  std::vector<std::string> renamed;
+  foldingmeshes::RenameReservedArrays(
+    segmentation->GetCellData(), { "FoldingLeafId", "FoldingDepth", "FoldingRole" }, renamed);
+  for (const std::string& r : renamed)
+    vtkWarningMacro(
+      "Segmentation output: the input's cell array " << r << " (the name is the builder's).");
   const vtkIdType nf = segmentation->GetNumberOfCells();
   vtkNew<vtkIntArray> leafId, depth, role;
   leafId->SetName("FoldingLeafId");

@@ -18,12 +18,19 @@
  *   point (the centroid of the stored points, no cell) whose field data holds OriginalFaces,
  * OriginalPoints, DroppedFaces, StoredFaces, StoredPoints, Compression (1 - stored/original),
  * TreeHeight, NumberOfNodes, NumberOfLeaves, NumberOfFolds, MaximumFoldsOnPath, OriginalArea,
- * BuildSeconds, RootEpsilon, Diagonal, Aborted.
+ * BuildSeconds, RootEpsilon, Diagonal, Aborted, and what the unfolder restores of the input:
+ * its field arrays (each under "InputField:" + its name), "InputPointAttributes" and
+ * "InputCellAttributes" (string arrays, an entry "k:name" per vtkDataSetAttributes attribute
+ * type k: the name of its active scalars, vectors, normals, tcoords, tensors, global ids,
+ * pedigree ids, ...; "k:" for none) and "InputPointsDataType" (VTK type id of its points).
  * - every node block is named after its node index i (preorder, as in the core tree):
  *   "Leaf i", "Fold i (depth d)", "Segmentation i (depth d)".
  * - a leaf is a vtkPolyData (the leaf mesh: double points, triangles) carrying every point
  *   and cell array of the triangulated input (values copied by original id, active point
- *   attributes kept), point arrays "OriginalPointId" (vtkIdType), "TearMask" and
+ *   attributes kept; unnamed arrays named "UnnamedPointArray<k>" / "UnnamedCellArray<k>";
+ *   arrays VTK's XML files cannot store, e.g. vtkVariantArray, left out; an input array named
+ *   like one of the tree's or the unfolder's own arrays carried as "<name>_input"; each with a
+ *   warning), point arrays "OriginalPointId" (vtkIdType), "TearMask" and
  *   "PlaneMask" (vtkTypeUInt64Array, bit d = tree level d, see Core/FoldingTree.h),
  *   "Projected" (unsigned char 0/1), "ErrorBudget" (double: how far the unfolder may still
  *   move the point without breaking the root epsilon bound; optional on reading),
@@ -59,7 +66,9 @@
  * - readers identify nodes by structure and FoldingNodeKind, not by block names; node indices
  *   come from FoldingNodeIndex (see vtkFoldingTreeIO.h).
  *
- * Output 1 (vtkPolyData): the triangulated input with cell arrays "FoldingLeafId" (node index
+ * Output 1 (vtkPolyData): the triangulated input (an input cell array named FoldingLeafId,
+ * FoldingDepth or FoldingRole renamed "<name>_input", with a warning) with cell arrays
+ * "FoldingLeafId" (node index
  * of the leaf that reproduces the face: the leaf storing it, or, for a face removed by a fold,
  * the leaf holding the face whose mirror image it is - matched by the nearest mirrored
  * centroid and followed through nested folds, see Core/FoldingSegmentation.h - so a mirrored

@@ -19,12 +19,19 @@ namespace foldingmeshes
  * information block. Leaves carry the point and cell arrays of `triangulatedInput` (the
  * triangulated input the tree was built from: leaf original point / face ids index its
  * points / cells), copied by original id; it may be null (then only the tree's own arrays).
+ * Unnamed input arrays are named ("UnnamedPointArray0", ...), arrays VTK's XML files cannot
+ * store (vtkVariantArray) are left out, arrays named like the tree's or the unfolder's own
+ * are renamed (vtkFoldingArrays.h); `notes` (optional) receives a sentence per kind of change.
+ * The "Tree" block records the input's field arrays (prefixed "InputField:"), its active
+ * attribute names ("InputPointAttributes" / "InputCellAttributes") and its point data type
+ * ("InputPointsDataType") for the unfolder.
  * False when the tree is invalid (FoldingTree::Validate) or the ids do not fit the input.
  */
 bool FoldingTreeToMultiBlock(const FoldingTree& tree,
   vtkPolyData* triangulatedInput,
   vtkMultiBlockDataSet* out,
-  std::string& error);
+  std::string& error,
+  std::vector<std::string>* notes = nullptr);
 /// The same without the error message.
 bool FoldingTreeToMultiBlock(const FoldingTree& tree,
   vtkPolyData* triangulatedInput,

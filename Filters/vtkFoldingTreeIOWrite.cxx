@@ -1,4 +1,5 @@
 // FoldingTreeToMultiBlock: core FoldingTree -> vtkMultiBlockDataSet (vtkFoldingTreeIO.h).
+#include "vtkFoldingArrays.h"
 #include "vtkFoldingTreeIO.h"
 
 #include <vtkCellArray.h>
@@ -89,32 +90,92 @@ void AddNodeMetadata(vtkFieldData* fd, const FoldingNode& node, int index)
 }
 
 /// Copies the arrays of `src` to `dst` (sized n) picking tuple ids[i] for tuple i; active
-/// attributes follow by name.
+/// attributes follow.
 void CopyArraysById(vtkDataSetAttributes* src,
   vtkDataSetAttributes* dst,
   const std::vector<int>& ids)
 {
-  const vtkIdType n = static_cast<vtkIdType>(ids.size());
-  for (int a = 0; a < src->GetNumberOfArrays(); ++a)
+  const std::vector<vtkIdType> wide(ids.begin(), ids.end());
+  CopyTuplesById(src, dst, wide.data(), static_cast<vtkIdType>(wide.size()));
+}
+
+/// A list of names joined by ", ".
+std::string Join(const std::vector<std::string>& names)
+{
+  std::string s;
+  for (const std::string& n : names)
+    s += (s.empty() ? "" : ", ") + n;
+  return s;
+}
+
+/**
+ * The input as the leaves carry it: a shallow copy of `input` whose unnamed point / cell
+ * arrays are named, whose arrays VTK's XML files cannot store are left out, and whose arrays
+ * named like the tree's or the unfolder's own arrays are renamed (vtkFoldingArrays.h); each
+ * change is described in `notes`.
+ */
+vtkSmartPointer<vtkPolyData> CarriedInput(vtkPolyData* input, std::vector<std::string>& notes)
+{
+  auto carried = vtkSmartPointer<vtkPolyData>::New();
+  carried->ShallowCopy(input);
+  vtkNew<vtkFieldData> field;
+  field->ShallowCopy(input->GetFieldData());
+  carried->SetFieldData(field);
+  std::vector<std::string> named, dropped, renamed;
+  NameUnnamedArrays(carried->GetPointData(), "UnnamedPointArray", named);
+  NameUnnamedArrays(carried->GetCellData(), "UnnamedCellArray", named);
+  RemoveUnwritableArrays(carried->GetPointData(), dropped);
+  RemoveUnwritableArrays(carried->GetCellData(), dropped);
+  RemoveUnwritableArrays(carried->GetFieldData(), dropped);
+  std::vector<std::string> pointNames = LeafPointArrayNames(), cellNames = LeafCellArrayNames();
+  pointNames.insert(
+    pointNames.end(), UnfoldedPointArrayNames().begin(), UnfoldedPointArrayNames().end());
+  cellNames.insert(
+    cellNames.end(), UnfoldedCellArrayNames().begin(), UnfoldedCellArrayNames().end());
+  RenameReservedArrays(carried->GetPointData(), pointNames, renamed);
+  RenameReservedArrays(carried->GetCellData(), cellNames, renamed);
+  if (!named.empty())
+    notes.push_back("unnamed input arrays carried as " + Join(named));
+  if (!dropped.empty())
+    notes.push_back("input arrays VTK's XML files cannot store are not carried: " + Join(dropped));
+  if (!renamed.empty())
+    notes.push_back("input arrays named like the folding tree's own arrays are carried renamed: " +
+      Join(renamed));
+  return carried;
+}
+
+/// Prefix of the input's field arrays on the "Tree" block.
+const char* const InputFieldPrefix = "InputField:";
+
+/// The input's field arrays, active attribute names and point precision on the "Tree" block.
+void AddInputRecord(vtkPolyData* carried, vtkFieldData* fd)
+{
+  vtkFieldData* input = carried->GetFieldData();
+  for (int a = 0; input && a < input->GetNumberOfArrays(); ++a)
   {
-    vtkAbstractArray* in = src->GetAbstractArray(a);
-    if (!in || !in->GetName())
+    vtkAbstractArray* array = input->GetAbstractArray(a);
+    if (!array)
       continue;
-    vtkSmartPointer<vtkAbstractArray> out = vtk::TakeSmartPointer(in->NewInstance());
-    out->SetName(in->GetName());
-    out->SetNumberOfComponents(in->GetNumberOfComponents());
-    for (int c = 0; c < in->GetNumberOfComponents(); ++c)
-      if (in->GetComponentName(c))
-        out->SetComponentName(c, in->GetComponentName(c));
-    out->SetNumberOfTuples(n);
-    for (vtkIdType i = 0; i < n; ++i)
-      out->SetTuple(i, ids[i], in);
-    dst->AddArray(out);
+    vtkSmartPointer<vtkAbstractArray> copy = vtk::TakeSmartPointer(array->NewInstance());
+    copy->DeepCopy(array);
+    copy->SetName(
+      (std::string(InputFieldPrefix) + (array->GetName() ? array->GetName() : "")).c_str());
+    fd->AddArray(copy);
   }
-  for (int attribute = 0; attribute < vtkDataSetAttributes::NUM_ATTRIBUTES; ++attribute)
-    if (vtkAbstractArray* active = src->GetAbstractAttribute(attribute))
-      if (active->GetName())
-        dst->SetActiveAttribute(active->GetName(), attribute);
+  for (int points = 0; points < 2; ++points)
+  {
+    vtkNew<vtkStringArray> names;
+    names->SetName(points ? "InputPointAttributes" : "InputCellAttributes");
+    // "k:name" per attribute k ("k:" for none: XML files may lose empty strings).
+    const std::vector<std::string> active =
+      ActiveAttributeNames(points ? static_cast<vtkDataSetAttributes*>(carried->GetPointData())
+                                  : static_cast<vtkDataSetAttributes*>(carried->GetCellData()));
+    for (size_t k = 0; k < active.size(); ++k)
+      names->InsertNextValue(std::to_string(k) + ":" + active[k]);
+    fd->AddArray(names);
+  }
+  if (carried->GetPoints())
+    AddInt(fd, "InputPointsDataType", carried->GetPoints()->GetDataType());
 }
 
 /// The outline (a closed polyline) of a rectangle on `plane` covering the projection of
@@ -397,7 +458,8 @@ struct Writer
 bool FoldingTreeToMultiBlock(const FoldingTree& tree,
   vtkPolyData* triangulatedInput,
   vtkMultiBlockDataSet* out,
-  std::string& error)
+  std::string& error,
+  std::vector<std::string>* notes)
 {
   if (!out)
   {
@@ -428,7 +490,13 @@ bool FoldingTreeToMultiBlock(const FoldingTree& tree,
         }
     }
   }
-  Writer writer{ tree, triangulatedInput };
+  vtkSmartPointer<vtkPolyData> carried;
+  if (triangulatedInput)
+  {
+    std::vector<std::string> ignored;
+    carried = CarriedInput(triangulatedInput, notes ? *notes : ignored);
+  }
+  Writer writer{ tree, carried };
   out->SetNumberOfBlocks(2);
   out->SetBlock(0, writer.Node(0));
   out->GetMetaData(0u)->Set(vtkCompositeDataSet::NAME(), BlockName(tree, 0).c_str());
@@ -457,6 +525,8 @@ bool FoldingTreeToMultiBlock(const FoldingTree& tree,
   AddDouble(fd, "RootEpsilon", &tree.rootEpsilon);
   AddDouble(fd, "Diagonal", &tree.diagonal);
   AddInt(fd, "Aborted", tree.aborted ? 1 : 0);
+  if (carried)
+    AddInputRecord(carried, fd);
   out->SetBlock(1, info);
   out->GetMetaData(1u)->Set(vtkCompositeDataSet::NAME(), "Tree");
   return true;

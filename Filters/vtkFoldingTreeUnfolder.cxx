@@ -2,6 +2,7 @@
 
 #include "Core/FoldingTreeUnfolder.h"
 #include "Core/SurfaceDistance.h"
+#include "vtkFoldingArrays.h"
 #include "vtkFoldingMeshesParallel.h"
 #include "vtkFoldingTreeIO.h"
 #include "vtkTriangleMeshAdapter.h"
@@ -23,13 +24,17 @@
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
 #include <vtkSmartPointer.h>
+#include <vtkStringArray.h>
 #include <vtkTypeUInt64Array.h>
 #include <vtkUnsignedCharArray.h>
+#include <vtkVariant.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <string>
 #include <unordered_map>
+#include <utility>
 #include <vector>
 
 vtkStandardNewMacro(vtkFoldingTreeUnfolder);
@@ -52,27 +57,22 @@ void AddValue(vtkFieldData* fd, const char* name, double value)
   fd->AddArray(a);
 }
 
+/// The builder's arrays in the leaves (read by the unfolder, not carried to the output).
 bool IsTreeArray(const char* name, bool points)
 {
-  static const char* const pointNames[] = {
-    "OriginalPointId", "TearMask", "PlaneMask", "Projected", "InputBorderNeighbors"
-  };
-  if (points)
-  {
-    for (const char* n : pointNames)
-      if (std::strcmp(name, n) == 0)
-        return true;
-    return false;
-  }
-  return std::strcmp(name, "OriginalCellId") == 0 || std::strcmp(name, "FoldingLeafId") == 0 ||
-    std::strcmp(name, "FoldingCopy") == 0 || std::strcmp(name, "FoldingMirrored") == 0 ||
-    std::strcmp(name, "FoldingMirrorMask") == 0 || std::strcmp(name, "FoldingFilled") == 0;
+  const std::vector<std::string>& names =
+    points ? foldingmeshes::LeafPointArrayNames() : foldingmeshes::LeafCellArrayNames();
+  return std::find(names.begin(), names.end(), name) != names.end();
 }
 
-/// Names of the arrays present in every leaf with the same type, components and size.
-std::vector<std::string> CommonArrays(const std::vector<vtkPolyData*>& leaves, bool points)
+/// Names of the arrays present in every leaf with the same type, components and size;
+/// `unnamed` counts the first leaf's unnamed arrays (not carried: nothing matches them).
+std::vector<std::string> CommonArrays(const std::vector<vtkPolyData*>& leaves,
+  bool points,
+  int& unnamed)
 {
   std::vector<std::string> names;
+  unnamed = 0;
   vtkPolyData* first = nullptr;
   for (vtkPolyData* leaf : leaves)
     if (leaf && !first)
@@ -88,7 +88,9 @@ std::vector<std::string> CommonArrays(const std::vector<vtkPolyData*>& leaves, b
   for (int a = 0; a < reference->GetNumberOfArrays(); ++a)
   {
     vtkAbstractArray* ref = reference->GetAbstractArray(a);
-    if (!ref || !ref->GetName() || IsTreeArray(ref->GetName(), points))
+    if (ref && (!ref->GetName() || !ref->GetName()[0]))
+      ++unnamed;
+    if (!ref || !ref->GetName() || !ref->GetName()[0] || IsTreeArray(ref->GetName(), points))
       continue;
     bool everywhere = true;
     for (vtkPolyData* leaf : leaves)
@@ -111,10 +113,10 @@ std::vector<std::string> CommonArrays(const std::vector<vtkPolyData*>& leaves, b
   return names;
 }
 
-/// Fills `out` (a vtkDataSetAttributes of n tuples) with the arrays `names` of the leaves:
-/// tuple i comes from leaf leafOf[i], local tuple localOf[i]; vectors are mapped by the
-/// linear map of copy copyOf[i].
-void CarryArrays(const std::vector<std::string>& names,
+/// Fills `out` (a vtkDataSetAttributes of n tuples) with the arrays `names` of the leaves
+/// (leaf name, output name): tuple i comes from leaf leafOf[i], local tuple localOf[i]; vectors are
+/// mapped by the linear map of copy copyOf[i].
+void CarryArrays(const std::vector<std::pair<std::string, std::string>>& names,
   const std::vector<vtkPolyData*>& leaves,
   bool points,
   const std::vector<int>& leafOf,
@@ -135,11 +137,12 @@ void CarryArrays(const std::vector<std::string>& names,
       first = leaf;
   if (!first)
     return;
-  for (const std::string& name : names)
+  for (const auto& pair : names)
   {
+    const std::string& name = pair.first;
     vtkAbstractArray* ref = attributes(first)->GetAbstractArray(name.c_str());
     vtkSmartPointer<vtkAbstractArray> array = vtk::TakeSmartPointer(ref->NewInstance());
-    array->SetName(name.c_str());
+    array->SetName(pair.second.c_str());
     array->SetNumberOfComponents(ref->GetNumberOfComponents());
     for (int c = 0; c < ref->GetNumberOfComponents(); ++c)
       if (ref->GetComponentName(c))
@@ -168,10 +171,89 @@ void CarryArrays(const std::vector<std::string>& names,
     }
     out->AddArray(array);
   }
-  for (int attribute = 0; attribute < vtkDataSetAttributes::NUM_ATTRIBUTES; ++attribute)
-    if (vtkAbstractArray* active = attributes(first)->GetAbstractAttribute(attribute))
-      if (active->GetName() && out->GetAbstractArray(active->GetName()))
-        out->SetActiveAttribute(active->GetName(), attribute);
+}
+
+/// Whether the tuples of `a` are pairwise different.
+bool AllDistinct(vtkAbstractArray* a)
+{
+  const vtkIdType n = a->GetNumberOfTuples();
+  const int nc = a->GetNumberOfComponents();
+  std::vector<std::string> keys(n);
+  vtkDataArray* data = vtkDataArray::SafeDownCast(a);
+  if (data && nc == 1)
+  {
+    std::vector<double> values(n);
+    for (vtkIdType i = 0; i < n; ++i)
+      values[i] = data->GetTuple1(i);
+    std::sort(values.begin(), values.end());
+    return std::adjacent_find(values.begin(), values.end()) == values.end();
+  }
+  for (vtkIdType i = 0; i < n; ++i)
+    for (int c = 0; c < nc; ++c)
+      keys[i] += a->GetVariantValue(i * nc + c).ToString() + '\x1f';
+  std::sort(keys.begin(), keys.end());
+  return std::adjacent_find(keys.begin(), keys.end()) == keys.end();
+}
+
+/**
+ * Makes the arrays `names[attribute]` of `out` its active attributes where they exist, except
+ * global or pedigree ids whose values repeat (mirrored copies repeat their leaf's ids: the
+ * array stays, unflagged).
+ */
+void ApplyActiveAttributes(vtkDataSetAttributes* out, const std::vector<std::string>& names)
+{
+  for (size_t attribute = 0; attribute < names.size() &&
+       attribute < static_cast<size_t>(vtkDataSetAttributes::NUM_ATTRIBUTES);
+       ++attribute)
+  {
+    vtkAbstractArray* array =
+      names[attribute].empty() ? nullptr : out->GetAbstractArray(names[attribute].c_str());
+    if (!array)
+      continue;
+    if ((attribute == vtkDataSetAttributes::GLOBALIDS ||
+          attribute == vtkDataSetAttributes::PEDIGREEIDS) &&
+      !AllDistinct(array))
+      continue;
+    out->SetActiveAttribute(names[attribute].c_str(), static_cast<int>(attribute));
+  }
+}
+
+/// The active attribute names the builder recorded on the "Tree" block (`name`), else those
+/// of the first leaf.
+std::vector<std::string> RecordedAttributes(vtkFieldData* info,
+  const char* name,
+  const std::vector<vtkPolyData*>& leaves,
+  bool points)
+{
+  if (vtkStringArray* recorded = vtkStringArray::SafeDownCast(info->GetAbstractArray(name)))
+  {
+    // Entries "k:name" (vtkFoldingTreeIOWrite.cxx).
+    std::vector<std::string> names(vtkDataSetAttributes::NUM_ATTRIBUTES);
+    for (vtkIdType k = 0; k < recorded->GetNumberOfValues(); ++k)
+    {
+      const std::string entry = recorded->GetValue(k);
+      const size_t colon = entry.find(':');
+      if (colon == std::string::npos || colon == 0 || colon > 3 ||
+        entry.find_first_not_of("0123456789") != colon)
+        continue;
+      const int attribute = std::stoi(entry.substr(0, colon));
+      if (attribute < vtkDataSetAttributes::NUM_ATTRIBUTES)
+        names[attribute] = entry.substr(colon + 1);
+    }
+    return names;
+  }
+  for (vtkPolyData* leaf : leaves)
+    if (leaf)
+    {
+      std::vector<std::string> names = foldingmeshes::ActiveAttributeNames(points
+          ? static_cast<vtkDataSetAttributes*>(leaf->GetPointData())
+          : static_cast<vtkDataSetAttributes*>(leaf->GetCellData()));
+      for (std::string& n : names)
+        if (IsTreeArray(n.c_str(), points))
+          n.clear();
+      return names;
+    }
+  return {};
 }
 }
 
@@ -344,10 +426,23 @@ int vtkFoldingTreeUnfolder::RequestWholeData(vtkInformation*,
     return 1;
   }
 
+  // The "Tree" block (validated above): what the builder recorded of its input.
+  vtkPolyData* infoBlock = vtkPolyData::SafeDownCast(input->GetBlock(1));
+  vtkFieldData* info = infoBlock ? infoBlock->GetFieldData() : nullptr;
+  vtkNew<vtkFieldData> noInfo;
+  if (!info)
+    info = noInfo;
+
   const vtkIdType np = mesh.NumberOfPoints();
   const vtkIdType nf = mesh.NumberOfFaces();
   vtkNew<vtkPoints> points;
-  points->SetDataTypeToDouble();
+  // The input's precision (float or double; trees without the record: double).
+  vtkDataArray* pointsType =
+    vtkDataArray::SafeDownCast(info->GetAbstractArray("InputPointsDataType"));
+  points->SetDataType(
+    pointsType && pointsType->GetNumberOfTuples() == 1 && pointsType->GetTuple1(0) == VTK_FLOAT
+      ? VTK_FLOAT
+      : VTK_DOUBLE);
   points->SetNumberOfPoints(np);
   for (vtkIdType i = 0; i < np; ++i)
     points->SetPoint(i, mesh.points[i].data());
@@ -414,7 +509,34 @@ int vtkFoldingTreeUnfolder::RequestWholeData(vtkInformation*,
     faceLocal[f] = it->second;
     faceCopy[f] = mesh.faceCopy[f];
   }
-  CarryArrays(CommonArrays(leaves, true),
+  // The leaves' arrays, renamed where the unfolder writes an array of the same name (only in
+  // trees not written by this builder, which renames such input arrays itself).
+  int unnamed[2] = { 0, 0 };
+  std::vector<std::pair<std::string, std::string>> carried[2];
+  for (int points = 0; points < 2; ++points)
+  {
+    const std::vector<std::string>& own =
+      points ? foldingmeshes::UnfoldedPointArrayNames() : foldingmeshes::UnfoldedCellArrayNames();
+    const std::vector<std::string> names = CommonArrays(leaves, points != 0, unnamed[points]);
+    for (const std::string& name : names)
+    {
+      std::string as = name;
+      if (std::find(own.begin(), own.end(), name) != own.end())
+      {
+        std::vector<std::string> avoid(own);
+        avoid.insert(avoid.end(), names.begin(), names.end());
+        as = foldingmeshes::FreeInputName(nullptr, name, avoid);
+        vtkWarningMacro("The leaves' " << (points ? "point" : "cell") << " array " << name
+                                       << " is carried as " << as
+                                       << " (the name is the unfolder's).");
+      }
+      carried[points].emplace_back(name, as);
+    }
+  }
+  if (unnamed[0] + unnamed[1] > 0)
+    vtkWarningMacro("Unnamed leaf arrays are not carried (" << unnamed[0] << " point, "
+                                                            << unnamed[1] << " cell arrays).");
+  CarryArrays(carried[1],
     leaves,
     true,
     pointLeaf,
@@ -422,14 +544,12 @@ int vtkFoldingTreeUnfolder::RequestWholeData(vtkInformation*,
     pointCopy,
     mesh.copies,
     output->GetPointData());
-  CarryArrays(CommonArrays(leaves, false),
-    leaves,
-    false,
-    faceLeaf,
-    faceLocal,
-    faceCopy,
-    mesh.copies,
-    output->GetCellData());
+  CarryArrays(
+    carried[0], leaves, false, faceLeaf, faceLocal, faceCopy, mesh.copies, output->GetCellData());
+  ApplyActiveAttributes(
+    output->GetPointData(), RecordedAttributes(info, "InputPointAttributes", leaves, true));
+  ApplyActiveAttributes(
+    output->GetCellData(), RecordedAttributes(info, "InputCellAttributes", leaves, false));
 
   vtkNew<vtkIdTypeArray> pointIds, cellIds;
   pointIds->SetName("OriginalPointId");
@@ -516,6 +636,29 @@ int vtkFoldingTreeUnfolder::RequestWholeData(vtkInformation*,
   if (vtkPolyData* original = vtkPolyData::GetData(inputVector[1], 0))
     if (!this->MeasureToOriginal(original, output))
       return 0;
+
+  // The input's field arrays, stored on the "Tree" block with a prefix; renamed where the
+  // unfolder's own field data has the name.
+  const std::string prefix = "InputField:";
+  for (int a = 0; a < info->GetNumberOfArrays(); ++a)
+  {
+    vtkAbstractArray* stored = info->GetAbstractArray(a);
+    if (!stored || !stored->GetName() ||
+      std::strncmp(stored->GetName(), prefix.c_str(), prefix.size()) != 0)
+      continue;
+    const std::string name = stored->GetName() + prefix.size();
+    std::string as = name;
+    if (fd->GetAbstractArray(name.c_str()))
+    {
+      as = foldingmeshes::FreeInputName(fd, name);
+      vtkWarningMacro("The input's field array " << name << " is restored as " << as
+                                                 << " (the name is the unfolder's).");
+    }
+    vtkSmartPointer<vtkAbstractArray> copy = vtk::TakeSmartPointer(stored->NewInstance());
+    copy->DeepCopy(stored);
+    copy->SetName(as.c_str());
+    fd->AddArray(copy);
+  }
   this->UpdateProgress(1.0);
   return 1;
 }

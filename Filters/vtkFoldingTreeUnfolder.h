@@ -18,8 +18,14 @@
  *   type and number of components) on every copy. Floating-point 3-component arrays are
  *   vectors: they are multiplied by the copy's linear map (reflected on mirrored copies),
  *   except arrays named like ids or masks (names ending in Id/Ids/ID/IDs or containing
- *   Mask). The builder's own TearMask, PlaneMask and Projected point arrays are not carried.
- *   A point merged by stitching takes the values of its lowest copy.
+ *   Mask). The builder's own point arrays (TearMask, PlaneMask, Projected, ErrorBudget,
+ *   InputBoundary, InputBorderNeighbors) are not carried; a leaf array named like one of the
+ *   unfolder's own arrays is carried as "<name>_input" (with a warning). The input's active
+ *   attributes (recorded on the tree's "Tree" block; older trees: the first leaf's) are active
+ *   again, except global and pedigree ids whose values the mirrored copies repeat: those stay
+ *   plain arrays. A point merged by stitching takes the values of its lowest copy.
+ * - the input's point precision (float or double; trees without the record: double) and its
+ *   field arrays (one named like the unfolder's own field data comes back as "<name>_input").
  * - point array "OriginalPointId" (input point id), cell arrays "OriginalCellId",
  *   "FoldingLeafId" (node index of the leaf), "FoldingCopy" (rank of the copy among the
  *   copies of that leaf ordered by mirror mask: 0 = the stored leaf itself),

@@ -2,6 +2,7 @@
 
 #include "Core/MeshPreparation.h"
 #include "Core/SymmetryDetection.h"
+#include "vtkFoldingArrays.h"
 #include "vtkFoldingMeshesParallel.h"
 #include "vtkTriangleMeshAdapter.h"
 
@@ -251,6 +252,14 @@ int vtkSymmetryPlaneDetector::RequestWholeData(vtkInformation*,
 
   // Output 0: the triangulated input with the labels.
   output->ShallowCopy(surface);
+  {
+    std::vector<std::string> renamed;
+    foldingmeshes::RenameReservedArrays(output->GetCellData(), { "SymmetryRegion" }, renamed);
+    foldingmeshes::RenameReservedArrays(
+      output->GetPointData(), { "SymmetryDistance", "SymmetryWeight" }, renamed);
+    for (const std::string& r : renamed)
+      vtkWarningMacro("The input's array " << r << " (the name is the detector's).");
+  }
   const vtkIdType nf = output->GetNumberOfCells();
   vtkNew<vtkIntArray> region;
   region->SetName("SymmetryRegion");

@@ -42,7 +42,8 @@
  * span touching or interpenetrating parts (artist meshes often are made that
  * way). Off: strict edge connectivity, as in the paper.
  *
- * Output 0: the triangulated input (all its point and cell arrays kept) plus
+ * Output 0: the triangulated input (all its point and cell arrays kept; one named like an
+ * array below is renamed "<name>_input", with a warning) plus
  * - cell array  "SymmetryRegion": 2 symmetric, 1 support only, 0 outside;
  * - point array "SymmetryDistance": fine distance d_i of the reflected vertex;
  * - point array "SymmetryWeight": final IRLS weight (0 outside the support);

@@ -1,13 +1,18 @@
 #include "vtkTriangleMeshAdapter.h"
+#include "vtkFoldingArrays.h"
 
 #include <vtkCellArray.h>
 #include <vtkCellArrayIterator.h>
+#include <vtkCellData.h>
 #include <vtkDataArray.h>
+#include <vtkIdTypeArray.h>
 #include <vtkNew.h>
 #include <vtkPointData.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
 #include <vtkTriangleFilter.h>
+
+#include <vector>
 
 namespace foldingmeshes
 {
@@ -17,14 +22,35 @@ vtkSmartPointer<vtkPolyData> TriangulateSurface(vtkPolyData* input,
 {
   droppedVerts = input->GetNumberOfVerts();
   droppedLines = input->GetNumberOfLines();
+  // vtkTriangleFilter copies cell data with the default copy flags, which drop cell global
+  // ids: it only carries each triangle's input cell id here, the cell arrays are copied by it.
   vtkNew<vtkPolyData> surface;
   surface->ShallowCopy(input);
+  const vtkIdType nc = input->GetNumberOfCells();
+  vtkNew<vtkIdTypeArray> cellIds;
+  cellIds->SetName("FoldingMeshesTriangulatedFrom");
+  cellIds->SetNumberOfTuples(nc);
+  for (vtkIdType c = 0; c < nc; ++c)
+    cellIds->SetValue(c, c);
+  surface->GetCellData()->Initialize();
+  surface->GetCellData()->AddArray(cellIds);
   vtkNew<vtkTriangleFilter> triangulate;
   triangulate->SetInputData(surface);
   triangulate->PassVertsOff();
   triangulate->PassLinesOff();
   triangulate->Update();
   vtkSmartPointer<vtkPolyData> result = triangulate->GetOutput();
+  vtkIdTypeArray* from =
+    vtkIdTypeArray::SafeDownCast(result->GetCellData()->GetArray(cellIds->GetName()));
+  const vtkIdType n = result->GetNumberOfCells();
+  std::vector<vtkIdType> ids(n, 0);
+  for (vtkIdType c = 0; from && c < n && c < from->GetNumberOfTuples(); ++c)
+    ids[c] = from->GetValue(c);
+  result->GetCellData()->Initialize();
+  CopyTuplesById(input->GetCellData(), result->GetCellData(), ids.data(), n);
+  // The points are the input's: every point array as it is (global ids too).
+  if (result->GetNumberOfPoints() == input->GetNumberOfPoints())
+    result->GetPointData()->ShallowCopy(input->GetPointData());
   return result;
 }
 

@@ -16,7 +16,9 @@ namespace foldingmeshes
 /**
  * Triangulates the polygons and strips of `input` (vertices and lines are dropped; the
  * counts are returned so the caller can warn). The result keeps the input's points and
- * all point and cell arrays (cell arrays of the polygons).
+ * all point and cell arrays (cell arrays of the polygons, each triangle with its polygon's
+ * tuple: every array, global ids, unnamed and non-numeric arrays included; active attributes
+ * follow).
  */
 vtkSmartPointer<vtkPolyData> TriangulateSurface(vtkPolyData* input,
   vtkIdType& droppedVerts,

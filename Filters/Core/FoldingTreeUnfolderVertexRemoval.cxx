@@ -45,6 +45,71 @@ double DistanceToTriangles(const Vec3& x,
   return std::sqrt(best);
 }
 
+/**
+ * The star face (index into `ring`/`ringFace` order) a new face over the ring of v takes its
+ * ids and flags from, among the `candidate` ones: the one whose projection
+ * into the star's plane (perpendicular to its mean normal) contains the new face's centroid,
+ * the nearest one in 3D among several; none (a crease): the one with the nearest centroid.
+ * Ties go to the first in ring order; -1 without candidates.
+ */
+int OverlappingStarFace(const std::vector<Vec3>& x,
+  int v,
+  const std::vector<int>& ring,
+  const std::vector<char>& candidate,
+  const Triangle& created)
+{
+  const int m = static_cast<int>(ring.size());
+  const Vec3 c = (x[created[0]] + x[created[1]] + x[created[2]]) / 3.0;
+  Vec3 normal = Vec3::Zero();
+  for (int i = 0; i < m; ++i)
+    normal += (x[ring[i]] - x[v]).cross(x[ring[(i + 1) % m]] - x[v]);
+  int best = -1;
+  double bestDistance = std::numeric_limits<double>::infinity();
+  if (normal.norm() > 0.0)
+  {
+    normal.normalize();
+    const Vec3 u = normal.unitOrthogonal(), w = normal.cross(u);
+    auto flat = [&](const Vec3& p)
+    { return Eigen::Vector2d((p - x[v]).dot(u), (p - x[v]).dot(w)); };
+    const Eigen::Vector2d q = flat(c), o = flat(x[v]);
+    for (int i = 0; i < m; ++i)
+    {
+      if (!candidate[i])
+        continue;
+      const Eigen::Vector2d a = flat(x[ring[i]]), b = flat(x[ring[(i + 1) % m]]);
+      const double area = Orientation(o, a, b);
+      if (area == 0.0)
+        continue;
+      const double l0 = Orientation(q, a, b) / area, l1 = Orientation(o, q, b) / area,
+                   l2 = Orientation(o, a, q) / area;
+      const double slack = -1e-9;
+      if (l0 < slack || l1 < slack || l2 < slack)
+        continue;
+      const double d =
+        ClosestPointTriangle(c, x[v], x[ring[i]], x[ring[(i + 1) % m]]).squaredDistance;
+      if (d < bestDistance)
+      {
+        bestDistance = d;
+        best = i;
+      }
+    }
+  }
+  if (best >= 0)
+    return best;
+  for (int i = 0; i < m; ++i)
+  {
+    if (!candidate[i])
+      continue;
+    const double d = (c - (x[v] + x[ring[i]] + x[ring[(i + 1) % m]]) / 3.0).squaredNorm();
+    if (d < bestDistance)
+    {
+      bestDistance = d;
+      best = i;
+    }
+  }
+  return best;
+}
+
 /// The closed 1-ring of v: star faces (v, a, b) give ring edges a -> b; ring[i] is followed
 /// by ring[i + 1], face[i] is the star face with ring edge ring[i] -> ring[i + 1]. False
 /// unless the edges form one cycle through every star face (v interior, manifold there).
@@ -358,14 +423,32 @@ bool VertexRemover::Try(int v,
 void VertexRemover::Apply(const RingRemoval& removal)
 {
   Piece& piece = this->Mesh;
+  // Each new face carries the ids, copy and flags of the old star face it overlaps most among
+  // those with the copy and filled flag of the star face whose ring edge starts at its second
+  // vertex (the copy steers the later thinning; the choice is made on the old star).
   std::map<int, int> faceAt; // ring vertex -> the star face with the ring edge from it
   for (size_t i = 0; i < removal.ring.size(); ++i)
     faceAt[removal.ring[i]] = removal.ringFace[i];
-  for (int f : removal.ringFace)
-    this->FaceAlive[f] = 0;
+  std::vector<int> likes;
+  std::vector<char> candidate(removal.ring.size());
   for (const Triangle& t : removal.created)
   {
-    const int like = faceAt[t[1]];
+    const int first = faceAt[t[1]];
+    for (size_t i = 0; i < removal.ring.size(); ++i)
+    {
+      const int f = removal.ringFace[i];
+      candidate[i] = piece.faceCopy[f] == piece.faceCopy[first] &&
+        piece.faceFilled[f] == piece.faceFilled[first];
+    }
+    const int i = OverlappingStarFace(piece.points, removal.vertex, removal.ring, candidate, t);
+    likes.push_back(i >= 0 ? removal.ringFace[i] : first);
+  }
+  for (int f : removal.ringFace)
+    this->FaceAlive[f] = 0;
+  for (size_t k = 0; k < removal.created.size(); ++k)
+  {
+    const Triangle& t = removal.created[k];
+    const int like = likes[k];
     const int f = piece.NumberOfFaces();
     piece.triangles.push_back(t);
     piece.faceOrig.push_back(piece.faceOrig[like]);

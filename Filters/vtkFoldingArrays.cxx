@@ -1,0 +1,221 @@
+#include "vtkFoldingArrays.h"
+
+#include <vtkAbstractArray.h>
+#include <vtkDataArray.h>
+#include <vtkDataSetAttributes.h>
+#include <vtkFieldData.h>
+#include <vtkSmartPointer.h>
+#include <vtkStringArray.h>
+
+#include <algorithm>
+#include <functional>
+
+namespace foldingmeshes
+{
+namespace
+{
+bool Contains(const std::vector<std::string>& names, const std::string& name)
+{
+  return std::find(names.begin(), names.end(), name) != names.end();
+}
+
+/// A copy of `array` named `name` sharing its values where the class allows.
+vtkSmartPointer<vtkAbstractArray> Renamed(vtkAbstractArray* array, const std::string& name)
+{
+  vtkSmartPointer<vtkAbstractArray> copy = vtk::TakeSmartPointer(array->NewInstance());
+  vtkDataArray* data = vtkDataArray::SafeDownCast(copy);
+  if (data)
+    data->ShallowCopy(vtkDataArray::SafeDownCast(array));
+  else
+    copy->DeepCopy(array);
+  copy->SetName(name.c_str());
+  return copy;
+}
+
+/**
+ * Rebuilds the arrays of `fd` in order, each replaced by `replace(array)` (null: removed;
+ * the array itself: kept). Active attributes of a vtkDataSetAttributes follow the arrays.
+ */
+void Rebuild(vtkFieldData* fd,
+  const std::function<vtkSmartPointer<vtkAbstractArray>(vtkAbstractArray*)>& replace)
+{
+  vtkDataSetAttributes* dsa = vtkDataSetAttributes::SafeDownCast(fd);
+  const int n = fd->GetNumberOfArrays();
+  std::vector<vtkSmartPointer<vtkAbstractArray>> before(n), after(n);
+  std::vector<int> activeOf(vtkDataSetAttributes::NUM_ATTRIBUTES, -1);
+  bool changed = false;
+  for (int a = 0; a < n; ++a)
+  {
+    before[a] = fd->GetAbstractArray(a);
+    after[a] = before[a] ? replace(before[a]) : nullptr;
+    changed = changed || after[a] != before[a];
+  }
+  if (!changed)
+    return;
+  if (dsa)
+    for (int attribute = 0; attribute < vtkDataSetAttributes::NUM_ATTRIBUTES; ++attribute)
+      if (vtkAbstractArray* active = dsa->GetAbstractAttribute(attribute))
+        for (int a = 0; a < n; ++a)
+          if (before[a] == active)
+            activeOf[attribute] = a;
+  while (fd->GetNumberOfArrays() > 0)
+    fd->RemoveArray(0);
+  std::vector<int> indexOf(n, -1);
+  for (int a = 0; a < n; ++a)
+    if (after[a])
+      indexOf[a] = fd->AddArray(after[a]);
+  if (dsa)
+    for (int attribute = 0; attribute < vtkDataSetAttributes::NUM_ATTRIBUTES; ++attribute)
+      if (activeOf[attribute] >= 0 && indexOf[activeOf[attribute]] >= 0)
+        dsa->SetActiveAttribute(indexOf[activeOf[attribute]], attribute);
+}
+}
+
+//------------------------------------------------------------------------------
+const std::vector<std::string>& LeafPointArrayNames()
+{
+  static const std::vector<std::string> names = { "OriginalPointId",
+    "TearMask",
+    "PlaneMask",
+    "Projected",
+    "ErrorBudget",
+    "InputBoundary",
+    "InputBorderNeighbors" };
+  return names;
+}
+
+const std::vector<std::string>& LeafCellArrayNames()
+{
+  static const std::vector<std::string> names = { "OriginalCellId", "FoldingLeafId" };
+  return names;
+}
+
+const std::vector<std::string>& UnfoldedPointArrayNames()
+{
+  static const std::vector<std::string> names = { "OriginalPointId", "DistanceToOriginal" };
+  return names;
+}
+
+const std::vector<std::string>& UnfoldedCellArrayNames()
+{
+  static const std::vector<std::string> names = { "OriginalCellId",
+    "FoldingLeafId",
+    "FoldingCopy",
+    "FoldingMirrored",
+    "FoldingMirrorMask",
+    "FoldingFilled" };
+  return names;
+}
+
+//------------------------------------------------------------------------------
+std::string FreeInputName(vtkFieldData* fd,
+  const std::string& name,
+  const std::vector<std::string>& avoid)
+{
+  const std::string base = name + RenamedInputSuffix;
+  std::string candidate = base;
+  for (int k = 2; (fd && fd->GetAbstractArray(candidate.c_str())) || Contains(avoid, candidate);
+       ++k)
+    candidate = base + std::to_string(k);
+  return candidate;
+}
+
+void RenameReservedArrays(vtkFieldData* fd,
+  const std::vector<std::string>& reserved,
+  std::vector<std::string>& notes)
+{
+  std::vector<std::string> taken; // new names given in this pass
+  Rebuild(fd,
+    [&](vtkAbstractArray* a) -> vtkSmartPointer<vtkAbstractArray>
+    {
+      if (!a->GetName() || !Contains(reserved, a->GetName()))
+        return a;
+      std::vector<std::string> avoid = reserved;
+      avoid.insert(avoid.end(), taken.begin(), taken.end());
+      const std::string name = FreeInputName(fd, a->GetName(), avoid);
+      taken.push_back(name);
+      notes.push_back(std::string(a->GetName()) + " -> " + name);
+      return Renamed(a, name);
+    });
+}
+
+void NameUnnamedArrays(vtkFieldData* fd, const char* prefix, std::vector<std::string>& notes)
+{
+  int k = 0;
+  std::vector<std::string> taken;
+  Rebuild(fd,
+    [&](vtkAbstractArray* a) -> vtkSmartPointer<vtkAbstractArray>
+    {
+      if (a->GetName() && a->GetName()[0])
+        return a;
+      std::string name;
+      do
+        name = prefix + std::to_string(k++);
+      while (fd->GetAbstractArray(name.c_str()) || Contains(taken, name));
+      taken.push_back(name);
+      notes.push_back(name);
+      return Renamed(a, name);
+    });
+}
+
+bool IsXMLWritable(vtkAbstractArray* array)
+{
+  return vtkDataArray::SafeDownCast(array) || vtkStringArray::SafeDownCast(array);
+}
+
+void RemoveUnwritableArrays(vtkFieldData* fd, std::vector<std::string>& notes)
+{
+  Rebuild(fd,
+    [&](vtkAbstractArray* a) -> vtkSmartPointer<vtkAbstractArray>
+    {
+      if (IsXMLWritable(a))
+        return a;
+      notes.push_back(
+        std::string(a->GetName() ? a->GetName() : "(unnamed)") + " (" + a->GetClassName() + ")");
+      return nullptr;
+    });
+}
+
+//------------------------------------------------------------------------------
+void CopyTuplesById(vtkDataSetAttributes* src,
+  vtkDataSetAttributes* dst,
+  const vtkIdType* ids,
+  vtkIdType n)
+{
+  vtkIdType largest = -1;
+  for (vtkIdType i = 0; i < n; ++i)
+    largest = std::max(largest, ids[i]);
+  std::vector<int> indexOf(src->GetNumberOfArrays(), -1);
+  for (int a = 0; a < src->GetNumberOfArrays(); ++a)
+  {
+    vtkAbstractArray* in = src->GetAbstractArray(a);
+    if (!in || in->GetNumberOfTuples() <= largest)
+      continue;
+    vtkSmartPointer<vtkAbstractArray> out = vtk::TakeSmartPointer(in->NewInstance());
+    out->SetName(in->GetName());
+    out->SetNumberOfComponents(in->GetNumberOfComponents());
+    for (int c = 0; c < in->GetNumberOfComponents(); ++c)
+      if (in->GetComponentName(c))
+        out->SetComponentName(c, in->GetComponentName(c));
+    out->SetNumberOfTuples(n);
+    for (vtkIdType i = 0; i < n; ++i)
+      out->SetTuple(i, ids[i], in);
+    indexOf[a] = dst->AddArray(out);
+  }
+  for (int attribute = 0; attribute < vtkDataSetAttributes::NUM_ATTRIBUTES; ++attribute)
+    if (vtkAbstractArray* active = src->GetAbstractAttribute(attribute))
+      for (int a = 0; a < src->GetNumberOfArrays(); ++a)
+        if (src->GetAbstractArray(a) == active && indexOf[a] >= 0)
+          dst->SetActiveAttribute(indexOf[a], attribute);
+}
+
+std::vector<std::string> ActiveAttributeNames(vtkDataSetAttributes* dsa)
+{
+  std::vector<std::string> names(vtkDataSetAttributes::NUM_ATTRIBUTES);
+  for (int attribute = 0; attribute < vtkDataSetAttributes::NUM_ATTRIBUTES; ++attribute)
+    if (vtkAbstractArray* active = dsa->GetAbstractAttribute(attribute))
+      if (active->GetName())
+        names[attribute] = active->GetName();
+  return names;
+}
+}
