@@ -592,6 +592,11 @@ int vtkFoldingTreeUnfolder::RequestWholeData(vtkInformation*,
   }
   output->GetCellData()->AddArray(cellIds);
   output->GetCellData()->AddArray(leafId);
+  // Viewers colour the unfolded mesh by leaf, as the builder's segmentation output: the
+  // input's scalars stay as arrays, but are not the active ones (ParaView prefers active
+  // point scalars over cell scalars).
+  output->GetCellData()->SetActiveScalars("FoldingLeafId");
+  output->GetPointData()->SetActiveScalars(nullptr);
   output->GetCellData()->AddArray(copyId);
   output->GetCellData()->AddArray(mirrored);
   output->GetCellData()->AddArray(mirrorMask);

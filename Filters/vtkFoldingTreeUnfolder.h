@@ -22,8 +22,9 @@
  *   InputBoundary, InputBorderNeighbors) are not carried; a leaf array named like one of the
  *   unfolder's own arrays is carried as "<name>_input" (with a warning). The input's active
  *   attributes (recorded on the tree's "Tree" block; older trees: the first leaf's) are active
- *   again, except global and pedigree ids whose values the mirrored copies repeat: those stay
- *   plain arrays. A point merged by stitching takes the values of its lowest copy.
+ *   again, except global and pedigree ids whose values the mirrored copies repeat (those stay
+ *   plain arrays) and scalars: the active cell scalars are "FoldingLeafId" and no point
+ *   scalars are active, so viewers colour the mesh by leaf (the input's scalar arrays stay). A point merged by stitching takes the values of its lowest copy.
  * - the input's point precision (float or double; trees without the record: double) and its
  *   field arrays (one named like the unfolder's own field data comes back as "<name>_input").
  * - point array "OriginalPointId" (input point id), cell arrays "OriginalCellId",

@@ -6,7 +6,7 @@
 // - point and cell GlobalIds and active scalars / normals / vectors / tcoords: the ids survive
 //   triangulation (detector, builder output 1, leaves, unfolded mesh); the unfolded mesh's
 //   active attributes are the input's, except global ids whose values the mirrored copies
-//   repeat (kept as arrays, no longer flagged);
+//   repeat (kept as arrays, no longer flagged) and scalars (FoldingLeafId: coloured by leaf);
 // - an unnamed point array: carried as "UnnamedPointArray0" (with a warning);
 // - arrays named like the filters' own (TearMask, ErrorBudget, FoldingCopy, OriginalCellId,
 //   SymmetryRegion, FoldingRole): carried renamed "<name>_input" with the user's values (and a
@@ -282,10 +282,13 @@ void CheckUnfolded(vtkPolyData* input, vtkPolyData* out, const std::string& labe
     label << ": points " << out->GetPoints()->GetData()->GetDataTypeAsString() << ", input "
           << input->GetPoints()->GetData()->GetDataTypeAsString());
   // Active attributes (global ids: flagged only while unique).
-  EXPECT(std::string(ActiveName(pd, vtkDataSetAttributes::SCALARS)) == "Temperature" &&
+  // Scalars: coloured by leaf (FoldingLeafId active, no active point scalars), the input's
+  // scalar arrays kept.
+  EXPECT(std::string(ActiveName(pd, vtkDataSetAttributes::SCALARS)).empty() &&
+      pd->GetArray("Temperature") && cd->GetArray("CellScalar") &&
       std::string(ActiveName(pd, vtkDataSetAttributes::NORMALS)) == "Normals" &&
       std::string(ActiveName(pd, vtkDataSetAttributes::TCOORDS)) == "UV" &&
-      std::string(ActiveName(cd, vtkDataSetAttributes::SCALARS)) == "CellScalar" &&
+      std::string(ActiveName(cd, vtkDataSetAttributes::SCALARS)) == "FoldingLeafId" &&
       std::string(ActiveName(cd, vtkDataSetAttributes::VECTORS)) == "Centroid",
     label << ": active attributes not restored (point scalars '"
           << ActiveName(pd, vtkDataSetAttributes::SCALARS) << "', cell scalars '"
