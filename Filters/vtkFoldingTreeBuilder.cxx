@@ -87,6 +87,19 @@ int vtkFoldingTreeBuilder::RequestWholeData(vtkInformation*,
     vtkErrorMacro("Missing input poly data or outputs.");
     return 0;
   }
+  // NaN passes vtkSetClampMacro: check the floating-point parameters here.
+  if (!std::isfinite(this->Tolerance) || !(this->Tolerance > 0.0))
+  {
+    vtkErrorMacro("Tolerance must be a positive, finite number (it is " << this->Tolerance
+                                                                        << ").");
+    return 0;
+  }
+  if (!std::isfinite(this->MinimumAreaFraction))
+  {
+    vtkErrorMacro("MinimumAreaFraction must be a finite number (it is "
+      << this->MinimumAreaFraction << ").");
+    return 0;
+  }
   foldingmeshes::TriangleMesh soup;
   std::vector<foldingmeshes::Vec3> normals;
   std::string error;
@@ -126,9 +139,15 @@ int vtkFoldingTreeBuilder::RequestWholeData(vtkInformation*,
   }
   const double epsilon =
     this->ToleranceMode == ABSOLUTE ? this->Tolerance : this->Tolerance * diagonal;
-  if (!(epsilon > 0.0))
+  if (!(diagonal > 0.0) && this->ToleranceMode != ABSOLUTE)
   {
     vtkErrorMacro("Invalid input mesh: zero extent, so the relative tolerance is zero.");
+    return 0;
+  }
+  if (!std::isfinite(epsilon) || !(epsilon > 0.0))
+  {
+    vtkErrorMacro("The tolerance length (Tolerance x the bounding-box diagonal "
+      << diagonal << ") is " << epsilon << ": it must be positive and finite.");
     return 0;
   }
   this->ToleranceLength = epsilon;

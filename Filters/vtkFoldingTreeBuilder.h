@@ -79,8 +79,9 @@
  * tear bit), -1 not stored: an input triangle with a repeated vertex). Active scalars: FoldingLeafId
  * (the input's point arrays are kept, but none is active, so viewers colour by leaf).
  *
- * Bad input (no points, no polygons, invalid mesh) is reported with vtkErrorMacro and the
- * request fails. An abort (AbortExecute) keeps the tree built so far (Aborted = 1).
+ * Bad input (no points, no polygons, invalid mesh) and bad parameters (NaN, which the clamping
+ * setters let through; a tolerance length that is not positive and finite) are reported with
+ * vtkErrorMacro and the request fails. An abort (AbortExecute) keeps the tree built so far (Aborted = 1).
  *
  * Parallel runs (pvbatch or pvserver under MPI): when Controller (by default the global
  * controller) has more than one process and the pipeline asks for one of several pieces

@@ -470,11 +470,20 @@ bool MultiBlockToFoldingTree(vtkMultiBlockDataSet* in,
       error = reader.Error;
       return false;
     }
+    if (fd->GetAbstractArray("OriginalPoints"))
+      reader.Int(fd, "OriginalPoints", "Tree", points);
+    if (fd->GetAbstractArray("DroppedFaces"))
+      reader.Int(fd, "DroppedFaces", "Tree", dropped);
+    const long long most = std::numeric_limits<int>::max();
+    if (faces < 0 || faces > most || points < 0 || points > most || dropped < 0 ||
+      dropped > most)
+    {
+      error = "\"Tree\": OriginalFaces, OriginalPoints or DroppedFaces is negative or too large";
+      return false;
+    }
     tree.numberOfOriginalFaces = static_cast<int>(faces);
-    if (fd->GetAbstractArray("OriginalPoints") && reader.Int(fd, "OriginalPoints", "Tree", points))
-      tree.numberOfOriginalPoints = static_cast<int>(points);
-    if (fd->GetAbstractArray("DroppedFaces") && reader.Int(fd, "DroppedFaces", "Tree", dropped))
-      tree.numberOfDroppedFaces = static_cast<int>(dropped);
+    tree.numberOfOriginalPoints = static_cast<int>(points);
+    tree.numberOfDroppedFaces = static_cast<int>(dropped);
     if (fd->GetAbstractArray("OriginalArea"))
       reader.Double(fd, "OriginalArea", "Tree", &tree.originalArea);
     if (fd->GetAbstractArray("BuildSeconds"))

@@ -301,13 +301,20 @@ void vtkFoldingTreeUnfolder::SetOriginalConnection(vtkAlgorithmOutput* output)
 bool vtkFoldingTreeUnfolder::MeasureToOriginal(vtkPolyData* original, vtkPolyData* output)
 {
   vtkIdType droppedVerts = 0, droppedLines = 0;
-  vtkSmartPointer<vtkPolyData> triangles =
-    foldingmeshes::TriangulateSurface(original, droppedVerts, droppedLines);
   foldingmeshes::TriangleMesh reference, unfolded;
   std::vector<Vec3> normals;
   std::string error;
+  vtkSmartPointer<vtkPolyData> triangles =
+    foldingmeshes::TriangulateSurface(original, droppedVerts, droppedLines, error);
   if (!triangles || !foldingmeshes::ToTriangleMesh(triangles, reference, normals, error) ||
     reference.triangles.empty())
+  {
+    vtkErrorMacro("The original (input port 1) has no usable surface"
+      << (error.empty() ? std::string() : ": " + error) << ".");
+    return false;
+  }
+  // Distances would be NaN or infinite: the builder rejects such a mesh, so does this.
+  if (!foldingmeshes::CheckExtent(reference, error))
   {
     vtkErrorMacro("The original (input port 1) has no usable surface"
       << (error.empty() ? std::string() : ": " + error) << ".");
@@ -385,6 +392,16 @@ int vtkFoldingTreeUnfolder::RequestWholeData(vtkInformation*,
     vtkErrorMacro("Missing input multiblock or output poly data.");
     return 0;
   }
+  // NaN passes vtkSetClampMacro: check the floating-point parameters here.
+  if (!std::isfinite(this->StitchToleranceScale) || !std::isfinite(this->SmoothingWeight) ||
+    !std::isfinite(this->WeldToleranceScale) || !std::isfinite(this->HoleToleranceScale))
+  {
+    vtkErrorMacro("StitchToleranceScale, SmoothingWeight, WeldToleranceScale and "
+                  "HoleToleranceScale must be finite numbers (they are "
+      << this->StitchToleranceScale << ", " << this->SmoothingWeight << ", "
+      << this->WeldToleranceScale << " and " << this->HoleToleranceScale << ").");
+    return 0;
+  }
   foldingmeshes::FoldingTree tree;
   std::vector<vtkPolyData*> leaves;
   std::string error;
@@ -392,6 +409,14 @@ int vtkFoldingTreeUnfolder::RequestWholeData(vtkInformation*,
   {
     vtkErrorMacro("Malformed folding tree: " << error << ".");
     return 0;
+  }
+  int emptyLeaves = 0;
+  for (int l : tree.Leaves())
+    emptyLeaves += tree.nodes[l].mesh.triangles.empty() ? 1 : 0;
+  if (emptyLeaves > 0)
+  {
+    vtkWarningMacro(<< emptyLeaves << " leaves of the tree store no triangles: their regions are "
+                                      "missing from the output.");
   }
 
   foldingmeshes::UnfoldOptions options;

@@ -70,10 +70,17 @@
  *   budget runs out first - not seen on real meshes - a warning says the bound is looser).
  * The measure is the core's CompareSurfaces (Filters/Core/SurfaceDistance.h), the one the
  * command line's roundtrip and the Table 1 benchmark use. The paper's bound: with the builder's
- * defaults, HausdorffToOriginal <= RootEpsilon.
+ * defaults, HausdorffToOriginal <= RootEpsilon. An original without triangles, with a
+ * triangle that refers to a point that does not exist, or with NaN or infinite point
+ * coordinates is an error (the request fails), as it is for the builder.
  *
  * A malformed tree (missing plane metadata, wrong node kinds, a block that is not polydata,
- * wrong array sizes) is reported with vtkErrorMacro and the request fails.
+ * wrong array sizes; a Diagonal or RootEpsilon that is not positive and finite, differs from
+ * the root's epsilon or does not match the extent of the stored points; negative counts;
+ * PlaneMask / TearMask bits for levels without a folding / segmentation node above the leaf;
+ * no stored triangle at all: FoldingTree::Validate) is reported with vtkErrorMacro and the
+ * request fails; NaN parameters too. Leaves without triangles in an otherwise valid tree give
+ * a warning (their regions are missing from the output).
  *
  * Parallel runs (pvbatch or pvserver under MPI): when Controller (by default the global
  * controller) has more than one process and the pipeline asks for one of several pieces

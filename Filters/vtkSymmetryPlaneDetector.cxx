@@ -161,6 +161,38 @@ int vtkSymmetryPlaneDetector::RequestWholeData(vtkInformation*,
     vtkErrorMacro("Missing input or output poly data.");
     return 0;
   }
+  // NaN passes vtkSetClampMacro: check the floating-point parameters here.
+  if (!std::isfinite(this->Tolerance) || !(this->Tolerance > 0.0))
+  {
+    vtkErrorMacro("Tolerance must be a positive, finite number (it is " << this->Tolerance
+                                                                        << ").");
+    return 0;
+  }
+  if (!std::isfinite(this->CompatibilityAngle) || !std::isfinite(this->MinimumSymmetricAreaFraction))
+  {
+    vtkErrorMacro("CompatibilityAngle and MinimumSymmetricAreaFraction must be finite numbers "
+                  "(they are "
+      << this->CompatibilityAngle << " and " << this->MinimumSymmetricAreaFraction << ").");
+    return 0;
+  }
+  Vec3 initialNormal(
+    this->InitialPlaneNormal[0], this->InitialPlaneNormal[1], this->InitialPlaneNormal[2]);
+  const Vec3 initialOrigin(
+    this->InitialPlaneOrigin[0], this->InitialPlaneOrigin[1], this->InitialPlaneOrigin[2]);
+  if (this->UseInitialPlane)
+  {
+    // Divide by the largest component first: the norm of (1e300, 1e300, 0) overflows.
+    const double largest = initialNormal.cwiseAbs().maxCoeff();
+    if (!std::isfinite(largest) || !(largest > 0.0) || !initialOrigin.allFinite())
+    {
+      vtkErrorMacro("The initial plane needs a finite origin and a finite, non-zero normal.");
+      return 0;
+    }
+    const double norm = initialNormal.norm();
+    initialNormal = std::isfinite(norm) && norm > 1e-150 ? Vec3(initialNormal / norm)
+                                                         : (initialNormal / largest).normalized();
+  }
+
   foldingmeshes::TriangleMesh soup;
   std::vector<Vec3> normals;
   std::string error;
@@ -191,6 +223,12 @@ int vtkSymmetryPlaneDetector::RequestWholeData(vtkInformation*,
 
   const double epsilon =
     this->ToleranceMode == ABSOLUTE ? this->Tolerance : this->Tolerance * mesh.diagonal;
+  if (!std::isfinite(epsilon) || !(epsilon > 0.0))
+  {
+    vtkErrorMacro("The tolerance length (Tolerance x the bounding-box diagonal "
+      << mesh.diagonal << ") is " << epsilon << ": it must be positive and finite.");
+    return 0;
+  }
   this->ToleranceLength = epsilon;
   if (this->ConnectNearbyParts)
   {
@@ -201,18 +239,10 @@ int vtkSymmetryPlaneDetector::RequestWholeData(vtkInformation*,
   options.epsilon = epsilon;
   options.robust = this->Method == ROBUST;
   options.useInitialPlane = this->UseInitialPlane;
-  const Vec3 initialNormal(
-    this->InitialPlaneNormal[0], this->InitialPlaneNormal[1], this->InitialPlaneNormal[2]);
   if (this->UseInitialPlane)
   {
-    if (!(initialNormal.norm() > 0.0) || !initialNormal.allFinite())
-    {
-      vtkErrorMacro("The initial plane normal must be a non-zero vector.");
-      return 0;
-    }
-    options.initialPlane.origin =
-      Vec3(this->InitialPlaneOrigin[0], this->InitialPlaneOrigin[1], this->InitialPlaneOrigin[2]);
-    options.initialPlane.normal = initialNormal.normalized();
+    options.initialPlane.origin = initialOrigin;
+    options.initialPlane.normal = initialNormal;
   }
   options.numberOfCandidates = this->NumberOfCandidates;
   options.maximumIterations = this->MaximumIterations;

@@ -59,8 +59,11 @@
  * RMS distance over it is at most 0.35 epsilon; otherwise the best plane is
  * still reported, with SymmetryFound = 0.
  *
- * Bad input (no points, no polygons, NaN/Inf coordinates, zero total area)
- * is reported with vtkErrorMacro and the request fails.
+ * Bad input (no points, no polygons, a triangle referring to a point that does
+ * not exist, NaN/Inf coordinates, zero total area) and bad parameters (NaN,
+ * which the clamping setters let through; a tolerance length that is not
+ * positive and finite; with UseInitialPlane a zero or non-finite normal or
+ * origin) are reported with vtkErrorMacro and the request fails.
  *
  * Parallel runs (pvbatch or pvserver under MPI): when Controller (by default the global
  * controller) has more than one process and the pipeline asks for one of several pieces

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <sstream>
 
 namespace foldingmeshes
@@ -115,6 +116,17 @@ std::string FoldingTree::Validate() const
   const int n = this->NumberOfNodes();
   if (n == 0)
     return "the tree has no nodes";
+  if (!std::isfinite(this->diagonal) || !(this->diagonal > 0.0))
+    return "the diagonal must be a positive, finite length";
+  if (!std::isfinite(this->rootEpsilon) || !(this->rootEpsilon > 0.0))
+    return "the root epsilon must be a positive, finite length";
+  if (!(std::abs(this->nodes[0].epsilon - this->rootEpsilon) <= 1e-9 * this->rootEpsilon))
+    return "the root epsilon differs from the root node's epsilon";
+  if (this->numberOfOriginalFaces < 0 || this->numberOfOriginalPoints < 0 ||
+    this->numberOfDroppedFaces < 0)
+    return "negative numbers of original faces, points or dropped faces";
+  if (this->StoredFaces() == 0)
+    return "the leaves store no triangles";
   for (int i = 0; i < n; ++i)
   {
     const FoldingNode& node = this->nodes[i];
@@ -182,6 +194,49 @@ std::string FoldingTree::Validate() const
           return os.str() + "a segmentation node must have at least two children";
         break;
     }
+  }
+
+  // Level flags: bit d of a leaf's planeMask stands for the folding node at depth d on its
+  // path, bit d of its tearMask for the segmentation node there (the builder sets no others).
+  // The bounding box of the stored points, to check the diagonal against.
+  Vec3 lo = Vec3::Constant(std::numeric_limits<double>::max()), hi = -lo;
+  int foldsOnPath = 0;
+  for (int i = 0; i < n; ++i)
+  {
+    const FoldingNode& node = this->nodes[i];
+    if (node.kind != FoldingNodeKind::Leaf)
+      continue;
+    uint64_t folds = 0, segmentations = 0;
+    for (int a = node.parent; a >= 0; a = this->nodes[a].parent)
+      (this->nodes[a].kind == FoldingNodeKind::Folding ? folds : segmentations) |= uint64_t(1)
+        << this->nodes[a].depth;
+    const FoldingLeafMesh& m = node.mesh;
+    for (int v = 0; v < m.NumberOfPoints(); ++v)
+    {
+      if ((m.planeMask[v] & ~folds) || (m.tearMask[v] & ~segmentations))
+      {
+        os.str("");
+        os << "node " << i << " (Leaf): point " << v
+           << " has a PlaneMask or TearMask bit for a level without a folding or "
+              "segmentation node above the leaf";
+        return os.str();
+      }
+      lo = lo.cwiseMin(m.points[v]);
+      hi = hi.cwiseMax(m.points[v]);
+    }
+    foldsOnPath = std::max(foldsOnPath, node.foldsAbove);
+  }
+  // The stored points lie within the input's bounding box (points projected onto fold planes
+  // within epsilon of it), and every fold keeps a half whose diameter is at least a fifth of
+  // its region's: the extent of the stored points bounds the diagonal from both sides.
+  const double extent = (hi - lo).norm();
+  if (extent > 4.0 * this->diagonal + 4.0 * this->rootEpsilon ||
+    this->diagonal > 8.0 * std::pow(5.0, foldsOnPath) * extent)
+  {
+    os.str("");
+    os << "the diagonal " << this->diagonal
+       << " does not match the extent of the stored points " << extent;
+    return os.str();
   }
   return std::string();
 }

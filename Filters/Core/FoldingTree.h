@@ -178,8 +178,12 @@ struct FoldingTree
   /**
    * Structural check, for trees built elsewhere (e.g. read back from a file): child counts
    * per kind, parent links, preorder, depths, unit plane normals, leaf array sizes and
-   * index ranges, depth < MaximumFoldingTreeLevels. Returns an empty string when valid,
-   * else a description of the first problem.
+   * index ranges, depth < MaximumFoldingTreeLevels; also the metadata: a positive, finite
+   * diagonal and root epsilon (equal to the root node's epsilon), non-negative counts, at
+   * least one stored triangle, leaf PlaneMask / TearMask bits only for the folding /
+   * segmentation nodes above the leaf, and a diagonal that matches the extent of the stored
+   * points (at most 4 diagonals, and at least diagonal / (8 * 5^folds on a path)). Returns an
+   * empty string when valid, else a description of the first problem.
    */
   std::string Validate() const;
 };

@@ -35,12 +35,12 @@ void Run(const std::string& name, vtkPolyData* input)
 {
   const auto t0 = Clock::now();
   vtkIdType droppedVerts = 0, droppedLines = 0;
-  auto surface = TriangulateSurface(input, droppedVerts, droppedLines);
   TriangleMesh soup;
   std::vector<Vec3> normals;
   PreparedMesh mesh;
   std::string error;
-  if (!ToTriangleMesh(surface, soup, normals, error) || !PrepareMesh(soup, normals, mesh, error))
+  auto surface = TriangulateSurface(input, droppedVerts, droppedLines, error);
+  if (!surface || !ToTriangleMesh(surface, soup, normals, error) || !PrepareMesh(soup, normals, mesh, error))
   {
     std::printf("%-28s error: %s\n", name.c_str(), error.c_str());
     return;

@@ -10,6 +10,8 @@
 #     exits 1 and names the option;
 # 4d. out-of-range numbers exit 1 on detect and fold; --min-faces, --method, --seed and
 #     --separate-parts reach the builder; roundtrip --no-stitch --no-close-holes leaves seams open;
+# 4e. a triangle referring to a point that does not exist: detect, fold and roundtrip exit 2,
+#     unfold --original fails, all with the filters' message;
 # 5. `--help` exits 0 and documents every command and the exit codes; `--version` exits 0.
 foreach (var FOLDINGMESHES MESH WORK_DIR)
   if (NOT DEFINED ${var})
@@ -84,6 +86,29 @@ message("unfold on a file that is not a tree: exit ${rc}: ${err}")
 if (NOT rc EQUAL 2 OR NOT err MATCHES "not a VTK XML multiblock")
   message(FATAL_ERROR "unfold on a non-.vtm file exited with ${rc}, expected 2 and a clear message")
 endif ()
+
+# 4e. A triangle referring to a point that does not exist (negative, too large) is invalid
+#     input on every command (exit 2 and the filter's message), not a crash.
+foreach (id IN ITEMS -100000000 4)
+  file(WRITE "${WORK_DIR}/badid${id}.vtk" "# vtk DataFile Version 3.0\nbad\nASCII\n"
+    "DATASET POLYDATA\nPOINTS 4 float\n0 0 0 1 0 0 0 1 0 0 0 1\n"
+    "POLYGONS 3 12\n3 0 1 2\n3 0 1 3\n3 0 2 ${id}\n")
+  foreach (command IN ITEMS detect fold roundtrip)
+    execute_process(COMMAND "${FOLDINGMESHES}" ${command} "${WORK_DIR}/badid${id}.vtk" --quiet
+      --outdir "${WORK_DIR}/badid" RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+    if (NOT rc EQUAL 2 OR NOT err MATCHES "a triangle refers to a point that does not exist")
+      message(FATAL_ERROR "${command} on a triangle with point id ${id} exited with ${rc}, "
+        "expected 2 and a clear message: ${err}")
+    endif ()
+  endforeach ()
+  execute_process(COMMAND "${FOLDINGMESHES}" unfold "${WORK_DIR}/${stem}_tree.vtm" --original
+    "${WORK_DIR}/badid${id}.vtk" --quiet --outdir "${WORK_DIR}/badid"
+    RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  if (rc EQUAL 0 OR NOT err MATCHES "a triangle refers to a point that does not exist")
+    message(FATAL_ERROR "unfold --original with point id ${id} exited with ${rc}, "
+      "expected an error and a clear message: ${err}")
+  endif ()
+endforeach ()
 
 foreach (command IN ITEMS detect fold unfold)
   set(input "${MESH}")

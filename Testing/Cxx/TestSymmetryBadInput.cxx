@@ -1,7 +1,14 @@
 // vtkSymmetryPlaneDetector on bad and unusual input:
 // - failures: empty poly data, points without cells, only lines and vertices, a NaN and an Inf
-//   coordinate, all faces degenerate (zero area): Update() returns 0 and an ErrorEvent with a
-//   non-empty message is raised (captured and silenced by vtkCallbackCommand observers);
+//   coordinate, all faces degenerate (zero area), point ids out of range (negative, >= number of
+//   points) in triangles and quads, NaN parameters (Tolerance, CompatibilityAngle,
+//   MinimumSymmetricAreaFraction), a zero or non-finite initial
+//   normal, a NaN initial origin: Update() returns 0 and an ErrorEvent with a non-empty message
+//   is raised (captured and silenced by vtkCallbackCommand observers);
+// - an initial normal whose norm overflows (1e300 0 1e300) gives the result of (1 0 1);
+// - scale: a blob scaled beyond the supported bounding-box diagonals [1e-60, 1e60] fails with an
+//   error naming the range; scaled by 2^-196 or 2^196 it gives the unscaled blob's plane,
+//   SymmetryFound and (within 0.01) area fraction;
 // - quads (a subdivided box) and hexagons + quads (a prism) are triangulated and work: every
 //   output cell is a triangle lying in one input polygon, whose cell values it carries; the
 //   exactly symmetric shapes are found symmetric about one of their mirror planes;
@@ -106,13 +113,21 @@ vtkSmartPointer<vtkPolyData> MakePolyData(const std::vector<Vec3>& points,
   return pd;
 }
 
-void ExpectFailure(const std::string& name, vtkPolyData* input)
+/// `configure` sets parameters before the run; the first error must contain `mustContain`.
+void ExpectFailure(const std::string& name,
+  vtkPolyData* input,
+  const std::function<void(vtkSymmetryPlaneDetector*)>& configure = nullptr,
+  const std::string& mustContain = std::string())
 {
   Run run;
+  if (configure)
+    configure(run.filter);
   Execute(run, input);
   EXPECT(run.status == 0, name << ": Update() returned " << run.status << ", expected 0");
   EXPECT(!run.log.errors.empty() && !run.log.errors[0].empty(),
     name << ": no ErrorEvent with a message");
+  EXPECT(run.log.errors.empty() || run.log.errors[0].find(mustContain) != std::string::npos,
+    name << ": the error does not mention \"" << mustContain << "\"");
   std::printf("%-28s -> error: %s",
     name.c_str(),
     run.log.errors.empty() ? "(none)\n" : run.log.errors[0].c_str());
@@ -348,6 +363,24 @@ bool SameResult(Run& a, Run& b, std::string& what)
 }
 }
 
+/// A copy of `input` with every coordinate multiplied by `scale`.
+vtkSmartPointer<vtkPolyData> ScaledCopy(vtkPolyData* input, double scale)
+{
+  auto copy = vtkSmartPointer<vtkPolyData>::New();
+  copy->DeepCopy(input);
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  points->SetNumberOfPoints(input->GetNumberOfPoints());
+  for (vtkIdType i = 0; i < input->GetNumberOfPoints(); ++i)
+  {
+    double p[3];
+    input->GetPoint(i, p);
+    points->SetPoint(i, scale * p[0], scale * p[1], scale * p[2]);
+  }
+  copy->SetPoints(points);
+  return copy;
+}
+
 int main()
 {
   using namespace foldingmeshes::testing;
@@ -391,6 +424,110 @@ int main()
       MakePolyData({ Vec3(0, 0, 0), Vec3(1, 1, 1), Vec3(2, 2, 2), Vec3(3, 3, 3), Vec3(1, 1, 1) },
         { { 0, 1, 2 }, { 1, 2, 3 }, { 1, 4, 2 }, { 0, 0, 3 } });
     ExpectFailure("all faces degenerate", degenerate);
+
+    // Point ids out of range (a negative id used to crash, a small one to read out of bounds),
+    // in a triangle and in a quad (triangulated before the core sees it).
+    const std::vector<Vec3> tetra{ Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(0, 0, 1) };
+    for (vtkIdType bad : { vtkIdType(-1000000), vtkIdType(-1), vtkIdType(4), vtkIdType(7) })
+    {
+      const std::string id = std::to_string(static_cast<long long>(bad));
+      ExpectFailure("triangle with point id " + id,
+        MakePolyData(tetra, { { 0, 1, 2 }, { 0, 1, 3 }, { 0, 2, bad } }),
+        nullptr,
+        "a triangle refers to a point that does not exist");
+      ExpectFailure("quad with point id " + id,
+        MakePolyData(tetra, { { 0, 1, 2 }, { 0, 1, 3, bad } }),
+        nullptr,
+        "a triangle refers to a point that does not exist");
+    }
+
+    // Parameters that pass the clamping setters (NaN) or are unusable.
+    ProceduralMesh blob = MakeBilateralBlob(600);
+    ExpectFailure("Tolerance NaN",
+      blob.mesh,
+      [&](vtkSymmetryPlaneDetector* f) { f->SetTolerance(nan); },
+      "Tolerance must be a positive, finite number");
+    ExpectFailure("absolute Tolerance NaN",
+      blob.mesh,
+      [&](vtkSymmetryPlaneDetector* f)
+      {
+        f->SetToleranceMode(vtkSymmetryPlaneDetector::ABSOLUTE);
+        f->SetTolerance(nan);
+      },
+      "Tolerance must be a positive, finite number");
+    ExpectFailure("CompatibilityAngle NaN",
+      blob.mesh,
+      [&](vtkSymmetryPlaneDetector* f) { f->SetCompatibilityAngle(nan); },
+      "CompatibilityAngle");
+    ExpectFailure("MinimumSymmetricAreaFraction NaN",
+      blob.mesh,
+      [&](vtkSymmetryPlaneDetector* f) { f->SetMinimumSymmetricAreaFraction(nan); },
+      "MinimumSymmetricAreaFraction");
+    for (const Vec3& normal :
+      { Vec3(0, 0, 0), Vec3(nan, 0, 0), Vec3(std::numeric_limits<double>::infinity(), 0, 0) })
+      ExpectFailure("initial normal (" + std::to_string(normal.x()) + " 0 0)",
+        blob.mesh,
+        [&](vtkSymmetryPlaneDetector* f)
+        {
+          f->SetUseInitialPlane(true);
+          f->SetInitialPlaneNormal(normal.data());
+        },
+        "finite, non-zero normal");
+    ExpectFailure("initial origin NaN",
+      blob.mesh,
+      [&](vtkSymmetryPlaneDetector* f)
+      {
+        f->SetUseInitialPlane(true);
+        f->SetInitialPlaneOrigin(nan, 0, 0);
+      },
+      "finite origin");
+  }
+
+  // ---- Scale: outside the supported diagonals [1e-60, 1e60] a clear error, inside a result ----
+  {
+    ProceduralMesh blob = MakeBilateralBlob(600);
+    Run reference;
+    Execute(reference, blob.mesh);
+    for (double scale : { 1e-100, 1e-62, 1e62, 1e150, 1e200, 1e300 })
+      ExpectFailure("blob scaled by 1e" +
+          std::to_string(static_cast<int>(std::round(std::log10(scale)))),
+        ScaledCopy(blob.mesh, scale),
+        nullptr,
+        "is outside the supported range [1e-60, 1e+60]");
+    for (double scale : { std::ldexp(1.0, -196), std::ldexp(1.0, 196) })
+    {
+      vtkSmartPointer<vtkPolyData> scaled = ScaledCopy(blob.mesh, scale);
+      Run run;
+      Execute(run, scaled);
+      const std::string name = "blob scaled by 2^" + std::to_string(std::ilogb(scale));
+      ExpectSuccess(name, run, scaled);
+      const double *n = run.filter->GetPlaneNormal(), *m = reference.filter->GetPlaneNormal();
+      EXPECT(run.status == 1 && run.filter->GetSymmetryFound() == reference.filter->GetSymmetryFound() &&
+          std::abs(run.filter->GetSymmetricAreaFraction() -
+            reference.filter->GetSymmetricAreaFraction()) < 0.01 &&
+          std::abs(std::abs(Vec3(n[0], n[1], n[2]).dot(Vec3(m[0], m[1], m[2]))) - 1.0) < 1e-4,
+        name << ": not the plane and region of the unscaled blob");
+    }
+  }
+
+  // ---- An initial normal whose norm overflows is still a direction ----
+  for (int method : { vtkSymmetryPlaneDetector::ROBUST, vtkSymmetryPlaneDetector::PAPER })
+  {
+    ProceduralMesh blob = MakeBilateralBlob(600);
+    Run run, reference;
+    for (Run* r : { &run, &reference })
+    {
+      r->filter->SetMethod(method);
+      r->filter->SetUseInitialPlane(true);
+    }
+    run.filter->SetInitialPlaneNormal(1e300, 0, 1e300);
+    reference.filter->SetInitialPlaneNormal(1, 0, 1);
+    Execute(run, blob.mesh);
+    Execute(reference, blob.mesh);
+    ExpectSuccess("initial normal (1e300 0 1e300)", run, blob.mesh);
+    const double *n = run.filter->GetPlaneNormal(), *m = reference.filter->GetPlaneNormal();
+    EXPECT(run.status == 1 && Vec3(n[0], n[1], n[2]) == Vec3(m[0], m[1], m[2]),
+      "initial normal (1e300 0 1e300) does not give the result of (1 0 1)");
   }
 
   // ---- Quads and hexagons ----

@@ -27,7 +27,8 @@
 // - error budgets: no output point moves farther from the affine image of its leaf point
 //   than the leaf point's errorBudget (zero budgets: nothing moves); without the bound some
 //   point does;
-// - malformed trees give an error; determinism; abort.
+// - malformed trees give an error (structure, and metadata: diagonal, root epsilon, counts,
+//   PlaneMask / TearMask levels, no stored triangle); determinism; abort.
 #include "CoreTestUtilities.h"
 #include "FoldingTreeBuilder.h"
 #include "FoldingTreeUnfolder.h"
@@ -554,6 +555,51 @@ void TestMalformedTrees()
     FoldingTree t;
     EXPECT(!UnfoldFoldingTree(t, {}, u, error), "empty tree accepted");
   }
+  // Metadata (the unfolder trusted it: a huge diagonal put every vertex on every fold plane).
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  for (double diagonal : { nan, 0.0, 1e300, 1e-3 * good.diagonal })
+  {
+    FoldingTree t = good;
+    t.diagonal = diagonal;
+    EXPECT(!UnfoldFoldingTree(t, {}, u, error) && error.find("diagonal") != std::string::npos,
+      "diagonal " << diagonal << " accepted");
+  }
+  for (double epsilon : { nan, -1.0, 2.0 * good.rootEpsilon })
+  {
+    FoldingTree t = good;
+    t.rootEpsilon = epsilon;
+    EXPECT(!UnfoldFoldingTree(t, {}, u, error) && error.find("root epsilon") != std::string::npos,
+      "root epsilon " << epsilon << " accepted");
+  }
+  {
+    FoldingTree t = good;
+    t.numberOfOriginalFaces = -7;
+    EXPECT(!UnfoldFoldingTree(t, {}, u, error), "negative OriginalFaces accepted");
+  }
+  {
+    FoldingTree t = good;
+    t.nodes[leaf].mesh.planeMask[0] |= uint64_t(1) << t.nodes[leaf].depth;
+    EXPECT(!UnfoldFoldingTree(t, {}, u, error) && error.find("PlaneMask") != std::string::npos,
+      "PlaneMask bit at the leaf's own depth accepted");
+  }
+  {
+    // The root is a fold: a tear bit at depth 0 names no segmentation node.
+    FoldingTree t = good;
+    t.nodes[leaf].mesh.tearMask[0] |= uint64_t(1);
+    EXPECT(!UnfoldFoldingTree(t, {}, u, error) && error.find("TearMask") != std::string::npos,
+      "TearMask bit for a folding node's level accepted");
+  }
+  {
+    FoldingTree t = good;
+    for (FoldingNode& node : t.nodes)
+    {
+      node.mesh.triangles.clear();
+      node.mesh.originalFaceIds.clear();
+    }
+    EXPECT(!UnfoldFoldingTree(t, {}, u, error) && error.find("no triangles") != std::string::npos,
+      "a tree without stored triangles accepted");
+  }
+  EXPECT(good.Validate().empty(), "the built tree is invalid: " << good.Validate());
   std::printf("malformed trees: last error \"%s\"\n", error.c_str());
 }
 
