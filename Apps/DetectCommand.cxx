@@ -28,7 +28,7 @@ int Detect(int argc, char* argv[])
 {
   std::string meshPath, output, planeOutput, picture, outdir = ".";
   int upAxis = -1;
-  bool json = false, quiet = false, noFiles = false;
+  bool json = false, quiet = false, noFiles = false, absoluteGiven = false;
   vtkNew<vtkSymmetryPlaneDetector> detector;
   for (int i = 0; i < argc; ++i)
   {
@@ -46,14 +46,19 @@ int Detect(int argc, char* argv[])
     }
     else if (arg == "--tolerance")
     {
-      detector->SetTolerance(ParseNumber(arg, value("--tolerance"), 1e-12, 1.0, true));
-      detector->SetToleranceMode(vtkSymmetryPlaneDetector::RELATIVE_TO_DIAGONAL);
+      const double tolerance = ParseNumber(arg, value("--tolerance"), 1e-12, 1.0, true);
+      if (!absoluteGiven) // --absolute-tolerance overrides it, in any order
+      {
+        detector->SetTolerance(tolerance);
+        detector->SetToleranceMode(vtkSymmetryPlaneDetector::RELATIVE_TO_DIAGONAL);
+      }
     }
     else if (arg == "--absolute-tolerance")
     {
       detector->SetTolerance(
         ParseNumber(arg, value("--absolute-tolerance"), 1e-12, 1e30, true));
       detector->SetToleranceMode(vtkSymmetryPlaneDetector::ABSOLUTE);
+      absoluteGiven = true;
     }
     else if (arg == "--method")
     {

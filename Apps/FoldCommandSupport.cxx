@@ -46,12 +46,10 @@ FoldSettings ParseFoldArguments(int argc, char* argv[])
     else if (arg == "--tolerance")
     {
       f.tolerance = ParseNumber(arg, value("--tolerance"), 1e-12, 1.0, true);
-      f.absolute = false;
     }
     else if (arg == "--absolute-tolerance")
     {
-      f.tolerance = ParseNumber(arg, value("--absolute-tolerance"), 1e-12, 1e30, true);
-      f.absolute = true;
+      f.absoluteTolerance = ParseNumber(arg, value("--absolute-tolerance"), 1e-12, 1e30, true);
     }
     else if (arg == "--keep")
     {
@@ -146,11 +144,15 @@ bool RunFilter(vtkAlgorithm* algorithm, const char* label, bool quiet, std::stri
 
 void ConfigureBuilder(vtkFoldingTreeBuilder* builder, const FoldSettings& f)
 {
-  if (f.tolerance)
+  if (f.absoluteTolerance)
+  {
+    builder->SetTolerance(*f.absoluteTolerance);
+    builder->SetToleranceMode(vtkFoldingTreeBuilder::ABSOLUTE);
+  }
+  else if (f.tolerance)
   {
     builder->SetTolerance(*f.tolerance);
-    builder->SetToleranceMode(
-      f.absolute ? vtkFoldingTreeBuilder::ABSOLUTE : vtkFoldingTreeBuilder::RELATIVE_TO_DIAGONAL);
+    builder->SetToleranceMode(vtkFoldingTreeBuilder::RELATIVE_TO_DIAGONAL);
   }
   if (f.keep)
     builder->SetKeepSide(*f.keep);

@@ -24,8 +24,8 @@ struct FoldSettings
 {
   std::string meshPath, outdir = ".";
   bool json = false, quiet = false;
-  std::optional<double> tolerance; // with `absolute`: a length, else relative to the diagonal
-  bool absolute = false;
+  std::optional<double> tolerance;         // relative to the diagonal
+  std::optional<double> absoluteTolerance; // a length; overrides `tolerance`
   std::optional<int> keep;
   std::optional<double> minAreaFraction;
   std::optional<int> maxFolds;

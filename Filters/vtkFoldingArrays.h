@@ -41,6 +41,9 @@ void RenameReservedArrays(vtkFieldData* fd,
   const std::vector<std::string>& reserved,
   std::vector<std::string>& notes);
 
+/// Prefix of the input's field arrays on a folding tree's "Tree" block.
+constexpr const char* InputFieldPrefix = "InputField:";
+
 /// Gives every unnamed array of `fd` the name `prefix` + k (k counting the unnamed arrays,
 /// skipping names in use), as a renamed shallow copy; appends the new names to `notes`.
 void NameUnnamedArrays(vtkFieldData* fd, const char* prefix, std::vector<std::string>& notes);

@@ -38,7 +38,8 @@ bool ReadInteger(vtkAbstractArray* a, vtkIdType i, long long& value)
   if (!d || i < 0 || i >= d->GetNumberOfTuples() || d->GetNumberOfComponents() != 1)
     return false;
   const double v = d->GetTuple1(i);
-  if (!std::isfinite(v) || v != std::floor(v))
+  // Outside +-2^62 the cast would be undefined; no count or index of a tree is that large.
+  if (!std::isfinite(v) || v != std::floor(v) || std::abs(v) > 4.6e18)
     return false;
   value = static_cast<long long>(v);
   return true;
@@ -470,10 +471,13 @@ bool MultiBlockToFoldingTree(vtkMultiBlockDataSet* in,
       error = reader.Error;
       return false;
     }
-    if (fd->GetAbstractArray("OriginalPoints"))
-      reader.Int(fd, "OriginalPoints", "Tree", points);
-    if (fd->GetAbstractArray("DroppedFaces"))
-      reader.Int(fd, "DroppedFaces", "Tree", dropped);
+    if ((fd->GetAbstractArray("OriginalPoints") &&
+          !reader.Int(fd, "OriginalPoints", "Tree", points)) ||
+      (fd->GetAbstractArray("DroppedFaces") && !reader.Int(fd, "DroppedFaces", "Tree", dropped)))
+    {
+      error = reader.Error;
+      return false;
+    }
     const long long most = std::numeric_limits<int>::max();
     if (faces < 0 || faces > most || points < 0 || points > most || dropped < 0 ||
       dropped > most)

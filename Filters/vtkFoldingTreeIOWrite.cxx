@@ -124,6 +124,7 @@ vtkSmartPointer<vtkPolyData> CarriedInput(vtkPolyData* input, std::vector<std::s
   std::vector<std::string> named, dropped, renamed;
   NameUnnamedArrays(carried->GetPointData(), "UnnamedPointArray", named);
   NameUnnamedArrays(carried->GetCellData(), "UnnamedCellArray", named);
+  NameUnnamedArrays(carried->GetFieldData(), "UnnamedFieldArray", named);
   RemoveUnwritableArrays(carried->GetPointData(), dropped);
   RemoveUnwritableArrays(carried->GetCellData(), dropped);
   RemoveUnwritableArrays(carried->GetFieldData(), dropped);
@@ -144,8 +145,6 @@ vtkSmartPointer<vtkPolyData> CarriedInput(vtkPolyData* input, std::vector<std::s
   return carried;
 }
 
-/// Prefix of the input's field arrays on the "Tree" block.
-const char* const InputFieldPrefix = "InputField:";
 
 /// The input's field arrays, active attribute names and point precision on the "Tree" block.
 void AddInputRecord(vtkPolyData* carried, vtkFieldData* fd)

@@ -669,7 +669,7 @@ int vtkFoldingTreeUnfolder::RequestWholeData(vtkInformation*,
 
   // The input's field arrays, stored on the "Tree" block with a prefix; renamed where the
   // unfolder's own field data has the name.
-  const std::string prefix = "InputField:";
+  const std::string prefix = foldingmeshes::InputFieldPrefix;
   for (int a = 0; a < info->GetNumberOfArrays(); ++a)
   {
     vtkAbstractArray* stored = info->GetAbstractArray(a);

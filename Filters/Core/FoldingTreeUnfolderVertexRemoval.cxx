@@ -423,7 +423,8 @@ bool VertexRemover::Try(int v,
 void VertexRemover::Apply(const RingRemoval& removal)
 {
   Piece& piece = this->Mesh;
-  // Each new face carries the ids, copy and flags of the old star face it overlaps most among
+  // Each new face carries the ids, copy and flags of the old star face containing its centroid
+  // (seen along the star's mean normal; else the nearest centroid) among
   // those with the copy and filled flag of the star face whose ring edge starts at its second
   // vertex (the copy steers the later thinning; the choice is made on the old star).
   std::map<int, int> faceAt; // ring vertex -> the star face with the ring edge from it

@@ -52,7 +52,7 @@ struct RingRemoval
  * may be degenerate, the RingRules hold, and the surface moves by at most the limit
  * (sampled: v, the star's face centroids and spoke midpoints against the new faces, the new
  * faces' centroids and diagonal midpoints against the star). Apply replaces the star by the
- * new faces (each carries the ids, copy and flags of the old star face it overlaps most: the
+ * new faces (each carries the ids, copy and flags of an old star face - the
  * one containing its centroid seen along the star's mean normal, among the star faces with
  * the copy and flags of the one whose ring edge starts at its second vertex) and charges the
  * ring's error budgets what it moved. Compact drops the removed points and replaced faces.

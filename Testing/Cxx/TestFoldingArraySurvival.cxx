@@ -216,9 +216,15 @@ vtkSmartPointer<vtkPolyData> MakeInput(bool doublePoints)
   vtkNew<vtkStringArray> fieldString;
   fieldString->SetName("UserFieldString");
   fieldString->InsertNextValue("hello");
+  // Two unnamed field arrays: both come back, named (they once collapsed into one).
+  vtkNew<vtkDoubleArray> unnamedField1, unnamedField2;
+  unnamedField1->InsertNextValue(1.0);
+  unnamedField2->InsertNextValue(2.0);
   mesh->GetFieldData()->AddArray(fieldDouble);
   mesh->GetFieldData()->AddArray(diagonal);
   mesh->GetFieldData()->AddArray(fieldString);
+  mesh->GetFieldData()->AddArray(unnamedField1);
+  mesh->GetFieldData()->AddArray(unnamedField2);
   return mesh;
 }
 
@@ -272,6 +278,10 @@ void CheckUnfolded(vtkPolyData* input, vtkPolyData* out, const std::string& labe
   EXPECT(
     fieldString && fieldString->GetNumberOfValues() == 1 && fieldString->GetValue(0) == "hello",
     label << ": field array UserFieldString lost");
+  vtkDataArray* unnamed0 = fd->GetArray("UnnamedFieldArray0");
+  vtkDataArray* unnamed1 = fd->GetArray("UnnamedFieldArray1");
+  EXPECT(unnamed0 && unnamed1 && unnamed0->GetTuple1(0) == 1.0 && unnamed1->GetTuple1(0) == 2.0,
+    label << ": unnamed field arrays not both carried as UnnamedFieldArray0/1");
   vtkDataArray* userDiagonal = fd->GetArray("Diagonal_input");
   vtkDataArray* diagonal = fd->GetArray("Diagonal");
   EXPECT(

@@ -332,6 +332,33 @@ void TestMalformedMetadata(vtkMultiBlockDataSet* good)
         "builder, tetrahedron scaled by " << scale << ": status " << status << ", "
                                           << builder->GetStoredFaces() << " faces stored");
   }
+  // A collapsed triangle (three points at one position, dropped by the builder) far from the
+  // stored ones stretches the input's diagonal: the tree is still valid and unfolds.
+  {
+    vtkSmartPointer<vtkPolyData> mesh = Tetrahedron(2);
+    vtkPoints* points = mesh->GetPoints();
+    for (vtkIdType i = 0; i < points->GetNumberOfPoints(); ++i)
+    {
+      double p[3];
+      points->GetPoint(i, p);
+      points->SetPoint(i, p[0] + 100.0, p[1] + 100.0, p[2] + 100.0);
+    }
+    const vtkIdType collapsed[3] = { points->InsertNextPoint(0, 0, 0),
+      points->InsertNextPoint(0, 0, 0), points->InsertNextPoint(0, 0, 0) };
+    mesh->GetPolys()->InsertNextCell(3, collapsed);
+    vtkNew<vtkFoldingTreeBuilder> builder;
+    builder->SetInputData(mesh);
+    EventLog log;
+    const int built = UpdateCapturing(builder, log);
+    vtkNew<vtkFoldingTreeUnfolder> unfolder;
+    unfolder->SetInputConnection(builder->GetOutputPort(0));
+    EventLog unfoldLog;
+    const int unfolded = built ? UpdateCapturing(unfolder, unfoldLog) : 0;
+    EXPECT(built == 1 && unfolded == 1 && unfolder->GetOutput()->GetNumberOfCells() == 4,
+      "a far collapsed triangle: built " << built << ", unfolded " << unfolded << ": "
+                                         << (log.errors.empty() ? "" : log.errors[0])
+                                         << (unfoldLog.errors.empty() ? "" : unfoldLog.errors[0]));
+  }
   {
     vtkNew<vtkFoldingTreeBuilder> builder;
     builder->SetInputData(Tetrahedron(2));
