@@ -1,14 +1,16 @@
 # foldingmeshes_display_launcher(<out-var>)
 #
 # The command prefix for a test that renders: `xvfb-run -n <N> -a`, with a server number N of
-# its own (100, 101, ... in the order the tests are added), or nothing without xvfb-run.
+# its own (B, B + 1, ... in the order the tests are added, where the base B = 200 + 50 k is
+# chosen by a hash of the build directory, so that test runs of different build trees on one
+# machine use different numbers), or nothing without xvfb-run.
 # Plain `xvfb-run -a` starts every test at display 99, so rendering tests run back to back
 # reuse one display number, and xvfb-run kills its Xvfb on exit without waiting for it: a
 # server still shutting down can remove the socket of the next test's server on the same
 # number ("bad X server connection"). Numbers of their own avoid that; -a still moves on to a
 # free number if N is taken. The tests also hold RESOURCE_LOCK xvfb, so `ctest -j` never
 # starts two X servers at one moment. (X servers of other programs on the machine, which
-# xvfb-run only sees by their lock files, can still collide; CI runs alone.)
+# xvfb-run only sees by their lock files, can still collide, but rarely; CI runs alone.)
 find_program(FOLDINGMESHES_XVFB_RUN xvfb-run)
 function(foldingmeshes_display_launcher out)
   if (NOT FOLDINGMESHES_XVFB_RUN)
@@ -17,7 +19,9 @@ function(foldingmeshes_display_launcher out)
   endif ()
   get_property(number GLOBAL PROPERTY FOLDINGMESHES_NEXT_DISPLAY)
   if (NOT number)
-    set(number 100)
+    string(MD5 hash "${CMAKE_BINARY_DIR}")
+    string(SUBSTRING "${hash}" 0 4 hash)
+    math(EXPR number "200 + 50 * (0x${hash} % 80)")
   endif ()
   math(EXPR next "${number} + 1")
   set_property(GLOBAL PROPERTY FOLDINGMESHES_NEXT_DISPLAY ${next})
