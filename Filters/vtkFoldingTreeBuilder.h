@@ -18,7 +18,11 @@
  *   point (the centroid of the stored points, no cell) whose field data holds OriginalFaces,
  * OriginalPoints, DroppedFaces, StoredFaces, StoredPoints, Compression (1 - stored/original),
  * TreeHeight, NumberOfNodes, NumberOfLeaves, NumberOfFolds, MaximumFoldsOnPath, OriginalArea,
- * BuildSeconds, RootEpsilon, Diagonal, Aborted, and what the unfolder restores of the input:
+ * BuildSeconds, RootEpsilon, Diagonal, Aborted, InputNonManifoldEdges (vtkIdType, 3
+ * components per edge of the input used by more than two faces: its input point ids a < b and
+ * the number of faces; only when there are any; optional on reading: the tree's
+ * inputNonManifoldEdges, whose faces the unfolder's repair keeps), and what the unfolder
+ * restores of the input:
  * its field arrays (each under "InputField:" + its name), "InputPointAttributes" and
  * "InputCellAttributes" (string arrays, an entry "k:name" per vtkDataSetAttributes attribute
  * type k: the name of its active scalars, vectors, normals, tcoords, tensors, global ids,

@@ -494,6 +494,33 @@ bool MultiBlockToFoldingTree(vtkMultiBlockDataSet* in,
       reader.Double(fd, "BuildSeconds", "Tree", &tree.buildSeconds);
     if (fd->GetAbstractArray("Aborted") && reader.Int(fd, "Aborted", "Tree", aborted))
       tree.aborted = aborted != 0;
+    // Optional (older files): without it the repair keeps no non-manifold edge.
+    if (vtkAbstractArray* a = fd->GetAbstractArray("InputNonManifoldEdges"))
+    {
+      vtkDataArray* nm = vtkDataArray::SafeDownCast(a);
+      if (!nm || nm->GetNumberOfComponents() != 3)
+      {
+        error = "\"Tree\": InputNonManifoldEdges does not have three values per edge";
+        return false;
+      }
+      for (vtkIdType k = 0; k < nm->GetNumberOfTuples(); ++k)
+      {
+        double v[3] = { 0.0, 0.0, 0.0 };
+        for (int c = 0; c < 3; ++c)
+        {
+          v[c] = nm->GetComponent(k, c);
+          if (!std::isfinite(v[c]) || v[c] != std::floor(v[c]) || v[c] < 0.0 ||
+            v[c] > static_cast<double>(most))
+          {
+            error = "\"Tree\": invalid values in InputNonManifoldEdges";
+            return false;
+          }
+        }
+        tree.inputNonManifoldEdges.push_back(
+          { static_cast<int>(v[0]), static_cast<int>(v[1]), static_cast<int>(v[2]) });
+      }
+      std::sort(tree.inputNonManifoldEdges.begin(), tree.inputNonManifoldEdges.end());
+    }
   }
   const char* rootName =
     in->HasMetaData(0u) ? in->GetMetaData(0u)->Get(vtkCompositeDataSet::NAME()) : nullptr;

@@ -524,6 +524,22 @@ bool FoldingTreeToMultiBlock(const FoldingTree& tree,
   AddDouble(fd, "RootEpsilon", &tree.rootEpsilon);
   AddDouble(fd, "Diagonal", &tree.diagonal);
   AddInt(fd, "Aborted", tree.aborted ? 1 : 0);
+  if (!tree.inputNonManifoldEdges.empty())
+  {
+    // FoldingTree::inputNonManifoldEdges: (input point id a, b, faces) per edge.
+    vtkNew<vtkIdTypeArray> edges;
+    edges->SetName("InputNonManifoldEdges");
+    edges->SetNumberOfComponents(3);
+    edges->SetNumberOfTuples(static_cast<vtkIdType>(tree.inputNonManifoldEdges.size()));
+    for (size_t k = 0; k < tree.inputNonManifoldEdges.size(); ++k)
+    {
+      const InputNonManifoldEdge& e = tree.inputNonManifoldEdges[k];
+      edges->SetTypedComponent(static_cast<vtkIdType>(k), 0, e.a);
+      edges->SetTypedComponent(static_cast<vtkIdType>(k), 1, e.b);
+      edges->SetTypedComponent(static_cast<vtkIdType>(k), 2, e.faces);
+    }
+    fd->AddArray(edges);
+  }
   if (carried)
     AddInputRecord(carried, fd);
   out->SetBlock(1, info);

@@ -211,8 +211,10 @@ public:
 
   ///@{
   /**
-   * Finally repair the mesh (default on): drop the faces that make an edge non-manifold,
-   * orient every connected component consistently, and fill each boundary loop that is not
+   * Finally repair the mesh (default on): drop the faces that make an edge non-manifold
+   * (except at the input's own non-manifold edges, the tree's "InputNonManifoldEdges": they
+   * keep up to as many faces as the input edge had), orient every connected component
+   * consistently, and fill each boundary loop that is not
    * the input's own border (the leaves' "InputBoundary" point array; trees without it: no
    * loop is filled) by a minimal-area triangulation of its vertices, when every new face
    * stays within HoleToleranceScale x the root tolerance of the loop (default 1, range

@@ -125,6 +125,11 @@ std::string FoldingTree::Validate() const
   if (this->numberOfOriginalFaces < 0 || this->numberOfOriginalPoints < 0 ||
     this->numberOfDroppedFaces < 0)
     return "negative numbers of original faces, points or dropped faces";
+  for (const InputNonManifoldEdge& e : this->inputNonManifoldEdges)
+    if (e.a < 0 || e.a >= e.b || e.faces <= 2 ||
+      (this->numberOfOriginalPoints > 0 && e.b >= this->numberOfOriginalPoints))
+      return "an input non-manifold edge has invalid point ids (not 0 <= a < b < original "
+             "points) or at most two faces";
   if (this->StoredFaces() == 0)
     return "the leaves store no triangles";
   for (int i = 0; i < n; ++i)

@@ -136,6 +136,18 @@ struct FoldingNode
   FoldingLeafMesh mesh;
 };
 
+/// An edge of the input used by more than two faces (FoldingTree::inputNonManifoldEdges).
+struct InputNonManifoldEdge
+{
+  int a = -1; ///< input point ids, a < b
+  int b = -1;
+  int faces = 0; ///< faces using the edge (> 2)
+  bool operator<(const InputNonManifoldEdge& o) const
+  {
+    return a != o.a ? a < o.a : b != o.b ? b < o.b : faces < o.faces;
+  }
+};
+
 /**
  * The tree: nodes in preorder (nodes[0] is the root, children follow their parent).
  * Also the statistics of the paper's Table 1.
@@ -157,6 +169,11 @@ struct FoldingTree
   /// With the leaves' inputBoundary flags the unfolder tells the input's border from gaps.
   /// Empty: no border, or unknown (older files) - then only the flags are used.
   std::vector<std::pair<int, int>> inputBorderEdges;
+  /// The input's own non-manifold edges: its edges used by more than two faces (after the
+  /// root's weld; duplicate faces count), as sorted pairs of input point ids like
+  /// inputBorderEdges, sorted, with the number of faces using each. The unfolder's repair
+  /// keeps the faces at such an edge (up to that many). Empty: none, or unknown (older files).
+  std::vector<InputNonManifoldEdge> inputNonManifoldEdges;
 
   bool Empty() const { return this->nodes.empty(); }
   int NumberOfNodes() const { return static_cast<int>(this->nodes.size()); }

@@ -159,6 +159,16 @@ int Builder::Build(WorkMesh w, int parent, int depth, double eps, int folds, uin
             this->InputBoundary[v] = 1;
       }
     std::sort(this->Tree.inputBorderEdges.begin(), this->Tree.inputBorderEdges.end());
+    // And its non-manifold edges (more than two faces, duplicate faces included): the
+    // unfolder's repair keeps their faces (FoldingTree::inputNonManifoldEdges).
+    this->Tree.inputNonManifoldEdges.clear();
+    for (const auto& e : uses)
+      if (e.second > 2)
+      {
+        const int a = w.pointOrig[e.first.first], b = w.pointOrig[e.first.second];
+        this->Tree.inputNonManifoldEdges.push_back({ std::min(a, b), std::max(a, b), e.second });
+      }
+    std::sort(this->Tree.inputNonManifoldEdges.begin(), this->Tree.inputNonManifoldEdges.end());
   }
   else if (!dropped.empty())
   {

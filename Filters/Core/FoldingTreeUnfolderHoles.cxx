@@ -19,12 +19,49 @@ namespace unfolder_detail
 {
 using namespace repair;
 
+/// Splits a walk at repeated vertices into simple loops (of at least 3 vertices), appended to
+/// `loops`; the rest counts as a loop too when `closed`.
+static void SplitWalk(const std::vector<int>& walk,
+  bool closed,
+  std::vector<std::vector<int>>& loops)
+{
+  std::vector<int> stack;
+  std::map<int, size_t> at;
+  for (int v : walk)
+  {
+    auto it = at.find(v);
+    if (it != at.end())
+    {
+      std::vector<int> loop(stack.begin() + it->second, stack.end());
+      for (size_t i = it->second; i < stack.size(); ++i)
+        at.erase(stack[i]);
+      stack.resize(it->second);
+      if (loop.size() >= 3)
+        loops.push_back(loop);
+    }
+    at[v] = stack.size();
+    stack.push_back(v);
+  }
+  if (closed && stack.size() >= 3)
+    loops.push_back(stack);
+}
+
 /**
  * Boundary loops of the mesh, traced along hole half-edges (the reverses of the open face
- * half-edges) and split at pinch vertices into simple loops.
+ * half-edges) and split at pinch vertices into simple loops. With `undirectedRest` (the
+ * tree lists input non-manifold edges, which the repair keeps: around them the hole
+ * half-edges need not form cycles - at a fan of faces on one edge they all run from one end
+ * of it to the other), the open edges left in no loop are traced again as undirected edges:
+ * first chains between branch points or ends whose ends at most three non-manifold edges
+ * join (closed by them), then cycles; such a loop runs the way most of its edges' hole
+ * half-edges do. What is still left is appended chain by chain from index `reportOnly` on
+ * (not closed: reported, never filled; max() when there is none).
  */
-std::vector<std::vector<int>> Unfolder::BoundaryLoops(const Piece& piece)
+std::vector<std::vector<int>> Unfolder::BoundaryLoops(const Piece& piece,
+  bool undirectedRest,
+  size_t& reportOnly)
 {
+  reportOnly = std::numeric_limits<size_t>::max();
   std::map<int, std::vector<int>> holeNext;          // hole half-edge a -> b, by a
   std::unordered_map<Edge, int, EdgeHash> halfEdges; // directed face half-edge -> face
   EdgeSet open;
@@ -96,27 +133,128 @@ std::vector<std::vector<int>> Unfolder::BoundaryLoops(const Piece& piece)
         a = b;
         b = next;
       }
-      // Split at repeated vertices into simple loops.
-      std::vector<int> stack;
-      std::map<int, size_t> at;
-      for (int v : walk)
-      {
-        auto it = at.find(v);
-        if (it != at.end())
-        {
-          std::vector<int> loop(stack.begin() + it->second, stack.end());
-          for (size_t i = it->second; i < stack.size(); ++i)
-            at.erase(stack[i]);
-          stack.resize(it->second);
-          if (loop.size() >= 3)
-            loops.push_back(loop);
-        }
-        at[v] = stack.size();
-        stack.push_back(v);
-      }
-      if (closed && stack.size() >= 3)
-        loops.push_back(stack);
+      SplitWalk(walk, closed, loops);
     }
+  if (!undirectedRest)
+    return loops;
+  // The open edges in no loop, traced undirected: first cycles (walking on through branch
+  // points), then chains (between branch points or ends) closed by non-manifold edges.
+  std::map<int, std::vector<int>> nonManifold; // edges of more than two faces, by end point
+  for (const auto& e : EdgeFaces(piece))
+    if (e.second.size() > 2)
+    {
+      nonManifold[e.first.first].push_back(e.first.second);
+      nonManifold[e.first.second].push_back(e.first.first);
+    }
+  // The inner vertices of a shortest path from `from` to `to` along non-manifold edges, at
+  // most three edges, avoiding `walk`'s vertices (`to` excepted); false: none.
+  auto nonManifoldPath = [&](int from, int to, const std::vector<int>& walk, std::vector<int>& path)
+  {
+    std::map<int, int> previous{ { from, from } };
+    std::vector<int> layer{ from };
+    for (int depth = 0; depth < 3 && !layer.empty(); ++depth)
+    {
+      std::vector<int> nextLayer;
+      for (int v : layer)
+      {
+        auto it = nonManifold.find(v);
+        if (it == nonManifold.end())
+          continue;
+        for (int w : it->second)
+        {
+          if (previous.count(w) ||
+            (w != to && std::find(walk.begin(), walk.end(), w) != walk.end()))
+            continue;
+          previous[w] = v;
+          if (w == to)
+          {
+            path.clear();
+            for (int x = v; x != from; x = previous[x])
+              path.push_back(x);
+            std::reverse(path.begin(), path.end());
+            return true;
+          }
+          nextLayer.push_back(w);
+        }
+      }
+      layer = std::move(nextLayer);
+    }
+    return false;
+  };
+  const size_t directed = loops.size();
+  for (int stage = 0; stage < 3; ++stage)
+  {
+    if (stage == 2)
+      reportOnly = loops.size();
+    EdgeSet inLoop;
+    for (const auto& loop : loops)
+      for (size_t i = 0; i < loop.size(); ++i)
+        inLoop.insert(Key(loop[i], loop[(i + 1) % loop.size()]));
+    std::map<int, std::vector<int>> around; // open edges left, by end point (sorted)
+    for (const Edge& e : std::set<Edge>(open.begin(), open.end()))
+      if (!inLoop.count(e))
+      {
+        around[e.first].push_back(e.second);
+        around[e.second].push_back(e.first);
+      }
+    const bool chains = stage != 1;
+    std::set<Edge> used;
+    for (int pass = 0; pass < (stage == 2 ? 2 : 1); ++pass)
+      for (const auto& start : around)
+        for (int firstNext : start.second)
+        {
+          // Chains start at branch points and ends (then, left at last, anywhere).
+          if (used.count(Key(start.first, firstNext)) ||
+            (chains && pass == 0 && start.second.size() == 2))
+            continue;
+          std::vector<int> walk;
+          int a = start.first, b = firstNext;
+          bool closed = false;
+          while (true)
+          {
+            used.insert(Key(a, b));
+            walk.push_back(a);
+            int next = -1;
+            if (!chains || around[b].size() == 2)
+              for (int c : around[b])
+                if (!used.count(Key(b, c)))
+                {
+                  next = c;
+                  break;
+                }
+            if (next < 0)
+            {
+              closed = b == start.first;
+              if (chains && !closed)
+              {
+                walk.push_back(b);
+                std::vector<int> back;
+                closed = nonManifoldPath(b, start.first, walk, back) || stage == 2;
+                walk.insert(walk.end(), back.begin(), back.end());
+              }
+              break;
+            }
+            a = b;
+            b = next;
+          }
+          if (stage == 2)
+            loops.push_back(walk); // (reported, never filled)
+          else
+            SplitWalk(walk, closed, loops);
+        }
+  }
+  for (size_t l = directed; l < loops.size(); ++l)
+  {
+    std::vector<int>& loop = loops[l];
+    int along = 0; // edges a -> b whose open face runs b -> a (a hole half-edge)
+    for (size_t i = 0; i < loop.size(); ++i)
+    {
+      const int a = loop[i], b = loop[(i + 1) % loop.size()];
+      along += halfEdges.count({ b, a }) ? 1 : -1;
+    }
+    if (along < 0)
+      std::reverse(loop.begin(), loop.end());
+  }
   return loops;
 }
 
@@ -316,7 +454,8 @@ bool Unfolder::FillWithinTolerance(const Piece& piece,
  */
 int Unfolder::FillLoops(Piece& piece, RepairReport& report, bool apply)
 {
-  const auto loops = BoundaryLoops(piece);
+  size_t reportOnly = 0;
+  const auto loops = BoundaryLoops(piece, !this->Tree.inputNonManifoldEdges.empty(), reportOnly);
   EdgeSet existing;
   std::unordered_map<Edge, int, EdgeHash> faceOfHalfEdge; // directed face half-edge -> face
   existing.reserve(3 * piece.triangles.size());
@@ -348,20 +487,35 @@ int Unfolder::FillLoops(Piece& piece, RepairReport& report, bool apply)
     report.filledFaces += static_cast<int>(fill.size());
     ++report.filledLoops;
   };
+  // Loops closed by non-manifold edges (BoundaryLoops) report only their open edges.
+  EdgeSet openEdges;
+  if (!this->Tree.inputNonManifoldEdges.empty())
+    for (const auto& e : EdgeFaces(piece))
+      if (e.second.size() == 1)
+        openEdges.insert(e.first);
   int filled = 0;
-  for (const std::vector<int>& loop : loops)
+  for (size_t index = 0; index < loops.size(); ++index)
   {
+    const std::vector<int>& loop = loops[index];
     const int n = static_cast<int>(loop.size());
-    double length = 0.0;
+    double length = 0.0, reportedLength = 0.0;
+    int reported = 0;
     bool border = false, unknown = false;
     for (int i = 0; i < n; ++i)
     {
       const int a = loop[i], b = loop[(i + 1) % n];
-      length += (piece.points[a] - piece.points[b]).norm();
+      const double l = (piece.points[a] - piece.points[b]).norm();
+      length += l;
+      if (this->Tree.inputNonManifoldEdges.empty() ||
+        (openEdges.count(Key(a, b)) && (n > 2 || i == 0)))
+      {
+        ++reported;
+        reportedLength += l;
+      }
       border = border || this->IsInputBorderEdge(piece, a, b);
       unknown = unknown || piece.border[a] == 2 || piece.border[b] == 2;
     }
-    if (border && !unknown && apply && n <= this->Options.maximumHoleEdges)
+    if (border && !unknown && apply && n <= this->Options.maximumHoleEdges && index < reportOnly)
     {
       // A gap that opens into the input's border: close each run of non-border edges
       // between two border vertices p, q by the chord q -> p (a new border edge), when the
@@ -423,8 +577,18 @@ int Unfolder::FillLoops(Piece& piece, RepairReport& report, bool apply)
       {
         int& count = border ? report.borderLoops : report.unknownLoops;
         ++count;
-        (border ? report.borderEdges : report.unknownEdges) += n;
-        (border ? report.borderLength : report.unknownLength) += length;
+        (border ? report.borderEdges : report.unknownEdges) += reported;
+        (border ? report.borderLength : report.unknownLength) += reportedLength;
+      }
+      continue;
+    }
+    if (index >= reportOnly) // open edges BoundaryLoops could not close: reported only
+    {
+      if (!apply)
+      {
+        ++report.openLoops;
+        report.openEdges += reported;
+        report.openLength += reportedLength;
       }
       continue;
     }
@@ -467,8 +631,8 @@ int Unfolder::FillLoops(Piece& piece, RepairReport& report, bool apply)
       if (!apply)
       {
         ++report.openLoops;
-        report.openEdges += n;
-        report.openLength += length;
+        report.openEdges += reported;
+        report.openLength += reportedLength;
       }
       filled += ok;
       continue;

@@ -7,6 +7,7 @@
 #include "UnionFind.h"
 
 #include <algorithm>
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <functional>
@@ -223,9 +224,9 @@ public:
   /// the face count of the node's region; returns the number of points removed.
   /// Thins the copy mirrored at `node` towards the node's face count (the comment in
   /// FoldingTreeUnfolderDensity.cxx). The final pass (after the repair; `pointFloor` >= 0)
-  /// counts no projected point as pending (unless removeProjectedPoints is off), stops before the points used by faces drop below
-  /// `pointFloor`, grants no budget where it is unknown and leaves the points flagged in
-  /// `added` (kept in step with the points) alone.
+  /// counts no projected point as pending (unless removeProjectedPoints is off), stops before the
+  /// points used by faces drop below `pointFloor`, grants no budget where it is unknown and leaves
+  /// the points flagged in `added` (kept in step with the points) alone.
   int MatchDiscardedDensity(const FoldingNode& node,
     Piece& piece,
     std::vector<char>* added = nullptr,
@@ -272,9 +273,16 @@ private:
     bool fill,
     SeamReport& seam);
 
-  static int DropNonManifoldFaces(Piece& piece);
+  int InputNonManifoldFaces(const Piece& piece, int a, int b) const;
+  bool InputDuplicate(const Piece& piece,
+    const Triangle& t,
+    const std::pair<int, std::array<int, 3>>& face,
+    const std::vector<std::pair<int, std::array<int, 3>>>& same) const;
+  int DropNonManifoldFaces(Piece& piece) const;
   static int OrientComponents(Piece& piece, int& dropped);
-  static std::vector<std::vector<int>> BoundaryLoops(const Piece& piece);
+  static std::vector<std::vector<int>> BoundaryLoops(const Piece& piece,
+    bool undirectedRest,
+    size_t& reportOnly);
   static bool TriangulateLoop(const Piece& piece,
     const std::vector<int>& loop,
     const EdgeSet& existing,

@@ -4,6 +4,7 @@
 #include "FoldingTreeUnfolderRepairInternal.h"
 
 #include <algorithm>
+#include <cstddef>
 #include <cstdio>
 #include <cstdlib>
 #include <limits>
@@ -15,13 +16,34 @@ namespace foldingmeshes
 namespace unfolder_detail
 {
 using namespace repair;
+/// The number of faces of the input's non-manifold edge that the edge a-b of `piece` copies
+/// (through the points' input ids, FoldingTree::inputNonManifoldEdges), 0 if none.
+int Unfolder::InputNonManifoldFaces(const Piece& piece, int a, int b) const
+{
+  const auto& edges = this->Tree.inputNonManifoldEdges;
+  const int x = std::min(piece.pointOrig[a], piece.pointOrig[b]);
+  const int y = std::max(piece.pointOrig[a], piece.pointOrig[b]);
+  if (edges.empty() || x == y)
+    return 0;
+  const auto it = std::lower_bound(edges.begin(),
+    edges.end(),
+    std::make_pair(x, y),
+    [](const InputNonManifoldEdge& e, const std::pair<int, int>& k)
+    { return std::make_pair(e.a, e.b) < k; });
+  return it != edges.end() && it->a == x && it->b == y ? it->faces : 0;
+}
+
 /**
- * Drops faces until no edge has more than two: at each such edge the two faces kept are
- * those that traverse it in opposite directions and are the least folded against each other
- * (largest normal agreement), preferring faces that are not gap fills; the others go (the
- * holes they leave are filled afterwards). Returns the number of faces dropped.
+ * Drops faces until no edge has more than two, except at the copies of the input's own
+ * non-manifold edges (InputNonManifoldFaces), which keep as many faces as the input edge had:
+ * at such an edge with more (faces the unfolding laid on top) the extra ones go, gap fills
+ * first, then those whose third vertex lies nearest another face's (a duplicate copy), the
+ * later face on a tie. At any other edge the two faces kept are those that traverse it in
+ * opposite directions and are the least folded against each other (largest normal
+ * agreement), preferring faces that are not gap fills; the others go (the holes they leave
+ * are filled afterwards). Returns the number of faces dropped.
  */
-int Unfolder::DropNonManifoldFaces(Piece& piece)
+int Unfolder::DropNonManifoldFaces(Piece& piece) const
 {
   int dropped = 0;
   for (int round = 0; round < 4; ++round)
@@ -37,8 +59,49 @@ int Unfolder::DropNonManifoldFaces(Piece& piece)
           faces.push_back(f);
       if (faces.size() <= 2)
         continue;
-      any = true;
       const int a = e.first.first, b = e.first.second;
+      const int inputFaces = this->InputNonManifoldFaces(piece, a, b);
+      if (inputFaces > 2)
+      {
+        if (static_cast<int>(faces.size()) <= inputFaces)
+          continue; // the input's own non-manifold edge: kept
+        any = true;
+        auto opposite = [&](int f) -> const Vec3&
+        {
+          const Triangle& t = piece.triangles[f];
+          int k = 0;
+          while (k < 2 && (t[k] == a || t[k] == b))
+            ++k;
+          return piece.points[t[k]];
+        };
+        while (static_cast<int>(faces.size()) > inputFaces)
+        {
+          size_t worst = 0;
+          double worstNearest = 0.0;
+          for (size_t i = 0; i < faces.size(); ++i)
+          {
+            double nearest = std::numeric_limits<double>::infinity();
+            for (size_t j = 0; j < faces.size(); ++j)
+              if (j != i)
+                nearest = std::min(nearest, (opposite(faces[i]) - opposite(faces[j])).norm());
+            const int f = faces[i], w = faces[worst];
+            const bool worse = i == 0 ||
+              (piece.faceFilled[f] != piece.faceFilled[w]
+                  ? piece.faceFilled[f] > piece.faceFilled[w]
+                  : nearest != worstNearest ? nearest < worstNearest
+                                            : f > w);
+            if (worse)
+            {
+              worst = i;
+              worstNearest = nearest;
+            }
+          }
+          drop[faces[worst]] = 1;
+          faces.erase(faces.begin() + static_cast<std::ptrdiff_t>(worst));
+        }
+        continue;
+      }
+      any = true;
       int bestF = -1, bestG = -1;
       double bestScore = -std::numeric_limits<double>::infinity();
       for (size_t i = 0; i < faces.size(); ++i)

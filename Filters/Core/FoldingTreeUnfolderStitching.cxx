@@ -55,6 +55,30 @@ void Unfolder::WeldBoundaries(Piece& piece, SeamReport& seam)
   this->StitchVertices(piece, open, copyOf, tol, this->Tree.rootEpsilon, false, seam);
 }
 
+/// Whether face t of `piece` (`face`: its input face and the sorted input ids of its
+/// vertices before the stitch), on the same vertices as the faces `same`, is one of the
+/// input's own duplicate faces: another input face on the same input vertices as one of them,
+/// every edge a copy of an input non-manifold edge (the duplicates make them so).
+bool Unfolder::InputDuplicate(const Piece& piece,
+  const Triangle& t,
+  const std::pair<int, std::array<int, 3>>& face,
+  const std::vector<std::pair<int, std::array<int, 3>>>& same) const
+{
+  bool sameVertices = false;
+  for (const auto& s : same)
+  {
+    if (s.first == face.first)
+      return false;
+    sameVertices = sameVertices || s.second == face.second;
+  }
+  if (!sameVertices)
+    return false;
+  for (int k = 0; k < 3; ++k)
+    if (this->InputNonManifoldFaces(piece, t[k], t[(k + 1) % 3]) < 3)
+      return false;
+  return true;
+}
+
 /**
  * Stitching of the candidate vertices `isTear` (see UnfoldFoldingTree): pairing by
  * union-find within `tol` (never two vertices of one child), merged clusters placed where
@@ -240,7 +264,8 @@ void Unfolder::StitchVertices(Piece& piece,
     }
   seam.unmatchedTearVertices = seam.tearVertices - seam.stitchedVertices;
 
-  // Remap faces; drop collapsed and duplicate ones.
+  // Remap faces; drop collapsed and duplicate ones (but the input's own duplicates:
+  // InputDuplicate).
   Piece out;
   std::vector<int> newId(n, -1);
   std::vector<std::vector<int>> outChildren; // children a point belongs to (sorted)
@@ -262,7 +287,8 @@ void Unfolder::StitchVertices(Piece& piece,
   for (int v = 0; v < n; ++v)
     if (rep[v] == v && count[v] >= 2 && spread[v] > this->Options.exactStitchFraction * epsilon)
       rough[newId[v]] = spread[v];
-  std::map<std::array<int, 3>, int> seen;
+  // Sorted vertices -> the faces kept there: input face and sorted input ids of its vertices.
+  std::map<std::array<int, 3>, std::vector<std::pair<int, std::array<int, 3>>>> seen;
   for (int f = 0; f < piece.NumberOfFaces(); ++f)
   {
     const Triangle& t = piece.triangles[f];
@@ -274,11 +300,15 @@ void Unfolder::StitchVertices(Piece& piece,
     }
     std::array<int, 3> sorted{ u[0], u[1], u[2] };
     std::sort(sorted.begin(), sorted.end());
-    if (!seen.emplace(sorted, f).second)
+    std::array<int, 3> ids{ piece.pointOrig[t[0]], piece.pointOrig[t[1]], piece.pointOrig[t[2]] };
+    std::sort(ids.begin(), ids.end());
+    auto& same = seen[sorted];
+    if (!same.empty() && !this->InputDuplicate(out, u, { piece.faceOrig[f], ids }, same))
     {
       ++seam.droppedFaces;
       continue;
     }
+    same.push_back({ piece.faceOrig[f], ids });
     out.triangles.push_back(u);
     out.faceOrig.push_back(piece.faceOrig[f]);
     out.faceCopy.push_back(piece.faceCopy[f]);

@@ -1,5 +1,6 @@
 // Bad-input tests of TestFoldingTreeFilters: malformed trees (structure, and metadata: Diagonal,
-// RootEpsilon, OriginalFaces, level-flag bits, leaves without triangles), an unusable Original,
+// RootEpsilon, OriginalFaces, level-flag bits, leaves without triangles, InputNonManifoldEdges
+// with a bad layout or values), an unusable Original,
 // NaN parameters, and builder inputs that are empty or refer to points that do not exist.
 #include "TestFoldingTreeChecks.h"
 #include "vtkFoldingTreeBuilder.h"
@@ -11,6 +12,7 @@
 #include <vtkCellData.h>
 #include <vtkCommand.h>
 #include <vtkDataArray.h>
+#include <vtkDoubleArray.h>
 #include <vtkFieldData.h>
 #include <vtkImageData.h>
 #include <vtkIdTypeArray.h>
@@ -225,6 +227,50 @@ void TestMalformedMetadata(vtkMultiBlockDataSet* good)
         std::string(name) + " " + Str(count),
         name,
         [&](vtkMultiBlockDataSet* t) { SetTreeValue(t, name, count); });
+  // The input's non-manifold edges (optional: a good tree may have none): wrong layout, a
+  // point id out of range, a < b broken, at most two faces, a fraction.
+  {
+    struct Damage
+    {
+      const char* label;
+      int components;
+      double a, b, faces;
+      const char* error;
+    };
+    const Damage damages[] = {
+      { "InputNonManifoldEdges with 2 components", 2, 0, 1, 3, "three values per edge" },
+      { "InputNonManifoldEdges point out of range", 3, 0, 1e9, 3, "non-manifold edge" },
+      { "InputNonManifoldEdges a > b", 3, 2, 1, 3, "non-manifold edge" },
+      { "InputNonManifoldEdges 2 faces", 3, 0, 1, 2, "non-manifold edge" },
+      { "InputNonManifoldEdges negative id", 3, -1, 1, 3, "InputNonManifoldEdges" },
+      { "InputNonManifoldEdges fraction", 3, 0, 1, 3.5, "InputNonManifoldEdges" },
+    };
+    for (const Damage& d : damages)
+      ExpectTreeFails(good,
+        d.label,
+        d.error,
+        [&](vtkMultiBlockDataSet* t)
+        {
+          vtkPolyData* info = vtkPolyData::SafeDownCast(t->GetBlock(1));
+          vtkNew<vtkIdTypeArray> edges;
+          edges->SetName("InputNonManifoldEdges");
+          edges->SetNumberOfComponents(d.components);
+          edges->SetNumberOfTuples(1);
+          const double v[3] = { d.a, d.b, d.faces };
+          for (int c = 0; c < d.components; ++c)
+            edges->SetComponent(0, c, v[c]);
+          if (d.faces == 3.5) // (an integer array cannot hold it)
+          {
+            vtkNew<vtkDoubleArray> fraction;
+            fraction->DeepCopy(edges);
+            fraction->SetName("InputNonManifoldEdges");
+            fraction->SetComponent(0, 2, 3.5);
+            info->GetFieldData()->AddArray(fraction);
+            return;
+          }
+          info->GetFieldData()->AddArray(edges);
+        });
+  }
   // Level flags for the leaf's own depth (no node above it there) and beyond.
   for (const char* mask : { "PlaneMask", "TearMask" })
     for (int extra : { 0, 5 })

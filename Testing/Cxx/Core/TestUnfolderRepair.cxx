@@ -10,7 +10,13 @@
 // - a hole whose fill would leave the tolerance (tiny root epsilon) is left open and
 //   reported (loops, edges, length);
 // - faces flipped by hand are turned back (misoriented 0, the component keeps the
-//   orientation of its larger part); an extra face on an edge (non-manifold) is dropped.
+//   orientation of its larger part); an extra face on an edge (non-manifold) is dropped,
+//   also when the tree lists other input non-manifold edges;
+// - the input's own non-manifold edges (FoldingTree::inputNonManifoldEdges) keep their faces:
+//   a fan of 10 triangles on one edge, a face duplicated on the sphere, a two-sided sphere
+//   (every edge used by 4 faces) come back with every face, nothing dropped or flipped; a face
+//   laid on top of a listed edge (more faces than listed) is dropped (the duplicate, not the
+//   input's face); without the list (older tree files) the fan loses all but two faces.
 #include "CoreTestUtilities.h"
 #include "FoldingTreeUnfolder.h"
 #include "ProceduralMeshes.h"
@@ -225,15 +231,127 @@ void TestOrientationAndNonManifold(const TriangleMesh& sphere)
       (sphere.points[far] - sphere.points[t0[0]]).norm())
       far = v;
   fin.triangles.push_back({ t0[0], t0[1], far });
-  const FoldingTree finTree = LeafTree(fin, 0.04);
+  FoldingTree finTree = LeafTree(fin, 0.04);
   EXPECT(coretest::CountEdges(coretest::Unfold(finTree, off).triangles).nonManifold == 1,
     "fin: not non-manifold");
-  const UnfoldedMesh g = coretest::Unfold(finTree);
-  const coretest::EdgeStats gs = coretest::CountEdges(g.triangles);
-  EXPECT(gs.nonManifold == 0 && gs.misoriented == 0 && gs.open == 0 &&
-      g.NumberOfFaces() == static_cast<int>(sphere.triangles.size()) && g.repair.droppedFaces == 1,
-    "fin: " << gs.nonManifold << " non-manifold, " << gs.open << " open edges, "
-            << g.repair.droppedFaces << " faces dropped");
+  // (Another input non-manifold edge listed, not this one: the fin is still dropped.)
+  const Triangle& t1 = sphere.triangles[sphere.triangles.size() / 2];
+  for (int listed = 0; listed < 2; ++listed)
+  {
+    if (listed)
+      finTree.inputNonManifoldEdges = { { std::min(t1[0], t1[1]), std::max(t1[0], t1[1]), 3 } };
+    const UnfoldedMesh g = coretest::Unfold(finTree);
+    const coretest::EdgeStats gs = coretest::CountEdges(g.triangles);
+    EXPECT(gs.nonManifold == 0 && gs.misoriented == 0 && gs.open == 0 &&
+        g.NumberOfFaces() == static_cast<int>(sphere.triangles.size()) &&
+        g.repair.droppedFaces == 1,
+      "fin (other edges listed: " << listed << "): " << gs.nonManifold << " non-manifold, "
+                                  << gs.open << " open edges, " << g.repair.droppedFaces
+                                  << " faces dropped");
+  }
+}
+
+/// The non-manifold edges of `m` (more than two faces) as FoldingTree lists them.
+std::vector<InputNonManifoldEdge> NonManifoldEdges(const TriangleMesh& m)
+{
+  std::map<std::pair<int, int>, int> uses;
+  for (const Triangle& t : m.triangles)
+    for (int k = 0; k < 3; ++k)
+      ++uses[{ std::min(t[k], t[(k + 1) % 3]), std::max(t[k], t[(k + 1) % 3]) }];
+  std::vector<InputNonManifoldEdge> edges;
+  for (const auto& e : uses)
+    if (e.second > 2)
+      edges.push_back({ e.first.first, e.first.second, e.second });
+  return edges;
+}
+
+/// Unfolds `m` (one leaf, every point on the input's border unless `closed`, the non-manifold
+/// edges listed) and checks that every face comes back, none dropped, flipped or added.
+void ExpectAllFacesKept(const char* name, const TriangleMesh& m, bool closed)
+{
+  FoldingTree tree = LeafTree(m, 0.04);
+  if (!closed)
+    tree.nodes[0].mesh.inputBoundary.assign(m.points.size(), 1);
+  tree.inputNonManifoldEdges = NonManifoldEdges(m);
+  REQUIRE(!tree.inputNonManifoldEdges.empty(), name << ": no non-manifold edge");
+  const UnfoldedMesh u = coretest::Unfold(tree);
+  const coretest::EdgeStats in = coretest::CountEdges(m.triangles);
+  const coretest::EdgeStats out = coretest::CountEdges(u.triangles);
+  std::printf("%s: %zu faces, %zu non-manifold edges -> %d faces, %d non-manifold, dropped %d "
+              "flipped %d filled %d\n",
+    name,
+    m.triangles.size(),
+    tree.inputNonManifoldEdges.size(),
+    u.NumberOfFaces(),
+    out.nonManifold,
+    u.repair.droppedFaces,
+    u.repair.flippedFaces,
+    u.repair.filledFaces);
+  EXPECT(u.NumberOfFaces() == static_cast<int>(m.triangles.size()) &&
+      u.repair.droppedFaces == 0 && u.repair.flippedFaces == 0 && u.repair.filledFaces == 0,
+    name << ": " << u.NumberOfFaces() << " faces of " << m.triangles.size() << ", dropped "
+         << u.repair.droppedFaces << " flipped " << u.repair.flippedFaces << " filled "
+         << u.repair.filledFaces);
+  std::multiset<int> faces(u.faceOriginalIds.begin(), u.faceOriginalIds.end());
+  for (int f = 0; f < static_cast<int>(m.triangles.size()); ++f)
+    EXPECT(faces.count(f) == 1, name << ": input face " << f << " not kept once");
+  EXPECT(out.nonManifold == in.nonManifold && out.open == in.open &&
+      out.misoriented == in.misoriented && u.nonManifoldEdges == out.nonManifold,
+    name << ": edges changed: non-manifold " << out.nonManifold << " (input " << in.nonManifold
+         << "), open " << out.open << " (" << in.open << "), misoriented " << out.misoriented
+         << " (" << in.misoriented << ")");
+}
+
+void TestInputNonManifold(const TriangleMesh& sphere)
+{
+  // A fan of 10 triangles on the edge 0-1 (every other edge is the input's border).
+  TriangleMesh fan;
+  fan.points = { Vec3(0, 0, 0), Vec3(0, 0, 1) };
+  for (int j = 0; j < 10; ++j)
+  {
+    const double a = 2.0 * std::acos(-1.0) * j / 10.0;
+    fan.points.push_back(Vec3(std::cos(a), std::sin(a), 0.5));
+    fan.triangles.push_back({ 0, 1, 2 + j });
+  }
+  ExpectAllFacesKept("fan of 10", fan, false);
+
+  // Without the list (a tree file written before it existed): the old repair, two kept.
+  {
+    FoldingTree old = LeafTree(fan, 0.04);
+    old.nodes[0].mesh.inputBoundary.assign(fan.points.size(), 1);
+    const UnfoldedMesh u = coretest::Unfold(old);
+    EXPECT(u.NumberOfFaces() == 2 && u.repair.droppedFaces == 8,
+      "fan without the list: " << u.NumberOfFaces() << " faces kept");
+  }
+
+  // More faces than the input edge had: the extra one (on a point next to face 3's third
+  // point, a copy laid on top) goes, face 3 stays.
+  {
+    TriangleMesh more = fan;
+    more.points.push_back(fan.points[5] + Vec3(0.0, 0.0, 0.01));
+    more.triangles.push_back({ 0, 1, 12 });
+    FoldingTree tree = LeafTree(more, 0.04);
+    tree.nodes[0].mesh.inputBoundary.assign(more.points.size(), 1);
+    tree.inputNonManifoldEdges = NonManifoldEdges(fan); // 10 faces
+    const UnfoldedMesh u = coretest::Unfold(tree);
+    std::multiset<int> faces(u.faceOriginalIds.begin(), u.faceOriginalIds.end());
+    EXPECT(u.NumberOfFaces() == 10 && u.repair.droppedFaces == 1 && faces.count(3) == 1 &&
+        faces.count(10) == 0,
+      "fan with a face on top: " << u.NumberOfFaces() << " faces, dropped "
+                                 << u.repair.droppedFaces << ", face 10 kept "
+                                 << faces.count(10));
+  }
+
+  // A face of the sphere duplicated (its edges used by 3 faces).
+  TriangleMesh duplicated = sphere;
+  duplicated.triangles.push_back(sphere.triangles[7]);
+  ExpectAllFacesKept("duplicated face", duplicated, true);
+
+  // A two-sided sphere: every face also reversed (every edge used by 4 faces).
+  TriangleMesh twoSided = sphere;
+  for (const Triangle& t : sphere.triangles)
+    twoSided.triangles.push_back({ t[0], t[2], t[1] });
+  ExpectAllFacesKept("two-sided sphere", twoSided, true);
 }
 }
 
@@ -245,5 +363,6 @@ int main()
     "the sphere is not closed and oriented");
   TestHoles(sphere);
   TestOrientationAndNonManifold(sphere);
+  TestInputNonManifold(sphere);
   return coretest::Finish("TestUnfolderRepair");
 }
