@@ -4,6 +4,9 @@
 #include <vtkDataArray.h>
 #include <vtkDataSetAttributes.h>
 #include <vtkFieldData.h>
+#include <vtkPointData.h>
+#include <vtkCellData.h>
+#include <vtkPolyData.h>
 #include <vtkSmartPointer.h>
 #include <vtkStringArray.h>
 
@@ -17,6 +20,28 @@ namespace
 bool Contains(const std::vector<std::string>& names, const std::string& name)
 {
   return std::find(names.begin(), names.end(), name) != names.end();
+}
+
+/// Whether the tuples of `a` are pairwise different.
+bool AllDistinct(vtkAbstractArray* a)
+{
+  const vtkIdType n = a->GetNumberOfTuples();
+  const int nc = a->GetNumberOfComponents();
+  std::vector<std::string> keys(n);
+  vtkDataArray* data = vtkDataArray::SafeDownCast(a);
+  if (data && nc == 1)
+  {
+    std::vector<double> values(n);
+    for (vtkIdType i = 0; i < n; ++i)
+      values[i] = data->GetTuple1(i);
+    std::sort(values.begin(), values.end());
+    return std::adjacent_find(values.begin(), values.end()) == values.end();
+  }
+  for (vtkIdType i = 0; i < n; ++i)
+    for (int c = 0; c < nc; ++c)
+      keys[i] += a->GetVariantValue(i * nc + c).ToString() + '\x1f';
+  std::sort(keys.begin(), keys.end());
+  return std::adjacent_find(keys.begin(), keys.end()) == keys.end();
 }
 
 /// A copy of `array` named `name` sharing its values where the class allows.
@@ -217,5 +242,70 @@ std::vector<std::string> ActiveAttributeNames(vtkDataSetAttributes* dsa)
       if (active->GetName())
         names[attribute] = active->GetName();
   return names;
+}
+//------------------------------------------------------------------------------
+vtkSmartPointer<vtkStringArray> AttributeRecord(vtkDataSetAttributes* dsa, const char* name)
+{
+  auto record = vtkSmartPointer<vtkStringArray>::New();
+  record->SetName(name);
+  // "k:name" per attribute k ("k:" for none: XML files may lose empty strings).
+  const std::vector<std::string> active = ActiveAttributeNames(dsa);
+  for (size_t k = 0; k < active.size(); ++k)
+    record->InsertNextValue(std::to_string(k) + ":" + active[k]);
+  return record;
+}
+
+void ApplyActiveAttributes(vtkDataSetAttributes* out, const std::vector<std::string>& names)
+{
+  for (size_t attribute = 0; attribute < names.size() &&
+       attribute < static_cast<size_t>(vtkDataSetAttributes::NUM_ATTRIBUTES);
+       ++attribute)
+  {
+    vtkAbstractArray* array =
+      names[attribute].empty() ? nullptr : out->GetAbstractArray(names[attribute].c_str());
+    if (!array)
+      continue;
+    if ((attribute == vtkDataSetAttributes::GLOBALIDS ||
+          attribute == vtkDataSetAttributes::PEDIGREEIDS) &&
+      !AllDistinct(array))
+      continue;
+    out->SetActiveAttribute(names[attribute].c_str(), static_cast<int>(attribute));
+  }
+}
+
+std::vector<std::string> RecordedAttributes(vtkFieldData* info,
+  const char* name,
+  const std::vector<vtkPolyData*>& leaves,
+  bool points)
+{
+  if (vtkStringArray* recorded = vtkStringArray::SafeDownCast(info->GetAbstractArray(name)))
+  {
+    // Entries "k:name" (AttributeRecord).
+    std::vector<std::string> names(vtkDataSetAttributes::NUM_ATTRIBUTES);
+    for (vtkIdType k = 0; k < recorded->GetNumberOfValues(); ++k)
+    {
+      const std::string entry = recorded->GetValue(k);
+      const size_t colon = entry.find(':');
+      if (colon == std::string::npos || colon == 0 || colon > 3 ||
+        entry.find_first_not_of("0123456789") != colon)
+        continue;
+      const int attribute = std::stoi(entry.substr(0, colon));
+      if (attribute < vtkDataSetAttributes::NUM_ATTRIBUTES)
+        names[attribute] = entry.substr(colon + 1);
+    }
+    return names;
+  }
+  for (vtkPolyData* leaf : leaves)
+    if (leaf)
+    {
+      std::vector<std::string> names = ActiveAttributeNames(points
+          ? static_cast<vtkDataSetAttributes*>(leaf->GetPointData())
+          : static_cast<vtkDataSetAttributes*>(leaf->GetCellData()));
+      for (std::string& n : names)
+        if (Contains(points ? LeafPointArrayNames() : LeafCellArrayNames(), n))
+          n.clear();
+      return names;
+    }
+  return {};
 }
 }

@@ -1,9 +1,11 @@
 // How the filters carry the user's point, cell and field arrays next to their own (internal
 // header): the names they reserve, the renaming of user arrays that clash with them, names for
-// unnamed arrays, the arrays VTK's XML files cannot hold, and copying tuples by id.
+// unnamed arrays, the arrays VTK's XML files cannot hold, copying tuples by id, and the record
+// of the input's active attributes.
 #ifndef vtkFoldingArrays_h
 #define vtkFoldingArrays_h
 
+#include <vtkSmartPointer.h>
 #include <vtkType.h>
 
 #include <string>
@@ -12,6 +14,8 @@
 class vtkAbstractArray;
 class vtkDataSetAttributes;
 class vtkFieldData;
+class vtkPolyData;
+class vtkStringArray;
 
 namespace foldingmeshes
 {
@@ -66,6 +70,22 @@ void CopyTuplesById(vtkDataSetAttributes* src,
 
 /// The attribute names of `dsa` (vtkDataSetAttributes::NUM_ATTRIBUTES entries, "" for none).
 std::vector<std::string> ActiveAttributeNames(vtkDataSetAttributes* dsa);
+
+/// The active attribute names of `dsa` as the string array `name` the builder stores on the
+/// tree's "Tree" block: "k:name" per attribute k ("k:" for none).
+vtkSmartPointer<vtkStringArray> AttributeRecord(vtkDataSetAttributes* dsa, const char* name);
+
+/// The names AttributeRecord stored as `name` in `info`; without such a record (older trees)
+/// those of the first leaf, less the builder's own leaf arrays.
+std::vector<std::string> RecordedAttributes(vtkFieldData* info,
+  const char* name,
+  const std::vector<vtkPolyData*>& leaves,
+  bool points);
+
+/// Makes the arrays `names[attribute]` of `out` its active attributes where they exist, except
+/// global or pedigree ids whose values repeat (mirrored copies repeat their leaf's ids: the
+/// array stays, unflagged).
+void ApplyActiveAttributes(vtkDataSetAttributes* out, const std::vector<std::string>& names);
 }
 
 #endif

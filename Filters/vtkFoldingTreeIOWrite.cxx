@@ -161,18 +161,8 @@ void AddInputRecord(vtkPolyData* carried, vtkFieldData* fd)
       (std::string(InputFieldPrefix) + (array->GetName() ? array->GetName() : "")).c_str());
     fd->AddArray(copy);
   }
-  for (int points = 0; points < 2; ++points)
-  {
-    vtkNew<vtkStringArray> names;
-    names->SetName(points ? "InputPointAttributes" : "InputCellAttributes");
-    // "k:name" per attribute k ("k:" for none: XML files may lose empty strings).
-    const std::vector<std::string> active =
-      ActiveAttributeNames(points ? static_cast<vtkDataSetAttributes*>(carried->GetPointData())
-                                  : static_cast<vtkDataSetAttributes*>(carried->GetCellData()));
-    for (size_t k = 0; k < active.size(); ++k)
-      names->InsertNextValue(std::to_string(k) + ":" + active[k]);
-    fd->AddArray(names);
-  }
+  fd->AddArray(AttributeRecord(carried->GetPointData(), "InputPointAttributes"));
+  fd->AddArray(AttributeRecord(carried->GetCellData(), "InputCellAttributes"));
   if (carried->GetPoints())
     AddInt(fd, "InputPointsDataType", carried->GetPoints()->GetDataType());
 }

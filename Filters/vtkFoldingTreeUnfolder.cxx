@@ -173,88 +173,6 @@ void CarryArrays(const std::vector<std::pair<std::string, std::string>>& names,
   }
 }
 
-/// Whether the tuples of `a` are pairwise different.
-bool AllDistinct(vtkAbstractArray* a)
-{
-  const vtkIdType n = a->GetNumberOfTuples();
-  const int nc = a->GetNumberOfComponents();
-  std::vector<std::string> keys(n);
-  vtkDataArray* data = vtkDataArray::SafeDownCast(a);
-  if (data && nc == 1)
-  {
-    std::vector<double> values(n);
-    for (vtkIdType i = 0; i < n; ++i)
-      values[i] = data->GetTuple1(i);
-    std::sort(values.begin(), values.end());
-    return std::adjacent_find(values.begin(), values.end()) == values.end();
-  }
-  for (vtkIdType i = 0; i < n; ++i)
-    for (int c = 0; c < nc; ++c)
-      keys[i] += a->GetVariantValue(i * nc + c).ToString() + '\x1f';
-  std::sort(keys.begin(), keys.end());
-  return std::adjacent_find(keys.begin(), keys.end()) == keys.end();
-}
-
-/**
- * Makes the arrays `names[attribute]` of `out` its active attributes where they exist, except
- * global or pedigree ids whose values repeat (mirrored copies repeat their leaf's ids: the
- * array stays, unflagged).
- */
-void ApplyActiveAttributes(vtkDataSetAttributes* out, const std::vector<std::string>& names)
-{
-  for (size_t attribute = 0; attribute < names.size() &&
-       attribute < static_cast<size_t>(vtkDataSetAttributes::NUM_ATTRIBUTES);
-       ++attribute)
-  {
-    vtkAbstractArray* array =
-      names[attribute].empty() ? nullptr : out->GetAbstractArray(names[attribute].c_str());
-    if (!array)
-      continue;
-    if ((attribute == vtkDataSetAttributes::GLOBALIDS ||
-          attribute == vtkDataSetAttributes::PEDIGREEIDS) &&
-      !AllDistinct(array))
-      continue;
-    out->SetActiveAttribute(names[attribute].c_str(), static_cast<int>(attribute));
-  }
-}
-
-/// The active attribute names the builder recorded on the "Tree" block (`name`), else those
-/// of the first leaf.
-std::vector<std::string> RecordedAttributes(vtkFieldData* info,
-  const char* name,
-  const std::vector<vtkPolyData*>& leaves,
-  bool points)
-{
-  if (vtkStringArray* recorded = vtkStringArray::SafeDownCast(info->GetAbstractArray(name)))
-  {
-    // Entries "k:name" (vtkFoldingTreeIOWrite.cxx).
-    std::vector<std::string> names(vtkDataSetAttributes::NUM_ATTRIBUTES);
-    for (vtkIdType k = 0; k < recorded->GetNumberOfValues(); ++k)
-    {
-      const std::string entry = recorded->GetValue(k);
-      const size_t colon = entry.find(':');
-      if (colon == std::string::npos || colon == 0 || colon > 3 ||
-        entry.find_first_not_of("0123456789") != colon)
-        continue;
-      const int attribute = std::stoi(entry.substr(0, colon));
-      if (attribute < vtkDataSetAttributes::NUM_ATTRIBUTES)
-        names[attribute] = entry.substr(colon + 1);
-    }
-    return names;
-  }
-  for (vtkPolyData* leaf : leaves)
-    if (leaf)
-    {
-      std::vector<std::string> names = foldingmeshes::ActiveAttributeNames(points
-          ? static_cast<vtkDataSetAttributes*>(leaf->GetPointData())
-          : static_cast<vtkDataSetAttributes*>(leaf->GetCellData()));
-      for (std::string& n : names)
-        if (IsTreeArray(n.c_str(), points))
-          n.clear();
-      return names;
-    }
-  return {};
-}
 }
 
 //------------------------------------------------------------------------------
@@ -571,10 +489,10 @@ int vtkFoldingTreeUnfolder::RequestWholeData(vtkInformation*,
     output->GetPointData());
   CarryArrays(
     carried[0], leaves, false, faceLeaf, faceLocal, faceCopy, mesh.copies, output->GetCellData());
-  ApplyActiveAttributes(
-    output->GetPointData(), RecordedAttributes(info, "InputPointAttributes", leaves, true));
-  ApplyActiveAttributes(
-    output->GetCellData(), RecordedAttributes(info, "InputCellAttributes", leaves, false));
+  foldingmeshes::ApplyActiveAttributes(output->GetPointData(),
+    foldingmeshes::RecordedAttributes(info, "InputPointAttributes", leaves, true));
+  foldingmeshes::ApplyActiveAttributes(output->GetCellData(),
+    foldingmeshes::RecordedAttributes(info, "InputCellAttributes", leaves, false));
 
   vtkNew<vtkIdTypeArray> pointIds, cellIds;
   pointIds->SetName("OriginalPointId");

@@ -58,12 +58,19 @@ bool FindBlock(vtkMultiBlockDataSet* mb,
   return false;
 }
 
-void ExpectUnfoldFailure(vtkMultiBlockDataSet* tree,
+/// The unfolder with `configure` applied and `original` on port 1 must fail with `mustContain`.
+void ExpectUnfolderFails(vtkMultiBlockDataSet* good,
+  vtkPolyData* original,
+  const std::function<void(vtkFoldingTreeUnfolder*)>& configure,
   const std::string& label,
   const std::string& mustContain)
 {
   vtkNew<vtkFoldingTreeUnfolder> unfolder;
-  unfolder->SetInputData(tree);
+  unfolder->SetInputData(good);
+  if (original)
+    unfolder->SetOriginalData(original);
+  if (configure)
+    configure(unfolder);
   EventLog log;
   const int status = UpdateCapturing(unfolder, log);
   EXPECT(status == 0, label << ": Update() returned " << status);
@@ -73,6 +80,14 @@ void ExpectUnfoldFailure(vtkMultiBlockDataSet* tree,
   std::printf(
     "%s -> %s", label.c_str(), log.errors.empty() ? "(no error)\n" : log.errors[0].c_str());
 }
+
+void ExpectUnfoldFailure(vtkMultiBlockDataSet* tree,
+  const std::string& label,
+  const std::string& mustContain)
+{
+  ExpectUnfolderFails(tree, nullptr, nullptr, label, mustContain);
+}
+
 enum class Must
 {
   Exist,  ///< a missing block is a failure of its own
@@ -150,28 +165,6 @@ void ExpectTreeFails(vtkMultiBlockDataSet* good,
   ExpectUnfoldFailure(tree, label, mustContain);
 }
 
-/// The unfolder with `configure` applied and `original` on port 1 must fail with `mustContain`.
-void ExpectUnfolderFails(vtkMultiBlockDataSet* good,
-  vtkPolyData* original,
-  const std::function<void(vtkFoldingTreeUnfolder*)>& configure,
-  const std::string& label,
-  const std::string& mustContain)
-{
-  vtkNew<vtkFoldingTreeUnfolder> unfolder;
-  unfolder->SetInputData(good);
-  if (original)
-    unfolder->SetOriginalData(original);
-  if (configure)
-    configure(unfolder);
-  EventLog log;
-  const int status = UpdateCapturing(unfolder, log);
-  EXPECT(status == 0, label << ": Update() returned " << status);
-  EXPECT(!log.errors.empty() && log.errors[0].find(mustContain) != std::string::npos,
-    label << ": error does not mention \"" << mustContain
-          << "\": " << (log.errors.empty() ? "(none)" : log.errors[0]));
-  std::printf(
-    "%s -> %s", label.c_str(), log.errors.empty() ? "(no error)\n" : log.errors[0].c_str());
-}
 
 vtkSmartPointer<vtkPolyData> Tetrahedron(vtkIdType lastId, double lastX = 0.0, double scale = 1.0)
 {
