@@ -146,7 +146,9 @@ private:
    * the plane flag (a, M + f). Only boundary vertices can lie on a fold line; M ranges over
    * all subsets (at most 2^(maximumFolds - 1)). Copies without this fold were flagged by
    * earlier folds. Plane flags of removed vertices are not transferred: this computes the
-   * flags from the geometry the unfolder will produce.
+   * flags from the geometry the unfolder will produce. Flags of earlier folds whose copy this
+   * fold's projection moved more than a's epsilon off a's plane are dropped (the unfolder
+   * would drag the copy onto it).
    */
   void FlagMirroredFoldLines(WorkMesh& w,
     const std::vector<char>& keep,

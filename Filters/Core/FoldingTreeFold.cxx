@@ -146,6 +146,29 @@ void Builder::FlagMirroredFoldLines(WorkMesh& w,
       ancestors.push_back(d);
   if (ancestors.empty())
     return;
+  // Plane flags of earlier folds hold for where the vertex was then; projected onto this
+  // fold's plane (or slid) it may have left the spot: a corner of a face that touched a fold
+  // line's copy no longer does (a folded square's corner moved half a side). The unfolder
+  // moves a flagged copy onto the plane within the error budget; a flag whose copy is now
+  // farther than that fold's epsilon from its plane is stale.
+  for (int v = 0; v < w.NumberOfPoints(); ++v)
+  {
+    auto& flags = w.mirrorFlags[v];
+    flags.erase(std::remove_if(flags.begin(), flags.end(),
+                  [&](const std::pair<int, uint64_t>& e)
+                  {
+                    if (e.first % 2 == 0)
+                      return false; // tear flags: kept
+                    const int a = e.first / 2;
+                    Vec3 y = w.points[v];
+                    for (int d = depth - 1; d > a; --d)
+                      if (e.second & (uint64_t(1) << d))
+                        y = this->PlaneAtDepth[d].Reflect(y);
+                    return std::abs(this->PlaneAtDepth[a].SignedDistance(y)) >
+                      this->EpsilonAtDepth[a];
+                  }),
+      flags.end());
+  }
   std::vector<Triangle> kept;
   for (int f = 0; f < w.NumberOfFaces(); ++f)
     if (keep[f])
@@ -325,7 +348,22 @@ void Builder::Fold(int index,
       if ((w.onPlane[v] & (uint64_t(1) << d)) && (pathFolds & (uint64_t(1) << d)))
         constraints.push_back(this->PlaneAtDepth[d]);
     const double tolerance = 1e-9 * this->Tree.diagonal;
-    if (!ProjectOntoPlanes(w.points[v], constraints, tolerance))
+    // The intersection of the planes keeps the ancestors' fold lines closed, but only where
+    // it is close to the orthogonal projection: a vertex that merely touches an ancestor's
+    // plane at a corner of its faces (the plane does not run along them) would be dragged
+    // along the new plane, up to the whole face away (a face of a folded square collapsed
+    // onto a point and was lost). Farther than epsilon, it is projected orthogonally and
+    // leaves the ancestors' planes.
+    const Vec3 orthogonal = plane.Project(w.points[v]);
+    Vec3 target = w.points[v];
+    bool onAll = ProjectOntoPlanes(target, constraints, tolerance);
+    if (onAll && constraints.size() > 1 && (target - orthogonal).norm() > eps)
+    {
+      target = orthogonal;
+      onAll = false;
+    }
+    w.points[v] = target;
+    if (!onAll)
       for (int d = 0; d < depth; ++d)
         if ((w.onPlane[v] & (uint64_t(1) << d)) &&
           std::abs(this->PlaneAtDepth[d].SignedDistance(w.points[v])) > tolerance)
