@@ -227,8 +227,9 @@ int Builder::Build(WorkMesh w, int parent, int depth, double eps, int folds, uin
   }
 
   Plane plane;
-  std::vector<char> S =
-    this->ChooseSymmetricRegion(w, pm, *regionFaces, result, eps, pathFolds, plane);
+  int provenSide = 0;
+  std::vector<char> S = this->ChooseSymmetricRegion(
+    w, pm, *regionFaces, result, eps, pathFolds, plane, provenSide);
   regionFaces.reset();
   // Input-degenerate faces (never in S: detection ignores them) follow S when all their
   // vertices are vertices of S.
@@ -267,7 +268,7 @@ int Builder::Build(WorkMesh w, int parent, int depth, double eps, int folds, uin
   const int n = LabelConnectedRegions(pm, rest, labels);
   if (n == 0)
   {
-    this->Fold(index, std::move(w), plane, depth, eps, folds, pathFolds);
+    this->Fold(index, std::move(w), plane, depth, eps, folds, pathFolds, provenSide);
     return index;
   }
 
@@ -305,7 +306,7 @@ int Builder::Build(WorkMesh w, int parent, int depth, double eps, int folds, uin
   {
     const int foldIndex = this->NewNode(index, depth + 1, eps, folds, ws);
     this->Tree.nodes[foldIndex].symmetricAreaFraction = 1.0;
-    this->Fold(foldIndex, std::move(ws), plane, depth + 1, eps, folds, pathFolds);
+    this->Fold(foldIndex, std::move(ws), plane, depth + 1, eps, folds, pathFolds, provenSide);
   }
   for (int r = 0; r < n; ++r)
     this->Build(std::move(regions[r]), index, depth + 1, eps, folds, pathFolds);

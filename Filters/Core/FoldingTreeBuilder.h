@@ -167,7 +167,8 @@ struct FoldingTreeOptions
  *    per Ri in order of their lowest face id; vertices used by faces of two different
  *    children get this node's tear bit.
  * 4. fold(S): faces are counted on each side of p by centroid and the side chosen by
- *    keepSide is kept (ties: the side the canonical normal points to); the stored plane's
+ *    keepSide is kept (ties: the side the canonical normal points to; counted by the last
+ *    trim, whose face proof covered that side, when errorBudget is on); the stored plane's
  *    normal points into the kept side. Vertices within the snap distance of p are "on" p.
  *    A face is kept if a vertex is strictly on the kept side, or if all its vertices are on
  *    p (a face lying in the plane; the unfolder does not duplicate it); all other faces are

@@ -84,13 +84,17 @@ private:
    * pm's faces; MirroredFacesWithin), not only at its corners. The plane is fixed and S only
    * shrinks: the iterations after the first update their predecessor's distances, partners
    * and face tests (ShrinkingSubsetDistances, ShrinkingMirrorBudget, MirroredFaceCache).
+   * provenSide: the side of `plane` (+1 along its normal, -1 against it) whose faces the
+   * face proof covered - the side the fold will keep, judged on S as it was then (a later
+   * change of S could tip a near tie; the fold keeps this side) - or 0 without errorBudget.
    */
   std::vector<char> Trim(const WorkMesh& w,
     const PreparedMesh& pm,
     const FaceTree& region,
     std::vector<char> S,
     const Plane& plane,
-    double eps) const;
+    double eps,
+    int& provenSide) const;
 
   /// Detection's plane and its runners-up tried by ChooseSymmetricRegion.
   static constexpr size_t RegionCandidatePlanes = 3;
@@ -110,7 +114,8 @@ private:
     const SymmetryResult& result,
     double eps,
     uint64_t pathFolds,
-    Plane& plane) const;
+    Plane& plane,
+    int& provenSide) const;
 
   /// S as trimmed and polished for `plane` (see ChooseSymmetricRegion).
   std::vector<char> TrimAndPolish(const WorkMesh& w,
@@ -118,7 +123,8 @@ private:
     const FaceTree& region,
     std::vector<char> S,
     double eps,
-    Plane& plane) const;
+    Plane& plane,
+    int& provenSide) const;
 
   bool IsAncestorPlane(const Plane& p, uint64_t pathFolds, const Vec3& at, double eps) const;
 
@@ -157,8 +163,17 @@ private:
     uint64_t pathFolds) const;
 
   /// Turns node `index` (region w) into a folding node and builds the kept half below it.
-  void
-  Fold(int index, WorkMesh w, Plane plane, int depth, double eps, int folds, uint64_t pathFolds);
+  /// provenSide: +1 / -1, the side of `plane` whose faces the trim proved (their mirror
+  /// images within the error budget: Trim), which the fold keeps; 0: none proved, the side
+  /// is chosen by Options.keepSide.
+  void Fold(int index,
+    WorkMesh w,
+    Plane plane,
+    int depth,
+    double eps,
+    int folds,
+    uint64_t pathFolds,
+    int provenSide);
 
   const FoldingTreeOptions& Options;
   const std::vector<Vec3>& InputNormals;

@@ -216,11 +216,14 @@ void Builder::Fold(int index,
   int depth,
   double eps,
   int folds,
-  uint64_t pathFolds)
+  uint64_t pathFolds,
+  int provenSide)
 {
   const FoldingTreeOptions& O = this->Options;
   const int nf = w.NumberOfFaces();
-  if (!KeepsPositiveSide(w.points, w.triangles, plane, O.keepSide))
+  // The side the trim's face proof covered (a near tie that the final S tips the other way
+  // would keep unproved faces); without a proof, the side keepSide chooses.
+  if (provenSide != 0 ? provenSide < 0 : !KeepsPositiveSide(w.points, w.triangles, plane, O.keepSide))
     plane.normal = -plane.normal;
 
   const double snap = std::max(O.planeSnapFraction * eps, 1e-12 * this->Tree.diagonal);

@@ -86,19 +86,22 @@ std::vector<char> Builder::TrimAndPolish(const WorkMesh& w,
   const FaceTree& region,
   std::vector<char> S,
   double eps,
-  Plane& plane) const
+  Plane& plane,
+  int& provenSide) const
 {
+  provenSide = 0;
   if (std::find(S.begin(), S.end(), 1) == S.end())
     return S;
   // Trimming keeps the faces whose mirrored vertices are within eps of S - or within the
   // error budget left there, if less (errorBudget).
   if (this->Options.trimToMirrorConsistent)
-    S = this->Trim(w, pm, region, S, plane, eps);
+    S = this->Trim(w, pm, region, S, plane, eps, provenSide);
   if (this->Options.polishPlane)
   {
     plane = this->Polish(w, pm, S, plane, eps);
+    provenSide = 0; // the proof was for the plane before polishing
     if (this->Options.trimToMirrorConsistent)
-      S = this->Trim(w, pm, region, S, plane, eps);
+      S = this->Trim(w, pm, region, S, plane, eps, provenSide);
   }
   return S;
 }
@@ -109,14 +112,15 @@ std::vector<char> Builder::ChooseSymmetricRegion(const WorkMesh& w,
   const SymmetryResult& result,
   double eps,
   uint64_t pathFolds,
-  Plane& plane) const
+  Plane& plane,
+  int& provenSide) const
 {
   const int nf = w.NumberOfFaces();
   std::vector<char> best(nf, 0);
   for (int f = 0; f < nf; ++f)
     best[f] = result.faceLabel[f] == 2;
   plane = result.plane;
-  best = this->TrimAndPolish(w, pm, region, std::move(best), eps, plane);
+  best = this->TrimAndPolish(w, pm, region, std::move(best), eps, plane, provenSide);
   double bestArea = RegionArea(pm, best);
   if (!this->Options.trimToMirrorConsistent)
     return best;
@@ -138,13 +142,15 @@ std::vector<char> Builder::ChooseSymmetricRegion(const WorkMesh& w,
       continue;
     if (this->IsAncestorPlane(candidate, pathFolds, RegionCentroid(pm, S), eps))
       continue;
-    S = this->TrimAndPolish(w, pm, region, std::move(S), eps, candidate);
+    int side = 0;
+    S = this->TrimAndPolish(w, pm, region, std::move(S), eps, candidate, side);
     const double area = RegionArea(pm, S);
     if (area > bestArea)
     {
       best = std::move(S);
       bestArea = area;
       plane = candidate;
+      provenSide = side;
     }
   }
   return best;
@@ -163,8 +169,10 @@ std::vector<char> Builder::Trim(const WorkMesh& w,
   const FaceTree& region,
   std::vector<char> S,
   const Plane& plane,
-  double eps) const
+  double eps,
+  int& provenSide) const
 {
+  provenSide = 0;
   // One plane while S only shrinks: the iterations after the first update what changed
   // (distances, budget partners, mirrored faces) instead of starting over - bit for bit the
   // same results (see the classes).
@@ -216,6 +224,7 @@ std::vector<char> Builder::Trim(const WorkMesh& w,
       // Only the faces the fold will keep are copied (those with a vertex on the kept side).
       const double keptSign =
         KeepsPositiveSide(spm.points, spm.triangles, plane, this->Options.keepSide) ? 1.0 : -1.0;
+      provenSide = keptSign > 0 ? 1 : -1;
       std::vector<Triangle> faces;
       std::vector<double> faceLimit;
       std::vector<int> at, keys;

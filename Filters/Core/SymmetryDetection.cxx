@@ -74,6 +74,8 @@ public:
     for (int f = 0; f < nf; ++f)
       run.support[f] = !Mesh.faceDegenerate[f];
     run.weight = Mesh.vertexAreas;
+    // A user's plane (beyond the paper): the first coarse iteration takes sigma at its floor,
+    // 3 epsilon, instead of the median rule, so the support is what is symmetric near it.
     bool seeded = start != nullptr;
     if (seeded)
       run.plane = *start;
