@@ -72,7 +72,9 @@ struct FoldingTreeOptions
    * than symmetry.minimumSymmetricAreaFraction of the region's area or has fewer than
    * minimumFaces faces, or its plane is a fold plane already used on the path from the root
    * (a half re-detecting its own fold plane only finds a strip along the cut). Switched off,
-   * any non-empty S is folded.
+   * any non-empty S is folded. Either way a fold that would remove no face (every face of S
+   * straddles the plane, e.g. a single triangle) is not made: S stays a leaf (NoSymmetry) -
+   * it would store as much as before, and repeated without stop criteria never end.
    */
   bool requireMeaningfulSymmetry = true;
   /**

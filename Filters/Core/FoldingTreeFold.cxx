@@ -244,6 +244,15 @@ void Builder::Fold(int index,
     if (!keep[f])
       discarded.push_back(w.faceOrig[f]);
   }
+  // A fold that removes no face (every face of S straddles the plane, e.g. S is a single
+  // triangle) stores as many faces as before and doubles them on unfolding; repeated, it
+  // never ends when no stop criterion is on. Such a region stays a leaf (whatever the
+  // options: a hard bound like the depth bound).
+  if (discarded.empty())
+  {
+    this->MakeLeaf(index, w, LeafReason::NoSymmetry);
+    return;
+  }
   std::vector<char> used(w.points.size(), 0);
   for (int f = 0; f < nf; ++f)
     if (keep[f])

@@ -31,8 +31,9 @@
 //   sphere): the tree lists their non-manifold edges ("InputNonManifoldEdges" on the "Tree"
 //   block) and every input face comes back (face count, no face dropped, the input's
 //   non-manifold edges, Hausdorff within the root epsilon).
-// - folds down to single faces (UseMinimumFaces off): a square and a single triangle keep
-//   their area and stay within the root epsilon.
+// - folds down to single faces (UseMinimumFaces off, and no stop criterion at all): a
+//   square and a single triangle keep their area, stay within the root epsilon, and the
+//   build ends (a fold removing no face is not made).
 //
 //   TestUnfoldingAccuracy [MESH...]
 #include "MeshIO.h"
@@ -622,11 +623,19 @@ void FoldsDownToSingleFaces()
                   { { 0, 1, 2 }, { 1, 3, 2 } }) },
     { "single triangle", Triangles({ { 0, 0, 0 }, { 1, 0, 0 }, { 0, 1, 0 } }, { { 0, 1, 2 } }) },
   };
+  for (const bool noStop : { false, true })
   for (const auto& [name, mesh] : meshes)
   {
     vtkNew<vtkFoldingTreeBuilder> builder;
     builder->SetInputData(mesh);
     builder->UseMinimumFacesOff();
+    if (noStop)
+    {
+      // No stop criterion at all: a fold that removes no face (a single triangle's) is
+      // not made, so this ends (it doubled the faces per fold down to the depth bound).
+      builder->UseMinimumAreaFractionOff();
+      builder->UseMaximumFoldsOff();
+    }
     vtkNew<vtkFoldingTreeUnfolder> unfolder;
     unfolder->SetInputConnection(builder->GetOutputPort(0));
     unfolder->SetOriginalData(mesh);
@@ -634,8 +643,9 @@ void FoldsDownToSingleFaces()
     vtkPolyData* out = unfolder->GetOutput();
     const double area = TotalArea(out), inputArea = TotalArea(mesh);
     const double epsilon = Field(out, "RootEpsilon"), h = Field(out, "HausdorffToOriginal");
-    std::printf("%-24s (face stop off) faces %lld, area %.6f of %.6f, H/eps %.2e\n",
+    std::printf("%-24s (%s) faces %lld, area %.6f of %.6f, H/eps %.2e\n",
       name.c_str(),
+      noStop ? "no stop criteria" : "face stop off",
       static_cast<long long>(out->GetNumberOfCells()),
       area,
       inputArea,
@@ -643,6 +653,9 @@ void FoldsDownToSingleFaces()
     EXPECT(std::abs(area - inputArea) <= 1e-9 * inputArea,
       name << ": area " << area << " unfolded, input " << inputArea);
     EXPECT(h <= epsilon, name << ": Hausdorff " << h << " above the root epsilon " << epsilon);
+    EXPECT(out->GetNumberOfCells() <= 2 * mesh->GetNumberOfCells(),
+      name << ": " << out->GetNumberOfCells() << " faces unfolded from "
+           << mesh->GetNumberOfCells() << " (folds of single triangles)");
   }
 }
 
