@@ -228,8 +228,8 @@ int Builder::Build(WorkMesh w, int parent, int depth, double eps, int folds, uin
 
   Plane plane;
   int provenSide = 0;
-  std::vector<char> S = this->ChooseSymmetricRegion(
-    w, pm, *regionFaces, result, eps, pathFolds, plane, provenSide);
+  std::vector<char> S =
+    this->ChooseSymmetricRegion(w, pm, *regionFaces, result, eps, pathFolds, plane, provenSide);
   regionFaces.reset();
   // Input-degenerate faces (never in S: detection ignores them) follow S when all their
   // vertices are vertices of S.

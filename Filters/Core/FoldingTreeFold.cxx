@@ -154,7 +154,8 @@ void Builder::FlagMirroredFoldLines(WorkMesh& w,
   for (int v = 0; v < w.NumberOfPoints(); ++v)
   {
     auto& flags = w.mirrorFlags[v];
-    flags.erase(std::remove_if(flags.begin(), flags.end(),
+    flags.erase(std::remove_if(flags.begin(),
+                  flags.end(),
                   [&](const std::pair<int, uint64_t>& e)
                   {
                     if (e.first % 2 == 0)
@@ -223,7 +224,8 @@ void Builder::Fold(int index,
   const int nf = w.NumberOfFaces();
   // The side the trim's face proof covered (a near tie that the final S tips the other way
   // would keep unproved faces); without a proof, the side keepSide chooses.
-  if (provenSide != 0 ? provenSide < 0 : !KeepsPositiveSide(w.points, w.triangles, plane, O.keepSide))
+  if (provenSide != 0 ? provenSide < 0
+                      : !KeepsPositiveSide(w.points, w.triangles, plane, O.keepSide))
     plane.normal = -plane.normal;
 
   const double snap = std::max(O.planeSnapFraction * eps, 1e-12 * this->Tree.diagonal);

@@ -1,0 +1,224 @@
+// Meshes and measures of TestUnfoldingAccuracy (see the header).
+#include "UnfoldingAccuracyMeshes.h"
+
+#include <vtkCellArray.h>
+#include <vtkNew.h>
+#include <vtkPoints.h>
+#include <vtkTriangle.h>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <set>
+#include <utility>
+
+namespace foldingmeshes
+{
+namespace testing
+{
+double TotalArea(vtkPolyData* pd)
+{
+  double area = 0.0, p[3][3];
+  vtkIdType n = 0;
+  const vtkIdType* ids = nullptr;
+  vtkCellArray* polys = pd->GetPolys();
+  for (polys->InitTraversal(); polys->GetNextCell(n, ids);)
+    if (n == 3)
+    {
+      for (int k = 0; k < 3; ++k)
+        pd->GetPoint(ids[k], p[k]);
+      area += vtkTriangle::TriangleArea(p[0], p[1], p[2]);
+    }
+  return area;
+}
+
+vtkSmartPointer<vtkPolyData> Cube(int n, double h)
+{
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  vtkNew<vtkCellArray> polys;
+  std::map<std::array<long long, 3>, vtkIdType> ids;
+  auto at = [&](double x, double y, double z)
+  {
+    const std::array<long long, 3> key{
+      std::llround(x * 1e9), std::llround(y * 1e9), std::llround(z * 1e9)
+    };
+    auto it = ids.find(key);
+    if (it != ids.end())
+      return it->second;
+    const vtkIdType id = points->InsertNextPoint(x, y, z);
+    ids[key] = id;
+    return id;
+  };
+  for (int axis = 0; axis < 3; ++axis)
+    for (double side : { -1.0, 1.0 })
+    {
+      const int u = (axis + 1) % 3, v = (axis + 2) % 3;
+      auto point = [&](double a, double b)
+      {
+        double p[3];
+        p[axis] = side * h;
+        p[u] = a;
+        p[v] = b;
+        return at(p[0], p[1], p[2]);
+      };
+      for (int i = 0; i < n; ++i)
+        for (int j = 0; j < n; ++j)
+        {
+          const double a0 = -h + 2 * h * i / n, a1 = -h + 2 * h * (i + 1) / n;
+          const double b0 = -h + 2 * h * j / n, b1 = -h + 2 * h * (j + 1) / n;
+          vtkIdType q[4] = { point(a0, b0), point(a1, b0), point(a1, b1), point(a0, b1) };
+          const vtkIdType c = point(0.5 * (a0 + a1), 0.5 * (b0 + b1));
+          for (int k = 0; k < 4; ++k)
+          {
+            // (u, v, axis) is right-handed: counter-clockwise in (u, v) faces +axis.
+            vtkIdType t[3] = { q[k], q[(k + 1) % 4], c };
+            if (side < 0)
+              std::swap(t[0], t[1]);
+            polys->InsertNextCell(3, t);
+          }
+        }
+    }
+  auto pd = vtkSmartPointer<vtkPolyData>::New();
+  pd->SetPoints(points);
+  pd->SetPolys(polys);
+  return pd;
+}
+
+vtkSmartPointer<vtkPolyData> Scaled(vtkPolyData* in, double s)
+{
+  auto out = vtkSmartPointer<vtkPolyData>::New();
+  out->DeepCopy(in);
+  for (vtkIdType i = 0; i < out->GetNumberOfPoints(); ++i)
+  {
+    double p[3];
+    out->GetPoint(i, p);
+    out->GetPoints()->SetPoint(i, s * p[0], s * p[1], s * p[2]);
+  }
+  return out;
+}
+
+EdgeCounts CountEdges(vtkPolyData* pd)
+{
+  std::map<std::pair<vtkIdType, vtkIdType>, std::array<int, 2>> uses; // (forward, backward)
+  vtkIdType n = 0;
+  const vtkIdType* pts = nullptr;
+  vtkCellArray* polys = pd->GetPolys();
+  for (polys->InitTraversal(); polys->GetNextCell(n, pts);)
+    for (vtkIdType k = 0; k < n; ++k)
+    {
+      const vtkIdType a = pts[k], b = pts[(k + 1) % n];
+      auto& u = uses[{ std::min(a, b), std::max(a, b) }];
+      if (!u[0] && !u[1])
+        u = { 0, 0 };
+      ++u[a < b ? 0 : 1];
+    }
+  EdgeCounts c;
+  for (const auto& e : uses)
+  {
+    const int total = e.second[0] + e.second[1];
+    ++c.edges;
+    c.open += total == 1;
+    c.nonManifold += total > 2;
+    c.misoriented += total == 2 && (e.second[0] == 2 || e.second[1] == 2);
+  }
+  return c;
+}
+
+Border InputBorder(vtkPolyData* pd)
+{
+  std::map<std::array<double, 3>, vtkIdType> unique;
+  std::vector<vtkIdType> id(pd->GetNumberOfPoints());
+  for (vtkIdType p = 0; p < pd->GetNumberOfPoints(); ++p)
+  {
+    std::array<double, 3> x;
+    pd->GetPoint(p, x.data());
+    id[p] = unique.emplace(x, static_cast<vtkIdType>(unique.size())).first->second;
+  }
+  std::map<std::pair<vtkIdType, vtkIdType>, std::pair<int, std::pair<vtkIdType, vtkIdType>>> uses;
+  vtkIdType n = 0;
+  const vtkIdType* pts = nullptr;
+  vtkCellArray* polys = pd->GetPolys();
+  for (polys->InitTraversal(); polys->GetNextCell(n, pts);)
+    for (vtkIdType k = 0; k < n; ++k)
+    {
+      const vtkIdType a = id[pts[k]], b = id[pts[(k + 1) % n]];
+      if (a == b)
+        continue;
+      auto& u = uses[{ std::min(a, b), std::max(a, b) }];
+      ++u.first;
+      u.second = { pts[k], pts[(k + 1) % n] };
+    }
+  std::vector<vtkIdType> parent(unique.size());
+  for (size_t i = 0; i < parent.size(); ++i)
+    parent[i] = static_cast<vtkIdType>(i);
+  auto find = [&](vtkIdType a)
+  {
+    while (parent[a] != a)
+      a = parent[a] = parent[parent[a]];
+    return a;
+  };
+  Border border;
+  std::set<vtkIdType> onBorder;
+  for (const auto& e : uses)
+    if (e.second.first == 1)
+    {
+      double x[3], y[3];
+      pd->GetPoint(e.second.second.first, x);
+      pd->GetPoint(e.second.second.second, y);
+      border.length += std::sqrt(vtkMath::Distance2BetweenPoints(x, y));
+      parent[find(e.first.first)] = find(e.first.second);
+      onBorder.insert(e.first.first);
+      onBorder.insert(e.first.second);
+    }
+  std::set<vtkIdType> roots;
+  for (vtkIdType v : onBorder)
+    roots.insert(find(v));
+  border.loops = static_cast<long long>(roots.size());
+  return border;
+}
+
+long long WeldedPointCount(vtkPolyData* pd)
+{
+  std::set<std::array<double, 3>> unique;
+  vtkIdType n = 0;
+  const vtkIdType* pts = nullptr;
+  vtkCellArray* polys = pd->GetPolys();
+  for (polys->InitTraversal(); polys->GetNextCell(n, pts);)
+    for (vtkIdType k = 0; k < n; ++k)
+    {
+      std::array<double, 3> x;
+      pd->GetPoint(pts[k], x.data());
+      unique.insert(x);
+    }
+  return static_cast<long long>(unique.size());
+}
+
+long long TriangleCount(vtkPolyData* pd)
+{
+  long long count = 0;
+  vtkIdType n = 0;
+  const vtkIdType* pts = nullptr;
+  vtkCellArray* polys = pd->GetPolys();
+  for (polys->InitTraversal(); polys->GetNextCell(n, pts);)
+    count += std::max<vtkIdType>(0, n - 2);
+  return count;
+}
+
+vtkSmartPointer<vtkPolyData> Triangles(const std::vector<std::array<double, 3>>& points,
+  const std::vector<std::array<vtkIdType, 3>>& triangles)
+{
+  vtkNew<vtkPoints> pts;
+  pts->SetDataTypeToDouble();
+  for (const auto& p : points)
+    pts->InsertNextPoint(p.data());
+  vtkNew<vtkCellArray> polys;
+  for (const auto& t : triangles)
+    polys->InsertNextCell(3, t.data());
+  auto pd = vtkSmartPointer<vtkPolyData>::New();
+  pd->SetPoints(pts);
+  pd->SetPolys(polys);
+  return pd;
+}
+}
+}
