@@ -40,12 +40,13 @@ int Unfolder::InputNonManifoldFaces(const Piece& piece, int a, int b) const
  * first, then those whose third vertex lies nearest another face's (a duplicate copy), the
  * later face on a tie. At any other edge the two faces kept are those that traverse it in
  * opposite directions and are the least folded against each other (largest normal
- * agreement), preferring faces that are not gap fills; the others go (the holes they leave
- * are filled afterwards). Returns the number of faces dropped.
+ * agreement), preferring faces that are not gap fills nor slivers; the others go (the holes
+ * they leave are filled afterwards). Returns the number of faces dropped.
  */
 int Unfolder::DropNonManifoldFaces(Piece& piece) const
 {
   int dropped = 0;
+  const double sliverHeight = 0.01 * this->Tree.rootEpsilon;
   for (int round = 0; round < 4; ++round)
   {
     const auto edges = EdgeFaces(piece);
@@ -102,6 +103,18 @@ int Unfolder::DropNonManifoldFaces(Piece& piece) const
         continue;
       }
       any = true;
+      // A sliver (height below a hundredth of the root tolerance: the thin strips a fold
+      // line leaves between a vertex near the plane and its projection) has a meaningless
+      // normal; keeping a real face and dropping a sliver costs nothing the fill cannot
+      // restore within the tolerance.
+      auto sliver = [&](int f)
+      {
+        const Triangle& t = piece.triangles[f];
+        double longest = 0.0;
+        for (int k = 0; k < 3; ++k)
+          longest = std::max(longest, (piece.points[t[k]] - piece.points[t[(k + 1) % 3]]).norm());
+        return longest > 0.0 && 2.0 * Area(piece, t) / longest < sliverHeight ? 1 : 0;
+      };
       int bestF = -1, bestG = -1;
       double bestScore = -std::numeric_limits<double>::infinity();
       for (size_t i = 0; i < faces.size(); ++i)
@@ -113,9 +126,10 @@ int Unfolder::DropNonManifoldFaces(Piece& piece) const
           const bool opposite = Direction(tf, a, b) != Direction(tg, a, b);
           const Vec3 nf = Normal(piece, tf), ng = Normal(piece, tg);
           const double d = nf.norm() * ng.norm();
-          // Consistent pairs first, then real faces, then the flattest pair.
+          // Consistent pairs first, then real faces (no gap fills, no slivers), then the
+          // flattest pair.
           double score = (opposite ? 10.0 : 0.0) -
-            4.0 * (piece.faceFilled[f] + piece.faceFilled[g]) +
+            4.0 * (piece.faceFilled[f] + piece.faceFilled[g]) - 2.0 * (sliver(f) + sliver(g)) +
             (d > 0.0 ? (opposite ? 1.0 : -1.0) * nf.dot(ng) / d : -1.0);
           if (score > bestScore)
           {
@@ -320,10 +334,17 @@ void Unfolder::Repair(Piece& piece, RepairReport& report)
     KeepFaces(piece, drop);
   }
   report.droppedFaces += this->DropNonManifoldFaces(piece);
+  if (debug)
+    PrintEdgeClasses(piece, "after drop");
   report.flippedFaces = this->OrientComponents(piece, report.droppedFaces);
+  if (debug)
+    PrintEdgeClasses(piece, "after orient");
   for (int pass = 0; pass < 3; ++pass)
   {
-    if (this->FillLoops(piece, report, true) == 0)
+    const int filledNow = this->FillLoops(piece, report, true);
+    if (debug)
+      PrintEdgeClasses(piece, "after fill");
+    if (filledNow == 0)
       break;
     // Fills of loops that share a pinch vertex may meet at an edge: clean up.
     report.droppedFaces += this->DropNonManifoldFaces(piece);

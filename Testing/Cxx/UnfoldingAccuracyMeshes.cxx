@@ -205,6 +205,58 @@ long long TriangleCount(vtkPolyData* pd)
   return count;
 }
 
+vtkSmartPointer<vtkPolyData> BumpBox(int n, double bump)
+{
+  std::vector<std::array<double, 3>> points;
+  std::vector<std::array<vtkIdType, 3>> triangles;
+  auto grid = [n](int layer, int i, int j) -> vtkIdType
+  { return layer * (n + 1) * (n + 1) + j * (n + 1) + i; };
+  for (int layer = 0; layer < 2; ++layer) // 0: top, 1: bottom
+    for (int j = 0; j <= n; ++j)
+      for (int i = 0; i <= n; ++i)
+      {
+        const bool centre = layer == 0 && 2 * i == n && 2 * j == n;
+        points.push_back(
+          { double(i) / n, double(j) / n, layer == 0 ? 1.0 + (centre ? bump : 0.0) : 0.0 });
+      }
+  for (int layer = 0; layer < 2; ++layer)
+    for (int j = 0; j < n; ++j)
+      for (int i = 0; i < n; ++i)
+      {
+        const vtkIdType a = grid(layer, i, j), b = grid(layer, i + 1, j),
+                        c = grid(layer, i + 1, j + 1), d = grid(layer, i, j + 1);
+        if (layer == 0)
+          triangles.insert(triangles.end(), { { a, b, c }, { a, c, d } });
+        else
+          triangles.insert(triangles.end(), { { a, c, b }, { a, d, c } });
+      }
+  // The sides: the grid's boundary ring, counter-clockwise seen from above.
+  std::vector<std::array<int, 2>> ring;
+  for (int i = 0; i < n; ++i)
+    ring.push_back({ i, 0 });
+  for (int j = 0; j < n; ++j)
+    ring.push_back({ n, j });
+  for (int i = n; i > 0; --i)
+    ring.push_back({ i, n });
+  for (int j = n; j > 0; --j)
+    ring.push_back({ 0, j });
+  for (size_t k = 0; k < ring.size(); ++k)
+  {
+    const auto& p = ring[k];
+    const auto& q = ring[(k + 1) % ring.size()];
+    const vtkIdType b0 = grid(1, p[0], p[1]), b1 = grid(1, q[0], q[1]);
+    const vtkIdType t0 = grid(0, p[0], p[1]), t1 = grid(0, q[0], q[1]);
+    triangles.insert(triangles.end(), { { b0, b1, t1 }, { b0, t1, t0 } });
+  }
+  vtkSmartPointer<vtkPolyData> box = Triangles(points, triangles);
+  vtkNew<vtkPoints> single; // float coordinates, as VTK's sources and readers make them
+  single->SetDataTypeToFloat();
+  for (const auto& p : points)
+    single->InsertNextPoint(p.data());
+  box->SetPoints(single);
+  return box;
+}
+
 vtkSmartPointer<vtkPolyData> Triangles(const std::vector<std::array<double, 3>>& points,
   const std::vector<std::array<vtkIdType, 3>>& triangles)
 {

@@ -11,8 +11,12 @@ from foldingmeshes import vtkFoldingTreeBuilder, vtkFoldingTreeUnfolder, vtkOFFR
 
 vtkObject.GlobalWarningDisplayOff()
 
+DOUBLE_POINTS = False  # case key "double": true -> double coordinates (default: VTK's float)
+
 def poly(pts, tris):
     p = vtkPoints()
+    if DOUBLE_POINTS:
+        p.SetDataTypeToDouble()
     for x in pts:
         p.InsertNextPoint(*map(float, x))
     ca = vtkCellArray()
@@ -209,6 +213,8 @@ def fd(pd, name):
     return [a.GetValue(i) for i in range(a.GetNumberOfTuples()*a.GetNumberOfComponents())]
 
 def run(case):
+    global DOUBLE_POINTS
+    DOUBLE_POINTS = bool(case.get('double', False))
     mesh = make(case['mesh'])
     mesh = rigid(mesh, case.get('rigid', 0))
     P0, T0 = arrays(mesh)

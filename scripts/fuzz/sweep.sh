@@ -1,0 +1,33 @@
+#!/usr/bin/env bash
+# Reruns a fixed set of 440 fold + unfold cases (fuzz_case.py) and writes one line per case to
+# OUT: the case, then "=> <number of failed checks> <faces out> <area ratio> <open edges>
+# <faces the repair dropped> <failed checks>". From the repository's top folder, with the
+# build in build/ and ../shared beside it. Usage: scripts/fuzz/sweep.sh OUT
+set -u
+out=${1:?usage: sweep.sh OUT}
+: > "$out"
+meshes="square rect triangle isosceles fan6 fan8 polyfan6 grid4 grid6 cube boxlong twocubes
+  twocubes_asym sphere12_10 sphere16_12 cyl8 cyl12 cylraw12 bumpbox Lprism
+  file:../shared/data/meshes/anchor_cgal.off file:../shared/data/meshes/bearing_psb341.off"
+options=('{}' '{"UseMinimumFaces": false}' '{"UseMinimumFaces": false, "UseMaximumFolds": false}'
+  '{"UseMinimumFaces": false, "UseMinimumAreaFraction": false}'
+  '{"UseMinimumFaces": false, "KeepSide": 1}')
+for m in $meshes; do
+  for double in false true; do
+    for b in "${options[@]}"; do
+      for rigid in 0 7; do
+        c="{\"mesh\": \"$m\", \"double\": $double, \"rigid\": $rigid, \"b\": $b}"
+        r=$(PYTHONPATH=build/lib/python3/dist-packages timeout 60 /usr/bin/python3 \
+          scripts/fuzz/fuzz_case.py "$c" 2>/dev/null | grep '^RESULT' | /usr/bin/python3 -c "
+import sys, json
+t = sys.stdin.read()
+if not t:
+    print('CRASH/TIMEOUT'); sys.exit()
+r = json.loads(t[7:])
+print(len(r['fails']), r['outFaces'], round(r['areaRatio'] or 0, 4), r['OpenEdges'],
+      r['RepairDroppedFaces'], '|'.join(f.split(' ')[0] for f in r['fails']))")
+        echo "$c => $r" >> "$out"
+      done
+    done
+  done
+done
