@@ -24,7 +24,8 @@
  *   attributes (recorded on the tree's "Tree" block; older trees: the first leaf's) are active
  *   again, except global and pedigree ids whose values the mirrored copies repeat (those stay
  *   plain arrays) and scalars: the active cell scalars are "FoldingLeafId" and no point
- *   scalars are active, so viewers colour the mesh by leaf (the input's scalar arrays stay). A point merged by stitching takes the values of its lowest copy.
+ *   scalars are active, so viewers colour the mesh by leaf (the input's scalar arrays stay). A
+ *   point merged by stitching takes the values of its lowest copy.
  * - the input's point precision (float or double; trees without the record: double) and its
  *   field arrays (one named like the unfolder's own field data comes back as "<name>_input").
  * - point array "OriginalPointId" (input point id), cell arrays "OriginalCellId",
@@ -199,8 +200,10 @@ public:
   /**
    * Finally weld the open boundaries of different copies once more (default on): a vertex on
    * an open edge may merge with, or be zipped into, one of another copy within
-   * WeldToleranceScale x the root tolerance (default 0.5, range 0..10). No gaps are filled.
-   * Only with Stitch on: Stitch off gives the raw union of the copies.
+   * WeldToleranceScale x the root tolerance (default 0.5, range 0..10); two open vertices of
+   * one copy merge only when closer than a hundredth of the root tolerance (the two sides of
+   * a fold-line sliver). No gaps are filled. Only with Stitch on: Stitch off gives the raw
+   * union of the copies.
    */
   vtkSetMacro(WeldBoundaries, bool);
   vtkGetMacro(WeldBoundaries, bool);

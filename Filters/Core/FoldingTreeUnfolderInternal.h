@@ -271,7 +271,8 @@ private:
     double tol,
     double epsilon,
     bool fill,
-    SeamReport& seam);
+    SeamReport& seam,
+    double sameChildDistance = 0.0);
 
   int InputNonManifoldFaces(const Piece& piece, int a, int b) const;
   bool InputDuplicate(const Piece& piece,

@@ -41,8 +41,9 @@ void Unfolder::Stitch(const FoldingNode& node,
 
 /**
  * The final seam pass (UnfoldOptions::weldBoundaries): every vertex on an open edge is a
- * candidate, copies play the part of children (a copy's own vertices are never merged),
- * tolerance weldToleranceScale * root epsilon; moves are bounded by the error budgets.
+ * candidate, copies play the part of children (a copy's own vertices are merged only when
+ * nearly coincident, see below), tolerance weldToleranceScale * root epsilon; moves are
+ * bounded by the error budgets.
  */
 void Unfolder::WeldBoundaries(Piece& piece, SeamReport& seam)
 {
@@ -51,8 +52,19 @@ void Unfolder::WeldBoundaries(Piece& piece, SeamReport& seam)
     1e-12 * std::max(this->Tree.diagonal, 1e-300));
   // No gap filling here: loops of open edges between copies may be the input's own
   // borders (new faces there would leave the input surface).
+  // Two open vertices of one copy closer than a hundredth of the root epsilon are merged as
+  // well: a fold whose plane passes that close to a row of vertices keeps them beside their
+  // neighbours' projections (a sliver strip), and a seam that reaches the strip can close
+  // onto only one of its sides.
   const std::vector<int> copyOf = piece.pointCopy;
-  this->StitchVertices(piece, open, copyOf, tol, this->Tree.rootEpsilon, false, seam);
+  this->StitchVertices(piece,
+    open,
+    copyOf,
+    tol,
+    this->Tree.rootEpsilon,
+    false,
+    seam,
+    std::min(tol, 0.01 * this->Tree.rootEpsilon));
 }
 
 /// Whether face t of `piece` (`face`: its input face and the sorted input ids of its
@@ -81,9 +93,9 @@ bool Unfolder::InputDuplicate(const Piece& piece,
 
 /**
  * Stitching of the candidate vertices `isTear` (see UnfoldFoldingTree): pairing by
- * union-find within `tol` (never two vertices of one child), merged clusters placed where
- * every member's move stays within its error budget, zipper, gap filling, constrained
- * smoothing. Fills seam's stitch statistics (not the gaps).
+ * union-find within `tol` (two vertices of one child only within `sameChildDistance`), merged
+ * clusters placed where every member's move stays within its error budget, zipper, gap filling,
+ * constrained smoothing. Fills seam's stitch statistics (not the gaps).
  */
 void Unfolder::StitchVertices(Piece& piece,
   const std::vector<char>& candidate,
@@ -91,7 +103,8 @@ void Unfolder::StitchVertices(Piece& piece,
   double tol,
   double epsilon,
   bool fill,
-  SeamReport& seam)
+  SeamReport& seam,
+  double sameChildDistance)
 {
   std::vector<int> tears;
   for (int v = 0; v < piece.NumberOfPoints(); ++v)
@@ -131,7 +144,12 @@ void Unfolder::StitchVertices(Piece& piece,
           for (int w : it->second)
           {
             if (childOf[w] == childOf[v])
+            {
+              // (merged with each other only when nearly coincident)
+              if (w > v && (piece.points[w] - piece.points[v]).norm() <= sameChildDistance)
+                proposals.push_back({ (piece.points[w] - piece.points[v]).norm(), v, w });
               continue;
+            }
             const double d = (piece.points[w] - piece.points[v]).norm();
             if (d <= tol && (best < 0 || d < bestDistance || (d == bestDistance && w < best)))
             {
@@ -175,11 +193,12 @@ void Unfolder::StitchVertices(Piece& piece,
     bool disjoint = true;
     for (int c : cb)
       disjoint = disjoint && !std::binary_search(ca.begin(), ca.end(), c);
-    if (!disjoint)
+    if (!disjoint && pr.distance > sameChildDistance)
       continue;
     const int root = std::min(ra, rb), other = std::max(ra, rb);
     std::vector<int> merged;
     std::merge(ca.begin(), ca.end(), cb.begin(), cb.end(), std::back_inserter(merged));
+    merged.erase(std::unique(merged.begin(), merged.end()), merged.end());
     parent[other] = root;
     childrenOfRoot[root] = std::move(merged);
     childrenOfRoot.erase(other);

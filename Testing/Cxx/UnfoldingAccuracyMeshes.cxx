@@ -205,7 +205,7 @@ long long TriangleCount(vtkPolyData* pd)
   return count;
 }
 
-vtkSmartPointer<vtkPolyData> BumpBox(int n, double bump)
+vtkSmartPointer<vtkPolyData> BumpBox(int n, double bump, bool doublePoints)
 {
   std::vector<std::array<double, 3>> points;
   std::vector<std::array<vtkIdType, 3>> triangles;
@@ -249,7 +249,9 @@ vtkSmartPointer<vtkPolyData> BumpBox(int n, double bump)
     triangles.insert(triangles.end(), { { b0, b1, t1 }, { b0, t1, t0 } });
   }
   vtkSmartPointer<vtkPolyData> box = Triangles(points, triangles);
-  vtkNew<vtkPoints> single; // float coordinates, as VTK's sources and readers make them
+  if (doublePoints)
+    return box;
+  vtkNew<vtkPoints> single;
   single->SetDataTypeToFloat();
   for (const auto& p : points)
     single->InsertNextPoint(p.data());

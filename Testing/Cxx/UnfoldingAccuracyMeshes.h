@@ -23,8 +23,8 @@ vtkSmartPointer<vtkPolyData> Cube(int n, double h);
 /// The closed box [0,1]^3 whose top and bottom are n x n grids of squares (2 triangles
 /// each) and whose sides are one square (2 triangles) per grid edge, with the top's centre
 /// vertex raised by `bump` (n even): mirror planes x = 1/2, y = 1/2 and the diagonals, and
-/// z = 1/2 away from the bump. Float coordinates.
-vtkSmartPointer<vtkPolyData> BumpBox(int n, double bump);
+/// z = 1/2 away from the bump. Double coordinates or float (as VTK's sources make them).
+vtkSmartPointer<vtkPolyData> BumpBox(int n, double bump, bool doublePoints);
 
 /// A copy of `in` with its points scaled by s about the origin.
 vtkSmartPointer<vtkPolyData> Scaled(vtkPolyData* in, double s);
