@@ -201,9 +201,9 @@ public:
    * Finally weld the open boundaries of different copies once more (default on): a vertex on
    * an open edge may merge with, or be zipped into, one of another copy within
    * WeldToleranceScale x the root tolerance (default 0.5, range 0..10); two open vertices of
-   * one copy merge only when closer than a hundredth of the root tolerance (the two sides of
-   * a fold-line sliver). No gaps are filled. Only with Stitch on: Stitch off gives the raw
-   * union of the copies.
+   * one copy merge only within a hundredth of the root tolerance (or the weld tolerance if
+   * smaller): the two sides of a fold-line sliver, or an input crack that narrow. No gaps are
+   * filled. Only with Stitch on: Stitch off gives the raw union of the copies.
    */
   vtkSetMacro(WeldBoundaries, bool);
   vtkGetMacro(WeldBoundaries, bool);

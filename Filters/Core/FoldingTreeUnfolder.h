@@ -119,8 +119,9 @@ struct UnfoldOptions
    * After the traversal, stitch the whole result once more: every vertex on an open edge may
    * merge with (or be zipped into) one of another copy within weldToleranceScale * the root
    * epsilon - closing seams whose vertices carry no tear flag (e.g. copies of seams across
-   * approximate folds), and two of one copy closer than 0.01 * the root epsilon (the sides of
-   * a fold-line sliver). Moves are bounded by the error budgets; no gaps are filled (an open
+   * approximate folds), and two of one copy within min(0.01, weldToleranceScale) * the root
+   * epsilon (the sides of a fold-line sliver, or an input crack that narrow). Moves are
+   * bounded by the error budgets; no gaps are filled (an open
    * loop there may be the input's own border). See UnfoldedMesh::weld.
    */
   bool weldBoundaries = true;

@@ -113,7 +113,7 @@ int Unfolder::DropNonManifoldFaces(Piece& piece) const
         double longest = 0.0;
         for (int k = 0; k < 3; ++k)
           longest = std::max(longest, (piece.points[t[k]] - piece.points[t[(k + 1) % 3]]).norm());
-        return longest > 0.0 && 2.0 * Area(piece, t) / longest < sliverHeight ? 1 : 0;
+        return longest <= 0.0 || 2.0 * Area(piece, t) / longest < sliverHeight ? 1 : 0;
       };
       int bestF = -1, bestG = -1;
       double bestScore = -std::numeric_limits<double>::infinity();
@@ -128,7 +128,7 @@ int Unfolder::DropNonManifoldFaces(Piece& piece) const
           const double d = nf.norm() * ng.norm();
           // Consistent pairs first, then real faces (no gap fills, no slivers), then the
           // flattest pair.
-          double score = (opposite ? 10.0 : 0.0) -
+          double score = (opposite ? 20.0 : 0.0) -
             4.0 * (piece.faceFilled[f] + piece.faceFilled[g]) - 2.0 * (sliver(f) + sliver(g)) +
             (d > 0.0 ? (opposite ? 1.0 : -1.0) * nf.dot(ng) / d : -1.0);
           if (score > bestScore)

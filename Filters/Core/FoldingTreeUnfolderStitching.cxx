@@ -52,10 +52,11 @@ void Unfolder::WeldBoundaries(Piece& piece, SeamReport& seam)
     1e-12 * std::max(this->Tree.diagonal, 1e-300));
   // No gap filling here: loops of open edges between copies may be the input's own
   // borders (new faces there would leave the input surface).
-  // Two open vertices of one copy closer than a hundredth of the root epsilon are merged as
-  // well: a fold whose plane passes that close to a row of vertices keeps them beside their
+  // Two open vertices of one copy within a hundredth of the root epsilon are merged as well:
+  // a fold whose plane passes that close to a row of vertices keeps them beside their
   // neighbours' projections (a sliver strip), and a seam that reaches the strip can close
-  // onto only one of its sides.
+  // onto only one of its sides. (An input crack that narrow closes too. Such pairs chain:
+  // a run of open edges of one copy, each that short, collapses to one point.)
   const std::vector<int> copyOf = piece.pointCopy;
   this->StitchVertices(piece,
     open,
@@ -127,6 +128,7 @@ void Unfolder::StitchVertices(Piece& piece,
   {
     double distance;
     int a, b;
+    bool sameChild; // two vertices of one child (within sameChildDistance)
   };
   std::vector<Proposal> proposals;
   for (int v : tears)
@@ -146,8 +148,9 @@ void Unfolder::StitchVertices(Piece& piece,
             if (childOf[w] == childOf[v])
             {
               // (merged with each other only when nearly coincident)
-              if (w > v && (piece.points[w] - piece.points[v]).norm() <= sameChildDistance)
-                proposals.push_back({ (piece.points[w] - piece.points[v]).norm(), v, w });
+              const double d = (piece.points[w] - piece.points[v]).norm();
+              if (sameChildDistance > 0.0 && w > v && d <= sameChildDistance)
+                proposals.push_back({ d, v, w, true });
               continue;
             }
             const double d = (piece.points[w] - piece.points[v]).norm();
@@ -159,7 +162,7 @@ void Unfolder::StitchVertices(Piece& piece,
           }
         }
     if (best >= 0)
-      proposals.push_back({ bestDistance, std::min(v, best), std::max(v, best) });
+      proposals.push_back({ bestDistance, std::min(v, best), std::max(v, best), false });
   }
   std::sort(proposals.begin(),
     proposals.end(),
@@ -193,7 +196,7 @@ void Unfolder::StitchVertices(Piece& piece,
     bool disjoint = true;
     for (int c : cb)
       disjoint = disjoint && !std::binary_search(ca.begin(), ca.end(), c);
-    if (!disjoint && pr.distance > sameChildDistance)
+    if (!disjoint && !pr.sameChild)
       continue;
     const int root = std::min(ra, rb), other = std::max(ra, rb);
     std::vector<int> merged;

@@ -510,7 +510,7 @@ int main(int argc, char* argv[])
     // The shared real meshes: closed inputs come back closed (measured on all 29). Vertex
     // count (benchmark's count as it is / with the mirrored copies kept dense,
     // --keep-copy-density): anchor +0.0% / +0.8%, dino +1.2% / +3.4%, teapot +0.0% / +1.6%;
-    // bearing -0.9% / +7.9%, hammer_dec4360 +0.2% / +22.6%, wingnut -0.1% / +3.2%;
+    // bearing -0.9% / +7.9%, hammer_dec4360 +0.3% / +22.6%, wingnut -0.1% / +3.2%;
     // triceratops +0.0% / +13.3% (+3.1% without the root's thinning after the final
     // repair); queen +4.3% / +17.9% (+4.1% before the repair kept its non-manifold edges;
     // this test counts a little differently: dino +1.3%, triceratops +0.2%, queen +4.5%).
