@@ -11,7 +11,7 @@
 #include <vtkFieldData.h>
 #include <vtkNew.h>
 #include <vtkRenderWindow.h>
-#include <vtkXMLMultiBlockDataReader.h>
+#include <vtkExpatSafeXMLMultiBlockDataReader.h>
 #include <vtkXMLMultiBlockDataWriter.h>
 
 #include <algorithm>
@@ -198,7 +198,8 @@ bool WriteTree(vtkMultiBlockDataSet* tree, const std::string& path, std::string&
   writer->AddObserver(vtkCommand::ErrorEvent, onError);
   writer->SetFileName(path.c_str());
   writer->SetInputData(tree);
-  writer->SetDataModeToAppended();
+  // Inline binary pieces (see WriteMesh in MeshIO.cxx): readable by every VTK reader.
+  writer->SetDataModeToBinary();
   writer->SetCompressorTypeToZLib();
   if (!writer->Write() || !errors.messages.empty())
   {
@@ -216,7 +217,7 @@ vtkSmartPointer<vtkMultiBlockDataSet> ReadTree(const std::string& path, std::str
     error = "cannot read '" + path + "': no such file";
     return nullptr;
   }
-  vtkNew<vtkXMLMultiBlockDataReader> reader;
+  vtkNew<vtkExpatSafeXMLMultiBlockDataReader> reader;
   if (!reader->CanReadFile(path.c_str()))
   {
     error = "cannot read '" + path +

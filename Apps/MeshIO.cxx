@@ -6,6 +6,7 @@
 #include "vtkDataSet.h"
 #include "vtkErrorCode.h"
 #include "vtkExecutive.h"
+#include "vtkExpatSafeXMLPolyDataReader.h"
 #include "vtkGenericDataObjectReader.h"
 #include "vtkGeometryFilter.h"
 #include "vtkNew.h"
@@ -20,7 +21,6 @@
 #include "vtkSTLReader.h"
 #include "vtkSTLWriter.h"
 #include "vtkUnsignedCharArray.h"
-#include "vtkXMLPolyDataReader.h"
 #include "vtkXMLPolyDataWriter.h"
 
 #include <algorithm>
@@ -168,7 +168,7 @@ vtkSmartPointer<vtkPolyData> ReadMesh(const std::string& path, std::string& erro
   vtkSmartPointer<vtkAlgorithm> reader, last;
   if (ext == ".vtp")
   {
-    reader = MakeReader<vtkXMLPolyDataReader>(path);
+    reader = MakeReader<vtkExpatSafeXMLPolyDataReader>(path);
   }
   else if (ext == ".vtk")
   {
@@ -245,8 +245,9 @@ bool WriteMesh(vtkPolyData* mesh, const std::string& path, std::string& error)
   if (ext == ".vtp")
   {
     vtkNew<vtkXMLPolyDataWriter> writer;
-    writer->SetDataModeToAppended();
-    writer->SetEncodeAppendedData(false);
+    // Inline binary, not appended: VTK <= 9.2 readers cannot read appended files on a
+    // current expat (vtkExpatSafeXMLDataParser); inline files read everywhere.
+    writer->SetDataModeToBinary();
     writer->SetCompressorTypeToZLib();
     return RunWriter(writer.Get(), mesh, path, error);
   }

@@ -2,9 +2,10 @@
  * @file    MeshIO.h
  * @brief   reads and writes surface meshes by file extension (FoldingMeshes apps)
  *
- * Extensions are case-insensitive. Reading: .vtp (XML poly data), .vtk (legacy;
+ * Extensions are case-insensitive. Reading: .vtp (XML poly data, also appended-mode files
+ * on Debian 12's current expat: vtkExpatSafeXMLPolyDataReader), .vtk (legacy;
  * other legacy datasets are reduced to their surface), .ply, .obj, .stl and .off
- * (vtkOFFReader). Writing: .vtp (binary appended, zlib), .vtk (legacy binary),
+ * (vtkOFFReader). Writing: .vtp (inline binary, zlib), .vtk (legacy binary),
  * .ply (binary; a point array "Colors" is written as vertex colours), .stl
  * (binary) and .obj. VTK errors and warnings raised while reading or writing
  * are not printed: they are captured, and explain a failure in `error`.

@@ -24,6 +24,9 @@ def write_polydata(data, path):
     writer = vtkXMLPolyDataWriter()
     writer.SetInputData(data)
     writer.SetFileName(path)
+    # Inline binary data: Debian 12's ParaView 5.11 (VTK 9.2) cannot read the writers'
+    # default appended mode with a current libexpat1 (VTK issue 19258).
+    writer.SetDataModeToBinary()
     if not writer.Write():
         raise OSError("cannot write " + path)
 

@@ -15,7 +15,6 @@ from vtkmodules.vtkIOGeometry import vtkOBJReader, vtkSTLReader
 from vtkmodules.vtkIOImage import vtkPNGWriter
 from vtkmodules.vtkIOLegacy import vtkPolyDataReader
 from vtkmodules.vtkIOPLY import vtkPLYReader
-from vtkmodules.vtkIOXML import vtkXMLPolyDataReader
 from vtkmodules.vtkRenderingCore import (
     vtkActor,
     vtkPolyDataMapper,
@@ -24,14 +23,16 @@ from vtkmodules.vtkRenderingCore import (
     vtkWindowToImageFilter,
 )
 
-from foldingmeshes import vtkOFFReader
+# vtkExpatSafeXMLPolyDataReader: vtkXMLPolyDataReader that also reads appended-mode files
+# with Debian 12's current libexpat1 (VTK issue 19258).
+from foldingmeshes import vtkExpatSafeXMLPolyDataReader, vtkOFFReader
 
 READERS = {
     ".off": vtkOFFReader,
     ".obj": vtkOBJReader,
     ".ply": vtkPLYReader,
     ".stl": vtkSTLReader,
-    ".vtp": vtkXMLPolyDataReader,
+    ".vtp": vtkExpatSafeXMLPolyDataReader,
     ".vtk": vtkPolyDataReader,
 }
 

@@ -16,11 +16,7 @@ import argparse
 import os
 import sys
 
-from vtkmodules.vtkIOXML import (
-    vtkXMLMultiBlockDataReader,
-    vtkXMLMultiBlockDataWriter,
-    vtkXMLPolyDataWriter,
-)
+from vtkmodules.vtkIOXML import vtkXMLMultiBlockDataWriter, vtkXMLPolyDataWriter
 
 from example_scenes import (
     leaf_actors,
@@ -32,7 +28,11 @@ from example_scenes import (
     root_plane_normal,
     tree_parts,
 )
-from foldingmeshes import vtkFoldingTreeBuilder, vtkFoldingTreeUnfolder
+from foldingmeshes import (
+    vtkExpatSafeXMLMultiBlockDataReader,
+    vtkFoldingTreeBuilder,
+    vtkFoldingTreeUnfolder,
+)
 
 
 def field_value(data, name):
@@ -69,18 +69,23 @@ def main():
              field_value(summary, "NumberOfFolds"), field_value(summary, "NumberOfLeaves"),
              field_value(summary, "BuildSeconds")))
 
+    # Inline binary data: Debian 12's ParaView 5.11 (VTK 9.2) cannot read the writers'
+    # default appended mode with a current libexpat1 (VTK issue 19258).
     tree_writer = vtkXMLMultiBlockDataWriter()
     tree_writer.SetInputData(tree)
     tree_writer.SetFileName(stem + "_tree.vtm")
+    tree_writer.SetDataModeToBinary()
     segmentation_writer = vtkXMLPolyDataWriter()
     segmentation_writer.SetInputData(segmentation)
     segmentation_writer.SetFileName(stem + "_segmentation.vtp")
+    segmentation_writer.SetDataModeToBinary()
     if not (tree_writer.Write() and segmentation_writer.Write()):
         print("cannot write in %s" % args.outdir, file=sys.stderr)
         return 3
 
     # Unfold the tree read back from disk: the file holds everything the unfolder needs.
-    tree_reader = vtkXMLMultiBlockDataReader()
+    # The expat-safe reader also reads trees saved in appended mode.
+    tree_reader = vtkExpatSafeXMLMultiBlockDataReader()
     tree_reader.SetFileName(stem + "_tree.vtm")
     unfolder = vtkFoldingTreeUnfolder()
     unfolder.SetInputConnection(tree_reader.GetOutputPort())
@@ -94,6 +99,7 @@ def main():
     unfolded_writer = vtkXMLPolyDataWriter()
     unfolded_writer.SetInputData(unfolded)
     unfolded_writer.SetFileName(stem + "_unfolded.vtp")
+    unfolded_writer.SetDataModeToBinary()
     if not unfolded_writer.Write():
         return 3
 

@@ -1,5 +1,6 @@
 // "Nothing is lost": the user's point, cell and field arrays survive fold + unfold, in memory
-// and through a .vtm file, on an exactly mirror-symmetric mesh (a subdivided icosahedron
+// and through a .vtm file (written in the default appended mode, read with
+// vtkExpatSafeXMLMultiBlockDataReader, which must report no error), on an exactly mirror-symmetric mesh (a subdivided icosahedron
 // scaled to an ellipsoid, float or double points) carrying
 // - field arrays (one named like the unfolder's own "Diagonal"): restored on the unfolded mesh,
 //   the clashing one as "Diagonal_input";
@@ -18,6 +19,7 @@
 //   the unfolder removes projected points or thins copies (they take the data of the old face
 //   they overlap most).
 #include "TestExpect.h"
+#include "vtkExpatSafeXMLMultiBlockDataReader.h"
 #include "vtkFoldingTreeBuilder.h"
 #include "vtkFoldingTreeUnfolder.h"
 #include "vtkSymmetryPlaneDetector.h"
@@ -43,7 +45,6 @@
 #include <vtkStringArray.h>
 #include <vtkVariant.h>
 #include <vtkVariantArray.h>
-#include <vtkXMLMultiBlockDataReader.h>
 #include <vtkXMLMultiBlockDataWriter.h>
 
 #include <algorithm>
@@ -474,8 +475,18 @@ void Run(bool doublePoints, const std::string& tempDir)
   writer->SetInputData(tree);
   writer->SetFileName(file.c_str());
   EXPECT(writer->Write() == 1, label << ": could not write " << file);
-  vtkNew<vtkXMLMultiBlockDataReader> reader;
+  vtkNew<vtkExpatSafeXMLMultiBlockDataReader> reader;
   reader->SetFileName(file.c_str());
+  int readErrors = 0;
+  vtkNew<vtkCallbackCommand> countErrors;
+  countErrors->SetClientData(&readErrors);
+  countErrors->SetCallback(
+    [](vtkObject*, unsigned long, void* count, void*) { ++*static_cast<int*>(count); });
+  reader->AddObserver(vtkCommand::ErrorEvent, countErrors);
+  reader->Update();
+  EXPECT(readErrors == 0, label << ": reading " << file << " raised " << readErrors << " errors");
+  if (readErrors != 0)
+    return;
   vtkNew<vtkFoldingTreeUnfolder> unfolderRead;
   unfolderRead->SetInputConnection(reader->GetOutputPort());
   unfolderRead->Update();

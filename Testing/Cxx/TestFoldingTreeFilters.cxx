@@ -11,8 +11,11 @@
 // - leaves carry the input arrays with the values of their original ids, the tree arrays
 //   (OriginalPointId, TearMask/PlaneMask as vtkTypeUInt64Array, Projected, OriginalCellId);
 // - output 1: FoldingLeafId / FoldingDepth / FoldingRole consistent with the leaves;
-// - .vtm round trip: the tree written with vtkXMLMultiBlockDataWriter and read back unfolds to
-//   exactly the same mesh (points, cells, every array) as the tree in memory;
+// - .vtm round trip: the tree written with vtkXMLMultiBlockDataWriter, in inline binary mode (what
+//   the project writes) and in the writer's default appended mode (what ParaView and users
+//   write; unreadable by VTK 9.2's own reader on a current expat, VTK issue 19258), and read
+//   back with vtkExpatSafeXMLMultiBlockDataReader without an error, unfolds to exactly the same
+//   mesh (points, cells, every array) as the tree in memory;
 // - unfold(fold(M)) is within the root epsilon of M (vertex-to-surface distances both ways
 //   with vtkStaticCellLocator), closed where stitched for the exactly symmetric shapes, with
 //   the carried scalars equal to the input's at the original ids and the vector reflected on
@@ -22,6 +25,7 @@
 // The tree-walking and comparison helpers are in TestFoldingTreeChecks.cxx, the bad-input tests
 // in TestFoldingTreeMalformed.cxx.
 #include "TestFoldingTreeChecks.h"
+#include "vtkExpatSafeXMLMultiBlockDataReader.h"
 #include "vtkFoldingTreeBuilder.h"
 #include "vtkFoldingTreeIO.h"
 #include "vtkFoldingTreeUnfolder.h"
@@ -37,7 +41,6 @@
 #include <vtkPointData.h>
 #include <vtkPolyData.h>
 #include <vtkTypeUInt64Array.h>
-#include <vtkXMLMultiBlockDataReader.h>
 #include <vtkXMLMultiBlockDataWriter.h>
 
 #include <bitset>
@@ -215,39 +218,51 @@ vtkSmartPointer<vtkMultiBlockDataSet> RunCase(const Case& c, const std::string& 
     EXPECT(mirrored > 0, c.label << ": no mirrored-away cells");
   }
 
-  // Unfold in memory and after a .vtm round trip.
-  const std::string file = tempDir + "/TestFoldingTreeFilters_" +
-    std::to_string(std::hash<std::string>()(c.label) % 100000) + ".vtm";
-  vtkNew<vtkXMLMultiBlockDataWriter> writer;
-  writer->SetInputData(tree);
-  writer->SetFileName(file.c_str());
-  EXPECT(writer->Write() == 1, c.label << ": could not write " << file);
-  vtkNew<vtkXMLMultiBlockDataReader> reader;
-  reader->SetFileName(file.c_str());
-  reader->Update();
-  vtkMultiBlockDataSet* readBack = vtkMultiBlockDataSet::SafeDownCast(reader->GetOutput());
-  EXPECT(readBack, c.label << ": nothing read back");
-
-  vtkNew<vtkFoldingTreeUnfolder> unfolder, unfolderRead;
+  // Unfold in memory and after a .vtm round trip in both binary data modes.
+  vtkNew<vtkFoldingTreeUnfolder> unfolder;
   unfolder->SetInputData(tree);
-  EventLog log1, log2;
+  EventLog log1;
   EXPECT(UpdateCapturing(unfolder, log1) == 1 && log1.errors.empty(),
     c.label << ": unfold failed: " << (log1.errors.empty() ? "" : log1.errors[0]));
   vtkPolyData* unfolded = unfolder->GetOutput();
-  if (readBack)
+  for (const bool appended : { false, true })
   {
+    const std::string mode = appended ? "appended" : "binary";
+    const std::string file = tempDir + "/TestFoldingTreeFilters_" +
+      std::to_string(std::hash<std::string>()(c.label) % 100000) + "_" + mode + ".vtm";
+    vtkNew<vtkXMLMultiBlockDataWriter> writer;
+    writer->SetInputData(tree);
+    writer->SetFileName(file.c_str());
+    if (appended)
+      writer->SetDataModeToAppended();
+    else
+      writer->SetDataModeToBinary();
+    EXPECT(writer->Write() == 1, c.label << ": could not write " << file);
+    vtkNew<vtkExpatSafeXMLMultiBlockDataReader> reader;
+    reader->SetFileName(file.c_str());
+    EventLog readLog;
+    const int readStatus = UpdateCapturing(reader, readLog);
+    EXPECT(readStatus == 1 && readLog.errors.empty(),
+      c.label << ": reading the " << mode << " .vtm failed: "
+              << (readLog.errors.empty() ? "" : readLog.errors[0]));
+    vtkMultiBlockDataSet* readBack = vtkMultiBlockDataSet::SafeDownCast(reader->GetOutput());
+    EXPECT(readBack, c.label << ": nothing read back from the " << mode << " .vtm");
+    if (readStatus != 1 || !readLog.errors.empty() || !readBack)
+      continue;
     // The read-back tree has the same structure and names.
     std::vector<NodeInfo> readNodes;
     const char* name = BlockName(readBack, 0);
     Walk(readBack->GetBlock(0), name ? name : "", 0, 0.0, -1, readNodes, c.label + " (read)");
     EXPECT(readNodes.size() == nodes.size(),
       c.label << ": read-back tree has " << readNodes.size() << " nodes");
-    CompareTrees(tree, readBack, c.label + " (vtm)");
+    CompareTrees(tree, readBack, c.label + " (" + mode + " vtm)");
+    vtkNew<vtkFoldingTreeUnfolder> unfolderRead;
     unfolderRead->SetInputData(readBack);
+    EventLog log2;
     EXPECT(UpdateCapturing(unfolderRead, log2) == 1 && log2.errors.empty(),
       c.label << ": unfold of the read-back tree failed: "
               << (log2.errors.empty() ? "" : log2.errors[0]));
-    ExpectIdentical(unfolded, unfolderRead->GetOutput(), c.label);
+    ExpectIdentical(unfolded, unfolderRead->GetOutput(), c.label + " (" + mode + " vtm)");
   }
 
   // unfold(fold(M)) against M.
