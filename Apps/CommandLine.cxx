@@ -22,6 +22,8 @@ const char* const Usage = R"(usage: foldingmeshes detect MESH [options]
        foldingmeshes fold MESH [fold options]
        foldingmeshes unfold TREE.vtm [unfold options]
        foldingmeshes roundtrip MESH [fold options]
+       foldingmeshes compress MESH [fold options] [--quantization-bits N|auto]
+       foldingmeshes decompress FILE.fmz [unfold options]
        foldingmeshes --help | --version
 
 COMMAND --help prints this text too.
@@ -115,6 +117,17 @@ surface, and the maximum over every point of both surfaces (a proved upper bound
 of the diagonal). Also prints the open (boundary) edges and the vertices before and after
 (vertices at identical positions counted as one). Fails with exit code 4 when the proved bound
 exceeds the root epsilon (decided to 1e-7 of the diagonal). No pictures.
+
+compress: folds MESH (fold options) and writes STEM.fmz in --outdir: the compact folding tree,
+only what unfolding needs, the leaves coded with Draco; prints (JSON: "output", "bytes")
+its size, the stored faces and the quantisation.
+  --quantization-bits N    position bits per coordinate, 6..24, or auto (default): the fewest
+                           (at least 8) whose error is at most half of the smallest error
+                           budget of a stored point; the error is taken from the budgets, so
+                           the unfolded mesh stays within the root epsilon
+decompress: unfolds a .fmz file like unfold (same options, --original too) and writes
+STEM.vtp and STEM.png in --outdir (JSON: "output"). Not kept in a .fmz: user arrays and
+input ids (keep the .vtm for those). unfold reads .fmz files too.
 
 Pictures need a display: without $DISPLAY they are skipped with a message (use xvfb-run -a).
 

@@ -73,6 +73,8 @@ int Detect(int argc, char* argv[]);
 int Fold(int argc, char* argv[]);
 int Unfold(int argc, char* argv[]);
 int Roundtrip(int argc, char* argv[]);
+int Compress(int argc, char* argv[]);
+int Decompress(int argc, char* argv[]);
 }
 }
 

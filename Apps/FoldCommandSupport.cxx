@@ -12,6 +12,7 @@
 #include <vtkNew.h>
 #include <vtkRenderWindow.h>
 #include <vtkExpatSafeXMLMultiBlockDataReader.h>
+#include <vtkFoldingTreeCompactReader.h>
 #include <vtkXMLMultiBlockDataWriter.h>
 
 #include <algorithm>
@@ -217,14 +218,26 @@ vtkSmartPointer<vtkMultiBlockDataSet> ReadTree(const std::string& path, std::str
     error = "cannot read '" + path + "': no such file";
     return nullptr;
   }
-  vtkNew<vtkExpatSafeXMLMultiBlockDataReader> reader;
-  if (!reader->CanReadFile(path.c_str()))
+  vtkSmartPointer<vtkAlgorithm> reader;
+  if (vtkFoldingTreeCompactReader::CanReadFile(path.c_str()))
   {
-    error = "cannot read '" + path +
-      "': not a VTK XML multiblock (.vtm) file (write a tree with 'foldingmeshes fold')";
-    return nullptr;
+    vtkNew<vtkFoldingTreeCompactReader> compact;
+    compact->SetFileName(path.c_str());
+    reader = compact;
   }
-  reader->SetFileName(path.c_str());
+  else
+  {
+    vtkNew<vtkExpatSafeXMLMultiBlockDataReader> xml;
+    if (!xml->CanReadFile(path.c_str()))
+    {
+      error = "cannot read '" + path +
+        "': neither a VTK XML multiblock (.vtm) tree nor a compact (.fmz) tree (write one with "
+        "'foldingmeshes fold' or 'foldingmeshes compress')";
+      return nullptr;
+    }
+    xml->SetFileName(path.c_str());
+    reader = xml;
+  }
   if (!RunFilter(reader, "reading tree", true, error))
   {
     error = "cannot read '" + path + "': " + error;

@@ -2,6 +2,7 @@
 // RoundtripCommand.cxx).
 #include "FoldCommandSupport.h"
 #include "MeshIO.h"
+#include "vtkFoldingTreeCompactReader.h"
 #include "vtkFoldingTreeUnfolder.h"
 
 #include <vtkNew.h>
@@ -115,7 +116,11 @@ int Fold(int argc, char* argv[])
   return 0;
 }
 
-int Unfold(int argc, char* argv[])
+namespace
+{
+/// unfold (decompress false) and decompress (true): they differ in the input they accept
+/// and in the names of their outputs.
+int UnfoldTree(int argc, char* argv[], bool decompress)
 {
   std::string treePath, outdir = ".", originalPath;
   int upAxis = -1;
@@ -167,7 +172,14 @@ int Unfold(int argc, char* argv[])
       throw std::runtime_error("more than one tree given ('" + arg + "')");
   }
   if (treePath.empty())
-    throw std::runtime_error("no tree given");
+    throw std::runtime_error(decompress ? "no .fmz file given" : "no tree given");
+  if (decompress && !vtkFoldingTreeCompactReader::CanReadFile(treePath.c_str()))
+  {
+    std::cerr << "foldingmeshes: cannot read '" << treePath
+              << "': not a compact folding-tree (.fmz) file (write one with 'foldingmeshes "
+                 "compress')\n";
+    return 2;
+  }
 
   std::string error;
   vtkSmartPointer<vtkMultiBlockDataSet> tree = ReadTree(treePath, error);
@@ -200,8 +212,9 @@ int Unfold(int argc, char* argv[])
 
   const std::string stem = TreeStem(treePath);
   const std::filesystem::path dir(outdir);
-  const std::string meshPath = (dir / (stem + "_unfolded.vtp")).string();
-  std::string picture = (dir / (stem + "_unfolded.png")).string();
+  const std::string suffix = decompress ? "" : "_unfolded";
+  const std::string meshPath = (dir / (stem + suffix + ".vtp")).string();
+  std::string picture = (dir / (stem + suffix + ".png")).string();
   if (!MakeOutdir(outdir, error) || !foldingmeshes::WriteMesh(mesh, meshPath, error) ||
     !WriteCategoryPicture(mesh, "FoldingLeafId", upAxis, picture, error))
   {
@@ -234,9 +247,13 @@ int Unfold(int argc, char* argv[])
     original ? FieldValue(mesh, "MeanDistanceToOriginalRelative", -1.0) : -1.0;
   const double boundRelative =
     original ? FieldValue(mesh, "HausdorffToOriginalBoundRelative", -1.0) : -1.0;
+  std::error_code ec;
+  const auto inputBytes = static_cast<long long>(std::filesystem::file_size(treePath, ec));
+  const double quantizationError = TreeValue(tree, "QuantizationError", 0.0);
   if (json)
   {
-    std::printf("{\n  \"tree\": %s,\n  \"stitch\": %s,\n  \"faces\": %lld,\n"
+    std::printf("{\n  \"tree\": %s,\n  \"bytes\": %lld,\n  \"quantizationError\": %.9g,\n"
+                "  \"output\": %s,\n  \"stitch\": %s,\n  \"faces\": %lld,\n"
                 "  \"points\": %lld,\n  \"removedProjectedPoints\": %d,\n"
                 "  \"projectedPoints\": %d,\n  \"thinnedCopyPoints\": %d,\n"
                 "  \"foldExcessFaces\": %d,\n  \"openEdges\": %d,\n  \"nonManifoldEdges\": %d,\n"
@@ -249,6 +266,9 @@ int Unfold(int argc, char* argv[])
                 "  \"meanDistanceToOriginalRelative\": %.9g,\n  \"seconds\": %.3f,\n"
                 "  \"outputs\": {\"mesh\": %s, \"picture\": %s}\n}\n",
       JsonString(treePath).c_str(),
+      inputBytes,
+      quantizationError,
+      JsonString(meshPath).c_str(),
       stitch ? "true" : "false",
       faces,
       static_cast<long long>(mesh->GetNumberOfPoints()),
@@ -277,7 +297,10 @@ int Unfold(int argc, char* argv[])
   }
   else
   {
-    std::printf("tree:                    %s\n", treePath.c_str());
+    std::printf("tree:                    %s (%lld bytes)\n", treePath.c_str(), inputBytes);
+    if (quantizationError > 0)
+      std::printf("quantisation:            points moved up to %.6g (inside the bound)\n",
+        quantizationError);
     std::printf("faces:                   %lld (%lld points)\n",
       faces,
       static_cast<long long>(mesh->GetNumberOfPoints()));
@@ -317,6 +340,17 @@ int Unfold(int argc, char* argv[])
       std::printf("                         %s\n", picture.c_str());
   }
   return 0;
+}
+}
+
+int Unfold(int argc, char* argv[])
+{
+  return UnfoldTree(argc, argv, false);
+}
+
+int Decompress(int argc, char* argv[])
+{
+  return UnfoldTree(argc, argv, true);
 }
 }
 }

@@ -283,4 +283,19 @@ bool WriteMesh(vtkPolyData* mesh, const std::string& path, std::string& error)
     "' (use .vtp .vtk .ply .stl .obj)";
   return false;
 }
+
+std::vector<std::string> MeshFiles(const std::string& path)
+{
+  if (!std::filesystem::is_directory(path))
+    return { path };
+  std::vector<std::string> found;
+  for (const auto& entry : std::filesystem::directory_iterator(path))
+  {
+    const std::string ext = entry.path().extension().string();
+    if (ext == ".off" || ext == ".obj" || ext == ".ply" || ext == ".vtp" || ext == ".stl")
+      found.push_back(entry.path().string());
+  }
+  std::sort(found.begin(), found.end());
+  return found;
+}
 }

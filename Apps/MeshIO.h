@@ -17,6 +17,7 @@
 #include "vtkSmartPointer.h"
 
 #include <string>
+#include <vector>
 
 namespace foldingmeshes
 {
@@ -26,6 +27,12 @@ namespace foldingmeshes
  * the reader fails or the mesh has no points or no cells.
  */
 vtkSmartPointer<vtkPolyData> ReadMesh(const std::string& path, std::string& error);
+
+/**
+ * The mesh files (.off .obj .ply .vtp .stl) directly in the folder `path`, sorted; `path`
+ * itself when it is not a folder (for benchmark command lines: folders and files mixed).
+ */
+std::vector<std::string> MeshFiles(const std::string& path);
 
 /** Writes `mesh` to `path`. Returns false and sets `error` on failure. */
 bool WriteMesh(vtkPolyData* mesh, const std::string& path, std::string& error);

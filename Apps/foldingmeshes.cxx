@@ -4,6 +4,8 @@
 //   foldingmeshes fold MESH [options]        folding tree (.vtm) + segmentation + summary
 //   foldingmeshes unfold TREE.vtm [options]  mesh reconstructed from a folding tree
 //   foldingmeshes roundtrip MESH [options]   fold, save, read back, unfold, Hausdorff check
+//   foldingmeshes compress MESH [options]    compact folding tree STEM.fmz (Draco-coded leaves)
+//   foldingmeshes decompress FILE.fmz [opts] the mesh unfolded from a compact tree
 //   foldingmeshes --help | --version
 //
 // Exit codes: 0 success, 1 bad command line, 2 unreadable or invalid input, 3 cannot write,
@@ -50,6 +52,10 @@ int main(int argc, char* argv[])
       return Unfold(argc - 2, argv + 2);
     if (command == "roundtrip")
       return Roundtrip(argc - 2, argv + 2);
+    if (command == "compress")
+      return Compress(argc - 2, argv + 2);
+    if (command == "decompress")
+      return Decompress(argc - 2, argv + 2);
     throw std::runtime_error("unknown command '" + command + "'");
   }
   catch (const std::exception& e)

@@ -12,7 +12,8 @@
  * Differences from the superclass, all for reading whole trees: every array of a `.vtp`
  * piece is read (the superclass's array selections are not offered: collecting them
  * means reading every piece's header with a stock reader); no composite meta-data is
- * announced in RequestInformation (for the same reason), so the whole data set is read;
+ * announced in RequestInformation (for the same reason; pieces are still spread over the
+ * processes of a parallel run as the superclass spreads them);
  * a `.vtp` piece that cannot be read is left out (a null block) with an error instead of
  * becoming an empty block.
  *

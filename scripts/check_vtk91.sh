@@ -39,7 +39,7 @@ JOBS="${FOLDINGMESHES_JOBS:-2}"
 MIRROR="http://deb.debian.org/debian"
 PACKAGES=(
   build-essential cmake ninja-build
-  libvtk9-dev python3-vtk9 libeigen3-dev
+  libvtk9-dev python3-vtk9 libeigen3-dev libdraco-dev
   # asked for by find_package(VTK) of libvtk9-dev (GUISupportQt, ViewsQt, RenderingQt)
   qtbase5-dev libqt5opengl5-dev
   python3-numpy

@@ -10,6 +10,7 @@ PACKAGES=(
   qtbase5-dev qttools5-dev libqt5svg5-dev libqt5opengl5-dev libqt5x11extras5-dev qtxmlpatterns5-dev-tools
   mpi-default-dev mpi-default-bin
   libeigen3-dev
+  libdraco-dev   # the compact folding-tree file (.fmz) codes leaf geometry with Draco
   xvfb xauth
   python3-numpy python3-dev python3-mpi4py
   # libraries whose CMake packages ParaView's bundled VTK looks for at find_package time

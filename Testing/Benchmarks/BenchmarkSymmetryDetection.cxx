@@ -92,20 +92,11 @@ int main(int argc, char* argv[])
     }
     else if (arg == "--procedural")
       procedural = true;
-    else if (std::filesystem::is_directory(arg))
+    else
     {
-      std::vector<std::string> found;
-      for (const auto& entry : std::filesystem::directory_iterator(arg))
-      {
-        const std::string ext = entry.path().extension().string();
-        if (ext == ".off" || ext == ".obj" || ext == ".ply" || ext == ".vtp" || ext == ".stl")
-          found.push_back(entry.path().string());
-      }
-      std::sort(found.begin(), found.end());
+      const std::vector<std::string> found = foldingmeshes::MeshFiles(arg);
       meshes.insert(meshes.end(), found.begin(), found.end());
     }
-    else
-      meshes.push_back(arg);
   }
   std::printf("SMP backend %s, %d threads\n",
     vtkSMPTools::GetBackend(),

@@ -12,6 +12,9 @@
 #     --separate-parts reach the builder; roundtrip --no-stitch --no-close-holes leaves seams open;
 # 4e. a triangle referring to a point that does not exist: detect, fold and roundtrip exit 2,
 #     unfold --original fails, all with the filters' message;
+# 4f. compress writes STEM.fmz (JSON output and bytes, smaller than the .vtm tree), decompress
+#     --original gives the mesh back within the root epsilon (proved), unfold reads a .fmz,
+#     decompress refuses a .vtm and a 3-byte file (exit 2);
 # 5. `--help` exits 0 and documents every command and the exit codes; `--version` exits 0.
 foreach (var FOLDINGMESHES MESH WORK_DIR)
   if (NOT DEFINED ${var})
@@ -66,6 +69,64 @@ if (CMAKE_VERSION VERSION_GREATER_EQUAL 3.19)
   endif ()
 endif ()
 
+# compress / decompress (issue 18): compress writes STEM.fmz, its JSON names it with its
+# size; the .fmz is smaller than the .vtm tree's files; decompress --original gives the mesh
+# back within the root epsilon (the proved bound, quantisation included); unfold reads the
+# .fmz too; decompress refuses a .vtm and a corrupt .fmz (exit 2).
+execute_process(COMMAND "${FOLDINGMESHES}" compress "${MESH}" --outdir "${WORK_DIR}/fmz" --json --quiet
+  RESULT_VARIABLE rc OUTPUT_VARIABLE cout ERROR_VARIABLE err)
+if (NOT rc EQUAL 0)
+  message(FATAL_ERROR "compress exited with ${rc}: ${cout}${err}")
+endif ()
+string(JSON fmz ERROR_VARIABLE jsonError GET "${cout}" output)
+string(JSON fmzBytes ERROR_VARIABLE jsonError2 GET "${cout}" bytes)
+if (jsonError OR jsonError2 OR NOT fmz STREQUAL "${WORK_DIR}/fmz/${stem}.fmz" OR NOT EXISTS "${fmz}")
+  message(FATAL_ERROR "compress JSON: output '${fmz}' bytes '${fmzBytes}' ${jsonError} ${jsonError2}")
+endif ()
+file(SIZE "${fmz}" fmzSize)
+file(GLOB_RECURSE treeFiles "${WORK_DIR}/${stem}_tree/*" "${WORK_DIR}/${stem}_tree.vtm")
+set(treeSize 0)
+foreach (f IN LISTS treeFiles)
+  file(SIZE "${f}" s)
+  math(EXPR treeSize "${treeSize} + ${s}")
+endforeach ()
+message("compress: ${fmzSize} bytes (.vtm tree: ${treeSize} bytes)")
+if (NOT fmzSize EQUAL fmzBytes OR NOT fmzSize LESS treeSize)
+  message(FATAL_ERROR "compress: .fmz ${fmzSize} bytes (JSON ${fmzBytes}), .vtm tree ${treeSize}")
+endif ()
+execute_process(COMMAND "${FOLDINGMESHES}" decompress "${fmz}" --original "${MESH}"
+  --outdir "${WORK_DIR}/fmz" --json --quiet RESULT_VARIABLE rc OUTPUT_VARIABLE dout ERROR_VARIABLE err)
+if (NOT rc EQUAL 0)
+  message(FATAL_ERROR "decompress exited with ${rc}: ${dout}${err}")
+endif ()
+string(JSON dmesh ERROR_VARIABLE jsonError GET "${dout}" output)
+string(JSON bound ERROR_VARIABLE jsonError2 GET "${dout}" hausdorffToOriginalBoundRelative)
+if (jsonError OR jsonError2 OR NOT dmesh STREQUAL "${WORK_DIR}/fmz/${stem}.vtp" OR NOT EXISTS "${dmesh}")
+  message(FATAL_ERROR "decompress JSON: output '${dmesh}' ${jsonError} ${jsonError2}")
+endif ()
+string(JSON epsilonFraction GET "${out_roundtrip}" rootEpsilonFraction)
+message("decompress: proved Hausdorff / diagonal ${bound} (root epsilon ${epsilonFraction})")
+if (bound LESS 0 OR bound GREATER epsilonFraction)
+  message(FATAL_ERROR "decompress: proved Hausdorff / diagonal ${bound} above ${epsilonFraction}")
+endif ()
+execute_process(COMMAND "${FOLDINGMESHES}" unfold "${fmz}" --outdir "${WORK_DIR}/fmz" --json --quiet
+  RESULT_VARIABLE rc OUTPUT_VARIABLE uout ERROR_VARIABLE err)
+if (NOT rc EQUAL 0 OR NOT EXISTS "${WORK_DIR}/fmz/${stem}_unfolded.vtp")
+  message(FATAL_ERROR "unfold of the .fmz exited with ${rc}: ${err}")
+endif ()
+execute_process(COMMAND "${FOLDINGMESHES}" decompress "${WORK_DIR}/${stem}_tree.vtm"
+  --outdir "${WORK_DIR}/fmz" --quiet RESULT_VARIABLE rc OUTPUT_VARIABLE o ERROR_VARIABLE err)
+if (NOT rc EQUAL 2 OR NOT err MATCHES "not a compact folding-tree")
+  message(FATAL_ERROR "decompress of a .vtm: exit ${rc}, '${err}' (expected 2 and a clear error)")
+endif ()
+execute_process(COMMAND "${CMAKE_COMMAND}" -E echo_append "FMZ"
+  OUTPUT_FILE "${WORK_DIR}/fmz/bad.fmz")
+execute_process(COMMAND "${FOLDINGMESHES}" decompress "${WORK_DIR}/fmz/bad.fmz"
+  --outdir "${WORK_DIR}/fmz" --quiet RESULT_VARIABLE rc OUTPUT_VARIABLE o ERROR_VARIABLE err)
+if (NOT rc EQUAL 2)
+  message(FATAL_ERROR "decompress of a 3-byte file: exit ${rc} (expected 2): ${err}")
+endif ()
+
 execute_process(COMMAND "${FOLDINGMESHES}" fold "${WORK_DIR}/no_such_mesh.off" --outdir "${WORK_DIR}"
   --quiet RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
 message("fold on a missing file: exit ${rc}: ${err}")
@@ -83,7 +144,7 @@ file(WRITE "${WORK_DIR}/not_a_tree.vtm" "OFF\n0 0 0\n")
 execute_process(COMMAND "${FOLDINGMESHES}" unfold "${WORK_DIR}/not_a_tree.vtm" --outdir "${WORK_DIR}"
   --quiet RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
 message("unfold on a file that is not a tree: exit ${rc}: ${err}")
-if (NOT rc EQUAL 2 OR NOT err MATCHES "not a VTK XML multiblock")
+if (NOT rc EQUAL 2 OR NOT err MATCHES "neither a VTK XML multiblock")
   message(FATAL_ERROR "unfold on a non-.vtm file exited with ${rc}, expected 2 and a clear message")
 endif ()
 
@@ -182,7 +243,8 @@ execute_process(COMMAND "${FOLDINGMESHES}" --help
 if (NOT rc EQUAL 0)
   message(FATAL_ERROR "--help exited with ${rc}, expected 0")
 endif ()
-foreach (text IN ITEMS "detect MESH" "fold MESH" "unfold TREE.vtm" "roundtrip MESH" "exit codes: 0"
+foreach (text IN ITEMS "detect MESH" "fold MESH" "unfold TREE.vtm" "roundtrip MESH" "compress MESH"
+    "decompress FILE.fmz" "--quantization-bits" "exit codes: 0"
     "--tolerance" "--keep" "--max-folds" "--min-area-fraction" "--min-faces" "--seed"
     "--no-stitch" "--up" "--version")
   string(FIND "${out}" "${text}" found)

@@ -1,0 +1,110 @@
+// Little-endian byte writer and bounds-checked reader for the compact tree file
+// (CompactTreeFormat.h): fixed-size numbers and LEB128 variable-length unsigned integers.
+#ifndef foldingmeshes_CompactByteStream_h
+#define foldingmeshes_CompactByteStream_h
+
+#include <cstdint>
+#include <cstring>
+#include <stdexcept>
+#include <string>
+
+namespace foldingmeshes
+{
+/// Thrown by ByteReader on a read past the end or an impossible value (caught by the decoder,
+/// which turns it into an error message: a corrupt file never crashes).
+struct CompactFormatError : std::runtime_error
+{
+  using std::runtime_error::runtime_error;
+};
+
+class ByteWriter
+{
+public:
+  void U8(uint8_t v) { this->Bytes.push_back(static_cast<char>(v)); }
+  void U16(uint16_t v) { this->Fixed(v); }
+  void U32(uint32_t v) { this->Fixed(v); }
+  void F32(float v) { this->Fixed(v); }
+  void F64(double v) { this->Fixed(v); }
+  void VarUInt(uint64_t v)
+  {
+    while (v >= 0x80)
+    {
+      this->U8(static_cast<uint8_t>(v) | 0x80);
+      v >>= 7;
+    }
+    this->U8(static_cast<uint8_t>(v));
+  }
+  void Raw(const std::string& bytes) { this->Bytes += bytes; }
+  std::string Bytes;
+
+private:
+  template <typename T>
+  void Fixed(T v) // the machines we build for are little-endian (static_assert in the .cxx)
+  {
+    char b[sizeof(T)];
+    std::memcpy(b, &v, sizeof(T));
+    this->Bytes.append(b, sizeof(T));
+  }
+};
+
+class ByteReader
+{
+public:
+  ByteReader(const char* data, size_t size, const char* what)
+    : Data(data)
+    , Size(size)
+    , What(what)
+  {
+  }
+  uint8_t U8() { return static_cast<uint8_t>(*this->Take(1)); }
+  uint16_t U16() { return this->Fixed<uint16_t>(); }
+  uint32_t U32() { return this->Fixed<uint32_t>(); }
+  float F32() { return this->Fixed<float>(); }
+  double F64() { return this->Fixed<double>(); }
+  uint64_t VarUInt()
+  {
+    uint64_t v = 0;
+    for (int shift = 0; shift < 64; shift += 7)
+    {
+      const uint8_t b = this->U8();
+      v |= static_cast<uint64_t>(b & 0x7f) << shift;
+      if (!(b & 0x80))
+        return v;
+    }
+    throw CompactFormatError(std::string(this->What) + ": malformed variable-length number");
+  }
+  /// A count that must not exceed `limit` (guards allocations against corrupt counts).
+  size_t Count(uint64_t limit, const char* name)
+  {
+    const uint64_t v = this->VarUInt();
+    if (v > limit)
+      throw CompactFormatError(std::string(this->What) + ": " + name + " " + std::to_string(v) +
+        " exceeds " + std::to_string(limit));
+    return static_cast<size_t>(v);
+  }
+  const char* Take(size_t n)
+  {
+    if (n > this->Size - this->Position)
+      throw CompactFormatError(std::string(this->What) + ": truncated");
+    const char* p = this->Data + this->Position;
+    this->Position += n;
+    return p;
+  }
+  size_t Remaining() const { return this->Size - this->Position; }
+
+private:
+  template <typename T>
+  T Fixed()
+  {
+    T v;
+    std::memcpy(&v, this->Take(sizeof(T)), sizeof(T));
+    return v;
+  }
+  const char* Data;
+  size_t Size;
+  size_t Position = 0;
+  const char* What;
+};
+}
+
+#endif

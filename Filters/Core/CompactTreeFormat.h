@@ -1,0 +1,84 @@
+// The compact folding-tree file (.fmz): only what unfolding needs, the leaves' geometry coded
+// by Draco at a quantisation the error bound pays for. Layout (all numbers little-endian):
+//
+//   offset 0   4 bytes  magic "FMZ" 0x1a
+//          4   u16      format version (CompactTreeFormatVersion); readers reject others
+//          6   u16      reserved flags (0)
+//          8   u32      size T of the zlib-compressed tree section, u32 its raw size
+//         16   T bytes  tree section (zlib): counts, lengths, quantisation, nodes in preorder
+//                       (kind, leaf reason, children, epsilon / root epsilon, fold planes),
+//                       leaves' point / triangle counts, mirrored-flag records
+//     16 + T   u32      size D of the Draco section, then D bytes: one Draco mesh of every
+//                       leaf (positions; per point: leaf, flags, tear / plane masks, error
+//                       budget, mirrored-flag group), faces of each leaf oriented as stored
+//   16+T+4+D   u32      CRC-32 (zlib) of every byte before it
+//
+// The tree section is documented field by field in CompactTreeFormat.cxx (WriteTreeSection).
+// Positions are quantised on a grid over the stored points' bounding box; the largest move a
+// point can get from it (QuantizationError) is subtracted from every point's error budget
+// before the budget is stored, so the unfolder's proved bound (root epsilon) still holds:
+// quantisation is counted inside the bound, not on top of it.
+//
+// Not stored (the unfolder does not need them): the input ids of stored points and faces (the
+// decoder numbers the stored points and faces 0..n-1), the input's border / non-manifold edge
+// lists, the nodes' face lists and detection statistics, user arrays.
+#ifndef foldingmeshes_CompactTreeFormat_h
+#define foldingmeshes_CompactTreeFormat_h
+
+#include "FoldingTree.h"
+
+#include <string>
+
+namespace foldingmeshes
+{
+constexpr int CompactTreeFormatVersion = 1;
+
+struct CompactTreeOptions
+{
+  /// Position quantisation bits per coordinate on the grid over the stored points' bounding
+  /// box (6..24), or 0: automatic - the fewest bits (at least 8) whose quantisation error is at
+  /// most half of the smallest error budget of a stored point (1% of the root epsilon when the
+  /// tree has no budgets), at most 24.
+  int quantizationBits = 0;
+  /// Draco's speed setting (0 = slowest, smallest ... 10 = fastest); 3 is draco_encoder's -cl 7.
+  int dracoSpeed = 3;
+};
+
+/// What an encoding made (sizes in bytes).
+struct CompactTreeStats
+{
+  size_t bytes = 0;             ///< the whole file
+  size_t treeSectionBytes = 0;  ///< compressed tree section
+  size_t geometryBytes = 0;     ///< Draco section
+  int quantizationBits = 0;     ///< the bits used
+  double quantizationError = 0; ///< largest distance a stored point can move (a length)
+  int points = 0;               ///< stored points
+  int triangles = 0;            ///< stored triangles
+};
+
+/**
+ * Encodes `tree` (which must pass FoldingTree::Validate) into `bytes`. False with `error` for an
+ * invalid tree or options.
+ */
+bool EncodeCompactTree(const FoldingTree& tree,
+  const CompactTreeOptions& options,
+  std::string& bytes,
+  CompactTreeStats* stats,
+  std::string& error);
+
+/**
+ * Decodes a file written by EncodeCompactTree. False with a description of the first problem
+ * for anything else: another format, another version, a truncated or corrupt file (checksum),
+ * counts out of range, a decoded tree that fails FoldingTree::Validate. Never crashes on bad
+ * bytes. `quantizationError` (optional) receives the stored quantisation error.
+ */
+bool DecodeCompactTree(const std::string& bytes,
+  FoldingTree& tree,
+  std::string& error,
+  double* quantizationError = nullptr);
+
+/// True when `bytes` starts with the compact tree file's magic number.
+bool LooksLikeCompactTree(const std::string& bytes);
+}
+
+#endif

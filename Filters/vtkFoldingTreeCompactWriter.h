@@ -1,0 +1,91 @@
+/**
+ * @class   vtkFoldingTreeCompactWriter
+ * @brief   writes a folding tree as a compact .fmz file (Draco-coded leaves)
+ *
+ * Takes the tree of vtkFoldingTreeBuilder (or a .vtm tree read back) and writes only what
+ * vtkFoldingTreeUnfolder needs: the nodes, their planes and epsilons, the leaves' points and
+ * triangles (coded with Draco), the per-point tear / fold-line flags, projected and input-border
+ * flags and error budgets, and the mirrored-flag records. Positions are quantised on a grid of
+ * QuantizationBits bits over the stored points' bounding box; the quantisation error is
+ * subtracted from every point's error budget, so unfolding the file stays within the tree's
+ * root epsilon (the proved bound) with quantisation included. The layout is documented in
+ * Core/CompactTreeFormat.h. Read it with vtkFoldingTreeCompactReader.
+ *
+ * What the user gives up against the .vtm: user point and cell arrays, the input ids of stored
+ * points and faces (the unfolded mesh's OriginalPointId / OriginalFaceId are running numbers),
+ * the nodes' face lists and detection statistics, and the input's border / non-manifold edge
+ * lists (the unfolder then relies on the points' input-border flags alone).
+ *
+ * An invalid tree or a file that cannot be written is reported with vtkErrorMacro and the
+ * writer's ErrorCode; nothing is written.
+ *
+ * @sa vtkFoldingTreeCompactReader vtkFoldingTreeBuilder vtkFoldingTreeUnfolder
+ */
+#ifndef vtkFoldingTreeCompactWriter_h
+#define vtkFoldingTreeCompactWriter_h
+
+#include "FoldingMeshesFiltersModule.h" // for export macro
+#include "vtkWriter.h"
+
+#include <string> // for the output string
+
+class FOLDINGMESHESFILTERS_EXPORT vtkFoldingTreeCompactWriter : public vtkWriter
+{
+public:
+  static vtkFoldingTreeCompactWriter* New();
+  vtkTypeMacro(vtkFoldingTreeCompactWriter, vtkWriter);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  ///@{
+  /** Name of the .fmz file to write. */
+  vtkSetStringMacro(FileName);
+  vtkGetStringMacro(FileName);
+  ///@}
+
+  ///@{
+  /**
+   * Position quantisation bits per coordinate (6..24), or 0 (the default): automatic - the
+   * fewest bits (at least 8) whose quantisation error is at most half of the smallest error
+   * budget of a stored point (1% of the root epsilon for trees without budgets).
+   */
+  vtkSetClampMacro(QuantizationBits, int, 0, 24);
+  vtkGetMacro(QuantizationBits, int);
+  ///@}
+
+  ///@{
+  /** Write to OutputString instead of FileName (for Python and tests). Default off. */
+  vtkSetMacro(WriteToOutputString, bool);
+  vtkGetMacro(WriteToOutputString, bool);
+  vtkBooleanMacro(WriteToOutputString, bool);
+  ///@}
+  /** The bytes written by the last Write() when WriteToOutputString is on. */
+  const std::string& GetOutputString() const { return this->OutputString; }
+
+  ///@{
+  /** Results of the last Write(): file size, bits used, largest quantisation move (a length). */
+  vtkGetMacro(BytesWritten, vtkIdType);
+  vtkGetMacro(QuantizationBitsUsed, int);
+  vtkGetMacro(QuantizationError, double);
+  ///@}
+
+protected:
+  vtkFoldingTreeCompactWriter();
+  ~vtkFoldingTreeCompactWriter() override;
+
+  void WriteData() override;
+  int FillInputPortInformation(int port, vtkInformation* info) override;
+
+  char* FileName = nullptr;
+  int QuantizationBits = 0;
+  bool WriteToOutputString = false;
+  std::string OutputString;
+  vtkIdType BytesWritten = 0;
+  int QuantizationBitsUsed = 0;
+  double QuantizationError = 0.0;
+
+private:
+  vtkFoldingTreeCompactWriter(const vtkFoldingTreeCompactWriter&) = delete;
+  void operator=(const vtkFoldingTreeCompactWriter&) = delete;
+};
+
+#endif

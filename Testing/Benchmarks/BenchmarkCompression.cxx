@@ -1,0 +1,238 @@
+// Bytes of a mesh in the usual containers and coders next to its compact folding tree (.fmz),
+// with the proved Hausdorff distance of the decompressed mesh (issue 18). Prints numbers; not
+// a test. Usage:
+//   BenchmarkCompression [--threads N] [--bits N] DIR_OR_MESH...
+// Columns: faces; binary PLY; zlib'd VTP (inline binary); Draco at draco_encoder's defaults
+// (11 position bits, -cl 7); Draco at the tree's bits; the .fmz; the ratio .fmz / Draco at the
+// same bits; the .fmz's quantisation bits; proved Hausdorff of the decompressed mesh to the
+// input over the diagonal (root epsilon: 0.02); compress (fold + encode) and decompress
+// (decode + unfold) seconds.
+#include "MeshIO.h"
+#include "vtkFoldingTreeBuilder.h"
+#include "vtkFoldingTreeCompactReader.h"
+#include "vtkFoldingTreeCompactWriter.h"
+#include "vtkFoldingTreeUnfolder.h"
+
+#include <draco/compression/encode.h>
+#include <draco/mesh/mesh.h>
+
+#include <vtkCellArray.h>
+#include <vtkCellArrayIterator.h>
+#include <vtkDataArray.h>
+#include <vtkFieldData.h>
+#include <vtkNew.h>
+#include <vtkPLYWriter.h>
+#include <vtkPoints.h>
+#include <vtkPolyData.h>
+#include <vtkSMPTools.h>
+#include <vtkTriangleFilter.h>
+#include <vtkXMLPolyDataWriter.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace
+{
+using Clock = std::chrono::steady_clock;
+double Since(Clock::time_point t)
+{
+  return std::chrono::duration<double>(Clock::now() - t).count();
+}
+
+/// Draco bytes of the mesh's positions and triangles (what draco_encoder makes of a PLY).
+size_t DracoBytes(vtkPolyData* mesh, int bits)
+{
+  draco::Mesh d;
+  const vtkIdType np = mesh->GetNumberOfPoints();
+  d.set_num_points(static_cast<uint32_t>(np));
+  draco::GeometryAttribute ga;
+  ga.Init(draco::GeometryAttribute::POSITION, nullptr, 3, draco::DT_FLOAT32, false, 12, 0);
+  const int id = d.AddAttribute(ga, true, static_cast<uint32_t>(np));
+  for (vtkIdType i = 0; i < np; ++i)
+  {
+    double p[3];
+    mesh->GetPoint(i, p);
+    const float f[3] = { float(p[0]), float(p[1]), float(p[2]) };
+    d.attribute(id)->SetAttributeValue(draco::AttributeValueIndex(static_cast<uint32_t>(i)), f);
+  }
+  auto it = vtk::TakeSmartPointer(mesh->GetPolys()->NewIterator());
+  for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell())
+  {
+    vtkIdType n;
+    const vtkIdType* ids;
+    it->GetCurrentCell(n, ids);
+    if (n != 3)
+      continue;
+    draco::Mesh::Face face;
+    for (int k = 0; k < 3; ++k)
+      face[k] = draco::PointIndex(static_cast<uint32_t>(ids[k]));
+    d.AddFace(face);
+  }
+  d.DeduplicateAttributeValues();
+  d.DeduplicatePointIds();
+  draco::Encoder encoder;
+  encoder.SetSpeedOptions(3, 3); // draco_encoder -cl 7 (its default)
+  encoder.SetAttributeQuantization(draco::GeometryAttribute::POSITION, bits);
+  draco::EncoderBuffer buffer;
+  if (!encoder.EncodeMeshToBuffer(d, &buffer).ok())
+    return 0;
+  return buffer.size();
+}
+
+size_t PlyBytes(vtkPolyData* mesh)
+{
+  const std::string file = (std::filesystem::temp_directory_path() / "benchmark.ply").string();
+  vtkNew<vtkPolyData> bare; // positions and triangles only
+  bare->SetPoints(mesh->GetPoints());
+  bare->SetPolys(mesh->GetPolys());
+  vtkNew<vtkPLYWriter> w;
+  w->SetInputData(bare);
+  w->SetFileTypeToBinary();
+  w->SetFileName(file.c_str());
+  w->Write();
+  std::error_code ec;
+  const size_t size = static_cast<size_t>(std::filesystem::file_size(file, ec));
+  std::filesystem::remove(file, ec);
+  return size;
+}
+
+size_t VtpBytes(vtkPolyData* mesh)
+{
+  vtkNew<vtkPolyData> bare; // positions and triangles only, like the others
+  bare->SetPoints(mesh->GetPoints());
+  bare->SetPolys(mesh->GetPolys());
+  vtkNew<vtkXMLPolyDataWriter> w;
+  w->SetInputData(bare);
+  w->SetDataModeToBinary();
+  w->WriteToOutputStringOn();
+  w->Write();
+  return w->GetOutputString().size();
+}
+
+double Field(vtkPolyData* mesh, const char* name)
+{
+  vtkDataArray* a = mesh->GetFieldData()->GetArray(name);
+  return a ? a->GetTuple1(0) : -1.0;
+}
+
+const std::map<std::string, std::string> Table1 = { { "dino_cgal", "Dino" },
+  { "horse_psb397", "Horse" }, { "chair_psb108", "Chair" }, { "table_psb152", "Table" },
+  { "hammer_oded_dec4360", "Hammer" }, { "triceratops_cgal", "Triceratops" },
+  { "eagle_psb258", "Eagle" }, { "queen_chess_quaddamage", "Queen" } };
+}
+
+int main(int argc, char* argv[])
+{
+  vtkSMPTools::SetBackend("STDThread");
+  int bits = 0;
+  std::vector<std::string> paths;
+  for (int i = 1; i < argc; ++i)
+  {
+    const std::string a = argv[i];
+    if (a == "--threads" && i + 1 < argc)
+      vtkSMPTools::Initialize(std::atoi(argv[++i]));
+    else if (a == "--bits" && i + 1 < argc)
+      bits = std::atoi(argv[++i]);
+    else
+    {
+      const std::vector<std::string> found = foldingmeshes::MeshFiles(a);
+      paths.insert(paths.end(), found.begin(), found.end());
+    }
+  }
+  if (paths.empty())
+  {
+    std::fprintf(stderr, "usage: %s [--threads N] [--bits N] DIR_OR_MESH...\n", argv[0]);
+    return 1;
+  }
+  std::printf("%-28s %7s %9s %9s %8s %8s %8s %6s %4s %8s %6s %6s\n", "mesh", "faces", "PLY",
+    "VTP", "Draco11", "DracoQ", "fmz", "fmz/Dq", "Q", "Hmax/dg", "t_c", "t_d");
+  std::vector<double> ratios, table1Ratios;
+  std::vector<std::string> table1Rows;
+  for (const std::string& path : paths)
+  {
+    std::string error;
+    vtkSmartPointer<vtkPolyData> input = foldingmeshes::ReadMesh(path, error);
+    if (!input)
+    {
+      std::printf("%-28s unreadable: %s\n", path.c_str(), error.c_str());
+      continue;
+    }
+    vtkNew<vtkTriangleFilter> triangles;
+    triangles->SetInputData(input);
+    triangles->PassVertsOff();
+    triangles->PassLinesOff();
+    triangles->Update();
+    vtkPolyData* mesh = triangles->GetOutput();
+    const std::string stem = std::filesystem::path(path).stem().string();
+
+    auto start = Clock::now();
+    vtkNew<vtkFoldingTreeBuilder> builder;
+    builder->SetInputData(mesh);
+    vtkNew<vtkFoldingTreeCompactWriter> writer;
+    writer->SetInputConnection(builder->GetOutputPort(0));
+    writer->WriteToOutputStringOn();
+    writer->SetQuantizationBits(bits);
+    writer->Write();
+    const double compressSeconds = Since(start);
+    const std::string bytes = writer->GetOutputString();
+    if (bytes.empty())
+    {
+      std::printf("%-28s compress failed\n", stem.c_str());
+      continue;
+    }
+    const std::string file = (std::filesystem::temp_directory_path() / (stem + ".fmz")).string();
+    std::ofstream(file, std::ios::binary).write(bytes.data(), bytes.size());
+    start = Clock::now();
+    vtkNew<vtkFoldingTreeCompactReader> reader;
+    reader->SetFileName(file.c_str());
+    vtkNew<vtkFoldingTreeUnfolder> unfolder;
+    unfolder->SetInputConnection(reader->GetOutputPort());
+    unfolder->Update();
+    const double decompressSeconds = Since(start);
+    unfolder->SetOriginalData(mesh); // the proved bound, outside the timing
+    unfolder->Update();
+    const double bound = Field(unfolder->GetOutput(), "HausdorffToOriginalBoundRelative");
+    std::filesystem::remove(file);
+
+    const int q = writer->GetQuantizationBitsUsed();
+    const size_t draco11 = DracoBytes(mesh, 11), dracoQ = DracoBytes(mesh, q);
+    const double ratio = dracoQ ? double(bytes.size()) / double(dracoQ) : 0.0;
+    ratios.push_back(ratio);
+    char row[512];
+    std::snprintf(row, sizeof(row),
+      "%-28s %7lld %9zu %9zu %8zu %8zu %8zu %6.3f %4d %8.4f %6.3f %6.3f", stem.c_str(),
+      static_cast<long long>(mesh->GetNumberOfCells()), PlyBytes(mesh), VtpBytes(mesh), draco11,
+      dracoQ, bytes.size(), ratio, q, bound, compressSeconds, decompressSeconds);
+    std::printf("%s\n", row);
+    std::fflush(stdout);
+    const auto t = Table1.find(stem);
+    if (t != Table1.end())
+    {
+      table1Ratios.push_back(ratio);
+      table1Rows.push_back(t->second + std::string(": ") + row);
+    }
+  }
+  auto median = [](std::vector<double> v) {
+    if (v.empty())
+      return 0.0;
+    std::sort(v.begin(), v.end());
+    return v.size() % 2 ? v[v.size() / 2] : 0.5 * (v[v.size() / 2 - 1] + v[v.size() / 2]);
+  };
+  std::printf("\nall %zu meshes: fmz / Draco at the same bits: median %.3f, max %.3f\n",
+    ratios.size(), median(ratios), ratios.empty() ? 0.0 : *std::max_element(ratios.begin(), ratios.end()));
+  if (!table1Rows.empty())
+  {
+    std::printf("Table 1 stand-ins (%zu): median %.3f, max %.3f\n", table1Rows.size(),
+      median(table1Ratios), *std::max_element(table1Ratios.begin(), table1Ratios.end()));
+    for (const std::string& r : table1Rows)
+      std::printf("  %s\n", r.c_str());
+  }
+  return 0;
+}
