@@ -22,7 +22,7 @@ const char* const Usage = R"(usage: foldingmeshes detect MESH [options]
        foldingmeshes fold MESH [fold options]
        foldingmeshes unfold TREE.vtm [unfold options]
        foldingmeshes roundtrip MESH [fold options]
-       foldingmeshes compress MESH [fold options] [--quantization-bits N|auto]
+       foldingmeshes compress MESH [fold options] [--quantization-bits N|auto] [--keep-arrays]
        foldingmeshes decompress FILE.fmz [unfold options]
        foldingmeshes --help | --version
 
@@ -125,9 +125,11 @@ its size, the stored faces and the quantisation.
                            (at least 8) whose error is at most half of the smallest error
                            budget of a stored point; the error is taken from the budgets, so
                            the unfolded mesh stays within the root epsilon
+  --keep-arrays            also store the mesh's point and cell arrays (lossless; a larger
+                           file: the geometry is then coded in the leaves' order)
 decompress: unfolds a .fmz file like unfold (same options, --original too) and writes
-STEM.vtp and STEM.png in --outdir (JSON: "output"). Not kept in a .fmz: user arrays and
-input ids (keep the .vtm for those). unfold reads .fmz files too.
+STEM.vtp and STEM.png in --outdir (JSON: "output"). Not kept in a .fmz: input ids, and user
+arrays without --keep-arrays (keep the .vtm for those). unfold reads .fmz files too.
 
 Pictures need a display: without $DISPLAY they are skipped with a message (use xvfb-run -a).
 

@@ -20,8 +20,9 @@ namespace cli
 {
 int Compress(int argc, char* argv[])
 {
-  // --quantization-bits is compress's own; the rest are the fold command's options.
+  // --quantization-bits and --keep-arrays are compress's own; the rest are the fold command's.
   int bits = 0;
+  bool keepArrays = false;
   std::vector<char*> foldArguments;
   for (int i = 0; i < argc; ++i)
   {
@@ -32,6 +33,8 @@ int Compress(int argc, char* argv[])
       const std::string value = argv[++i];
       bits = value == "auto" ? 0 : ParseInteger("--quantization-bits", value, 6, 24);
     }
+    else if (std::string(argv[i]) == "--keep-arrays")
+      keepArrays = true;
     else
       foldArguments.push_back(argv[i]);
   }
@@ -61,6 +64,7 @@ int Compress(int argc, char* argv[])
   writer->SetInputConnection(builder->GetOutputPort(0));
   writer->SetFileName(output.c_str());
   writer->SetQuantizationBits(bits);
+  writer->SetStoreUserArrays(keepArrays);
   if (!MakeOutdir(f.outdir, error) || !RunFilter(writer, "writing", true, error))
   {
     std::cerr << "foldingmeshes: " << error << "\n";

@@ -308,4 +308,64 @@ std::vector<std::string> RecordedAttributes(vtkFieldData* info,
     }
   return {};
 }
+namespace
+{
+/// The builder's arrays in the leaves (read by the unfolder, not carried to the output).
+bool IsTreeArray(const char* name, bool points)
+{
+  const std::vector<std::string>& names =
+    points ? LeafPointArrayNames() : LeafCellArrayNames();
+  return std::find(names.begin(), names.end(), name) != names.end();
+}
+
+}
+
+/// Names of the arrays present in every leaf with the same type, components and size;
+/// `unnamed` counts the first leaf's unnamed arrays (not carried: nothing matches them).
+std::vector<std::string> CommonLeafArrays(const std::vector<vtkPolyData*>& leaves,
+  bool points,
+  int& unnamed)
+{
+  std::vector<std::string> names;
+  unnamed = 0;
+  vtkPolyData* first = nullptr;
+  for (vtkPolyData* leaf : leaves)
+    if (leaf && !first)
+      first = leaf;
+  if (!first)
+    return names;
+  auto attributes = [points](vtkPolyData* pd) -> vtkDataSetAttributes*
+  {
+    return points ? static_cast<vtkDataSetAttributes*>(pd->GetPointData())
+                  : static_cast<vtkDataSetAttributes*>(pd->GetCellData());
+  };
+  vtkDataSetAttributes* reference = attributes(first);
+  for (int a = 0; a < reference->GetNumberOfArrays(); ++a)
+  {
+    vtkAbstractArray* ref = reference->GetAbstractArray(a);
+    if (ref && (!ref->GetName() || !ref->GetName()[0]))
+      ++unnamed;
+    if (!ref || !ref->GetName() || !ref->GetName()[0] || IsTreeArray(ref->GetName(), points))
+      continue;
+    bool everywhere = true;
+    for (vtkPolyData* leaf : leaves)
+    {
+      if (!leaf)
+        continue;
+      vtkAbstractArray* other = attributes(leaf)->GetAbstractArray(ref->GetName());
+      const vtkIdType n = points ? leaf->GetNumberOfPoints() : leaf->GetNumberOfCells();
+      if (!other || other->GetDataType() != ref->GetDataType() ||
+        other->GetNumberOfComponents() != ref->GetNumberOfComponents() ||
+        other->GetNumberOfTuples() != n)
+      {
+        everywhere = false;
+        break;
+      }
+    }
+    if (everywhere)
+      names.emplace_back(ref->GetName());
+  }
+  return names;
+}
+
 }

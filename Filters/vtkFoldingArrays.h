@@ -85,6 +85,15 @@ std::vector<std::string> RecordedAttributes(vtkFieldData* info,
 /// Makes the arrays `names[attribute]` of `out` its active attributes where they exist, except
 /// global or pedigree ids whose values repeat (mirrored copies repeat their leaf's ids: the
 /// array stays, unflagged).
+/**
+ * Names of the user arrays (not the tree's own, named, present in every leaf with the same type,
+ * components and one tuple per point / cell) of the leaves (null entries skipped); `unnamed`
+ * counts the first leaf's unnamed arrays (never carried).
+ */
+std::vector<std::string> CommonLeafArrays(const std::vector<vtkPolyData*>& leaves,
+  bool points,
+  int& unnamed);
+
 void ApplyActiveAttributes(vtkDataSetAttributes* out, const std::vector<std::string>& names);
 }
 

@@ -5,7 +5,8 @@
  * Reads a file written by vtkFoldingTreeCompactWriter (or `foldingmeshes compress`) and produces
  * the same vtkMultiBlockDataSet encoding as vtkFoldingTreeBuilder's Tree output (block 0 the
  * root node, block 1 the "Tree" information block), with what the compact file keeps (see
- * vtkFoldingTreeCompactWriter for what it does not). The information block also carries
+ * vtkFoldingTreeCompactWriter for what it does not): the leaves carry the user point and cell
+ * arrays when the file was written with StoreUserArrays. The information block also carries
  * "QuantizationError": the largest distance quantisation moved a stored point (already
  * subtracted from the points' error budgets).
  *

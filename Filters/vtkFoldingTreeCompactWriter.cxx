@@ -3,14 +3,69 @@
 #include "Core/CompactTreeFormat.h"
 #include "vtkFoldingTreeIO.h"
 
+#include "vtkFoldingArrays.h"
+
+#include "vtkCellData.h"
+#include "vtkDataArray.h"
 #include "vtkErrorCode.h"
 #include "vtkInformation.h"
 #include "vtkMultiBlockDataSet.h"
 #include "vtkObjectFactory.h"
+#include "vtkPointData.h"
+#include "vtkPolyData.h"
+
+#include <algorithm>
 
 #include <fstream>
 
 vtkStandardNewMacro(vtkFoldingTreeCompactWriter);
+
+namespace
+{
+/// The leaves' user arrays (vtkFoldingArrays.h: CommonLeafArrays), numeric ones, as raw values.
+std::vector<foldingmeshes::CompactArray> UserArrays(
+  const foldingmeshes::FoldingTree& tree, const std::vector<vtkPolyData*>& blocks)
+{
+  std::vector<vtkPolyData*> leaves;
+  for (size_t i = 0; i < tree.nodes.size(); ++i)
+    if (tree.nodes[i].kind == foldingmeshes::FoldingNodeKind::Leaf)
+      leaves.push_back(i < blocks.size() ? blocks[i] : nullptr);
+  std::vector<foldingmeshes::CompactArray> arrays;
+  if (std::find(leaves.begin(), leaves.end(), nullptr) != leaves.end())
+    return arrays;
+  for (const bool points : { true, false })
+  {
+    int unnamed = 0;
+    for (const std::string& name : foldingmeshes::CommonLeafArrays(leaves, points, unnamed))
+    {
+      foldingmeshes::CompactArray a;
+      a.name = name;
+      a.perTriangle = !points;
+      bool numeric = true;
+      for (vtkPolyData* leaf : leaves)
+      {
+        vtkDataSetAttributes* dsa = points ? static_cast<vtkDataSetAttributes*>(leaf->GetPointData())
+                                           : static_cast<vtkDataSetAttributes*>(leaf->GetCellData());
+        vtkDataArray* data = vtkDataArray::SafeDownCast(dsa->GetAbstractArray(name.c_str()));
+        if (!data || data->GetDataTypeSize() < 1 || data->GetDataTypeSize() > 8 ||
+          (!data->HasStandardMemoryLayout()))
+        {
+          numeric = false;
+          break;
+        }
+        a.dataType = data->GetDataType();
+        a.components = data->GetNumberOfComponents();
+        a.elementSize = data->GetDataTypeSize();
+        const size_t bytes = static_cast<size_t>(data->GetNumberOfValues()) * a.elementSize;
+        a.leaves.emplace_back(static_cast<const char*>(data->GetVoidPointer(0)), bytes);
+      }
+      if (numeric)
+        arrays.push_back(std::move(a));
+    }
+  }
+  return arrays;
+}
+}
 
 vtkFoldingTreeCompactWriter::vtkFoldingTreeCompactWriter() = default;
 
@@ -40,7 +95,8 @@ void vtkFoldingTreeCompactWriter::WriteData()
   }
   foldingmeshes::FoldingTree tree;
   std::string error;
-  if (!input || !foldingmeshes::MultiBlockToFoldingTree(input, tree, error))
+  std::vector<vtkPolyData*> leafBlocks;
+  if (!input || !foldingmeshes::MultiBlockToFoldingTree(input, tree, &leafBlocks, error))
   {
     vtkErrorMacro("The input is not a folding tree: " << (input ? error : "no input") << ".");
     this->SetErrorCode(vtkErrorCode::UnknownError);
@@ -50,7 +106,9 @@ void vtkFoldingTreeCompactWriter::WriteData()
   options.quantizationBits = this->QuantizationBits;
   foldingmeshes::CompactTreeStats stats;
   std::string bytes;
-  if (!foldingmeshes::EncodeCompactTree(tree, options, bytes, &stats, error))
+  const std::vector<foldingmeshes::CompactArray> arrays =
+    this->StoreUserArrays ? UserArrays(tree, leafBlocks) : std::vector<foldingmeshes::CompactArray>();
+  if (!foldingmeshes::EncodeCompactTree(tree, options, bytes, &stats, error, &arrays))
   {
     vtkErrorMacro("Cannot encode the tree: " << error << ".");
     this->SetErrorCode(vtkErrorCode::UnknownError);
@@ -79,6 +137,7 @@ void vtkFoldingTreeCompactWriter::PrintSelf(ostream& os, vtkIndent indent)
   this->Superclass::PrintSelf(os, indent);
   os << indent << "FileName: " << (this->FileName ? this->FileName : "(none)") << "\n";
   os << indent << "QuantizationBits: " << this->QuantizationBits << "\n";
+  os << indent << "StoreUserArrays: " << this->StoreUserArrays << "\n";
   os << indent << "WriteToOutputString: " << this->WriteToOutputString << "\n";
   os << indent << "BytesWritten: " << this->BytesWritten << "\n";
   os << indent << "QuantizationBitsUsed: " << this->QuantizationBitsUsed << "\n";

@@ -11,9 +11,10 @@
  * root epsilon (the proved bound) with quantisation included. The layout is documented in
  * Core/CompactTreeFormat.h. Read it with vtkFoldingTreeCompactReader.
  *
- * What the user gives up against the .vtm: user point and cell arrays, the input ids of stored
- * points and faces (the unfolded mesh's OriginalPointId / OriginalFaceId are running numbers),
- * the nodes' face lists and detection statistics, and the input's border / non-manifold edge
+ * What the user gives up against the .vtm: user point and cell arrays unless StoreUserArrays is
+ * on, the input ids of stored points and faces (the unfolded mesh's OriginalPointId /
+ * OriginalFaceId are running numbers), the nodes' face lists and detection statistics, the
+ * input's field data and active-attribute records, and the input's border / non-manifold edge
  * lists (the unfolder then relies on the points' input-border flags alone).
  *
  * An invalid tree or a file that cannot be written is reported with vtkErrorMacro and the
@@ -53,6 +54,18 @@ public:
   ///@}
 
   ///@{
+  /**
+   * Also store the leaves' user point and cell arrays (those present in every leaf, numeric),
+   * losslessly, so that they survive unfolding as from a .vtm. Default off: the arrays are
+   * stored raw (zlib) and the geometry is then coded in the leaves' order (Draco's sequential
+   * coding), both larger.
+   */
+  vtkSetMacro(StoreUserArrays, bool);
+  vtkGetMacro(StoreUserArrays, bool);
+  vtkBooleanMacro(StoreUserArrays, bool);
+  ///@}
+
+  ///@{
   /** Write to OutputString instead of FileName (for Python and tests). Default off. */
   vtkSetMacro(WriteToOutputString, bool);
   vtkGetMacro(WriteToOutputString, bool);
@@ -77,6 +90,7 @@ protected:
 
   char* FileName = nullptr;
   int QuantizationBits = 0;
+  bool StoreUserArrays = false;
   bool WriteToOutputString = false;
   std::string OutputString;
   vtkIdType BytesWritten = 0;

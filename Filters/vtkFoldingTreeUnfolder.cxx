@@ -57,62 +57,6 @@ void AddValue(vtkFieldData* fd, const char* name, double value)
   fd->AddArray(a);
 }
 
-/// The builder's arrays in the leaves (read by the unfolder, not carried to the output).
-bool IsTreeArray(const char* name, bool points)
-{
-  const std::vector<std::string>& names =
-    points ? foldingmeshes::LeafPointArrayNames() : foldingmeshes::LeafCellArrayNames();
-  return std::find(names.begin(), names.end(), name) != names.end();
-}
-
-/// Names of the arrays present in every leaf with the same type, components and size;
-/// `unnamed` counts the first leaf's unnamed arrays (not carried: nothing matches them).
-std::vector<std::string> CommonArrays(const std::vector<vtkPolyData*>& leaves,
-  bool points,
-  int& unnamed)
-{
-  std::vector<std::string> names;
-  unnamed = 0;
-  vtkPolyData* first = nullptr;
-  for (vtkPolyData* leaf : leaves)
-    if (leaf && !first)
-      first = leaf;
-  if (!first)
-    return names;
-  auto attributes = [points](vtkPolyData* pd) -> vtkDataSetAttributes*
-  {
-    return points ? static_cast<vtkDataSetAttributes*>(pd->GetPointData())
-                  : static_cast<vtkDataSetAttributes*>(pd->GetCellData());
-  };
-  vtkDataSetAttributes* reference = attributes(first);
-  for (int a = 0; a < reference->GetNumberOfArrays(); ++a)
-  {
-    vtkAbstractArray* ref = reference->GetAbstractArray(a);
-    if (ref && (!ref->GetName() || !ref->GetName()[0]))
-      ++unnamed;
-    if (!ref || !ref->GetName() || !ref->GetName()[0] || IsTreeArray(ref->GetName(), points))
-      continue;
-    bool everywhere = true;
-    for (vtkPolyData* leaf : leaves)
-    {
-      if (!leaf)
-        continue;
-      vtkAbstractArray* other = attributes(leaf)->GetAbstractArray(ref->GetName());
-      const vtkIdType n = points ? leaf->GetNumberOfPoints() : leaf->GetNumberOfCells();
-      if (!other || other->GetDataType() != ref->GetDataType() ||
-        other->GetNumberOfComponents() != ref->GetNumberOfComponents() ||
-        other->GetNumberOfTuples() != n)
-      {
-        everywhere = false;
-        break;
-      }
-    }
-    if (everywhere)
-      names.emplace_back(ref->GetName());
-  }
-  return names;
-}
-
 /// Fills `out` (a vtkDataSetAttributes of n tuples) with the arrays `names` of the leaves
 /// (leaf name, output name): tuple i comes from leaf leafOf[i], local tuple localOf[i]; vectors are
 /// mapped by the linear map of copy copyOf[i].
@@ -460,7 +404,8 @@ int vtkFoldingTreeUnfolder::RequestWholeData(vtkInformation*,
   {
     const std::vector<std::string>& own =
       points ? foldingmeshes::UnfoldedPointArrayNames() : foldingmeshes::UnfoldedCellArrayNames();
-    const std::vector<std::string> names = CommonArrays(leaves, points != 0, unnamed[points]);
+    const std::vector<std::string> names =
+      foldingmeshes::CommonLeafArrays(leaves, points != 0, unnamed[points]);
     for (const std::string& name : names)
     {
       std::string as = name;

@@ -140,7 +140,10 @@ bool EncodeLeafGeometry(const std::vector<LeafToEncode>& leaves,
     faces[l] = leaves[l].mesh->NumberOfFaces();
   // Edgebreaker first (the small one); it may drop faces it finds degenerate or split a
   // leaf's non-manifold vertices, so the result is decoded and its faces counted per leaf.
-  for (const int method : { draco::MESH_EDGEBREAKER_ENCODING, draco::MESH_SEQUENTIAL_ENCODING })
+  std::vector<int> methods{ draco::MESH_EDGEBREAKER_ENCODING, draco::MESH_SEQUENTIAL_ENCODING };
+  if (coding.keepOrder)
+    methods.erase(methods.begin());
+  for (const int method : methods)
   {
     draco::Encoder encoder;
     encoder.SetSpeedOptions(dracoSpeed, dracoSpeed);
@@ -162,14 +165,18 @@ bool EncodeLeafGeometry(const std::vector<LeafToEncode>& leaves,
       continue;
     bool same = true;
     for (size_t l = 0; l < leaves.size() && same; ++l)
-      same = static_cast<int>(check[l].triangles.size()) == faces[l];
+      same = static_cast<int>(check[l].triangles.size()) == faces[l] &&
+        (!coding.keepOrder ||
+          (check[l].triangles == leaves[l].mesh->triangles &&
+            check[l].points.size() == leaves[l].mesh->points.size()));
     if (same)
     {
       out.assign(buffer.data(), buffer.size());
       return true;
     }
   }
-  error = "Draco does not keep every stored triangle of the leaves";
+  error = coding.keepOrder ? "Draco does not keep the order of the leaves' points and triangles"
+                           : "Draco does not keep every stored triangle of the leaves";
   return false;
 }
 

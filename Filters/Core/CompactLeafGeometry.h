@@ -17,6 +17,9 @@ struct LeafGeometryCoding
   Vec3 origin = Vec3::Zero(); ///< grid corner (the stored points' bounding box minimum)
   double range = 1.0;         ///< grid extent (the bounding box's largest side, > 0)
   int bits = 11;              ///< quantisation bits per coordinate
+  /// Keep every leaf's point and triangle order (Draco's sequential coding, larger): needed
+  /// when per-point / per-triangle data is stored beside the geometry in that order.
+  bool keepOrder = false;
 
   /// The largest distance between a point and its decoded position (grid half-step in 3D plus
   /// single-precision rounding).
@@ -40,7 +43,8 @@ struct DecodedLeaf
 
 /**
  * Encodes the leaves as one Draco mesh (edgebreaker; sequential coding when edgebreaker would
- * drop or add faces, checked by decoding). False with `error` when Draco fails.
+ * drop or add faces, checked by decoding; sequential only with coding.keepOrder, checked to
+ * give back every triangle in order). False with `error` when Draco fails.
  */
 bool EncodeLeafGeometry(const std::vector<LeafToEncode>& leaves,
   const LeafGeometryCoding& coding,

@@ -126,7 +126,7 @@ std::string Inflate(const char* data, size_t size, size_t rawSize)
   if (uncompress(reinterpret_cast<Bytef*>(&out[0]), &got, reinterpret_cast<const Bytef*>(data),
         static_cast<uLong>(size)) != Z_OK ||
     got != rawSize)
-    throw CompactFormatError("tree section: zlib cannot inflate it");
+    throw CompactFormatError("zlib cannot inflate a section");
   return out;
 }
 
@@ -444,6 +444,80 @@ void AttachLeaves(FoldingTree& tree,
       });
   }
 }
+/// The leaves' point / triangle counts, in preorder.
+std::vector<std::pair<size_t, size_t>> LeafSizes(const FoldingTree& tree)
+{
+  std::vector<std::pair<size_t, size_t>> sizes;
+  for (const FoldingNode& node : tree.nodes)
+    if (node.kind == FoldingNodeKind::Leaf)
+      sizes.emplace_back(node.mesh.points.size(), node.mesh.triangles.size());
+  return sizes;
+}
+
+size_t ArrayLeafBytes(const CompactArray& a, const std::pair<size_t, size_t>& leaf)
+{
+  return (a.perTriangle ? leaf.second : leaf.first) * static_cast<size_t>(a.components) *
+    static_cast<size_t>(a.elementSize);
+}
+
+std::string CheckArrays(const std::vector<CompactArray>& arrays, const FoldingTree& tree)
+{
+  const auto sizes = LeafSizes(tree);
+  for (const CompactArray& a : arrays)
+  {
+    if (a.name.empty() || a.components < 1 || a.components > 1024 ||
+      (a.elementSize != 1 && a.elementSize != 2 && a.elementSize != 4 && a.elementSize != 8))
+      return "array '" + a.name + "': invalid name, components or element size";
+    if (a.leaves.size() != sizes.size())
+      return "array '" + a.name + "': not one value block per leaf";
+    for (size_t l = 0; l < sizes.size(); ++l)
+      if (a.leaves[l].size() != ArrayLeafBytes(a, sizes[l]))
+        return "array '" + a.name + "': a leaf's values do not match its points or triangles";
+  }
+  return std::string();
+}
+
+void WriteArrays(const std::vector<CompactArray>& arrays, ByteWriter& w)
+{
+  w.VarUInt(arrays.size());
+  for (const CompactArray& a : arrays)
+  {
+    w.VarUInt(a.name.size());
+    w.Raw(a.name);
+    w.U8(a.perTriangle ? 1 : 0);
+    w.VarUInt(static_cast<uint64_t>(a.dataType));
+    w.VarUInt(static_cast<uint64_t>(a.components));
+    w.U8(static_cast<uint8_t>(a.elementSize));
+    for (const std::string& values : a.leaves)
+      w.Raw(values);
+  }
+}
+
+std::vector<CompactArray> ReadArrays(ByteReader& r, const FoldingTree& tree)
+{
+  const auto sizes = LeafSizes(tree);
+  std::vector<CompactArray> arrays(r.Count(r.Remaining(), "arrays"));
+  for (CompactArray& a : arrays)
+  {
+    const size_t length = r.Count(r.Remaining(), "array name length");
+    a.name.assign(r.Take(length), length);
+    a.perTriangle = r.U8() != 0;
+    a.dataType = static_cast<int>(r.Count(1 << 20, "array type"));
+    a.components = static_cast<int>(r.Count(1024, "array components"));
+    a.elementSize = r.U8();
+    if (a.components < 1 || (a.elementSize != 1 && a.elementSize != 2 && a.elementSize != 4 &&
+                               a.elementSize != 8))
+      throw CompactFormatError("arrays section: invalid components or element size");
+    for (const auto& leaf : sizes)
+    {
+      const size_t bytes = ArrayLeafBytes(a, leaf);
+      a.leaves.emplace_back(r.Take(bytes), bytes);
+    }
+  }
+  if (r.Remaining() != 0)
+    throw CompactFormatError("arrays section: unexpected bytes after its end");
+  return arrays;
+}
 }
 
 bool LooksLikeCompactTree(const std::string& bytes)
@@ -455,7 +529,8 @@ bool EncodeCompactTree(const FoldingTree& tree,
   const CompactTreeOptions& options,
   std::string& bytes,
   CompactTreeStats* stats,
-  std::string& error)
+  std::string& error,
+  const std::vector<CompactArray>* arrays)
 {
   error = tree.Validate();
   if (!error.empty())
@@ -477,7 +552,15 @@ bool EncodeCompactTree(const FoldingTree& tree,
       lo = lo.cwiseMin(p);
       hi = hi.cwiseMax(p);
     }
+  const bool withArrays = arrays && !arrays->empty();
+  if (withArrays)
+  {
+    error = CheckArrays(*arrays, tree);
+    if (!error.empty())
+      return false;
+  }
   LeafGeometryCoding coding;
+  coding.keepOrder = withArrays;
   coding.origin = lo;
   coding.range = std::max((hi - lo).maxCoeff(), 1e-9 * tree.diagonal);
   coding.bits = ChooseBits(tree, coding, options.quantizationBits);
@@ -507,13 +590,23 @@ bool EncodeCompactTree(const FoldingTree& tree,
   file.Raw(std::string(Magic, 4));
   file.U8(static_cast<uint8_t>(CompactTreeFormatVersion & 0xff));
   file.U8(static_cast<uint8_t>(CompactTreeFormatVersion >> 8));
-  file.U8(0);
+  file.U8(withArrays ? 1 : 0); // flags: bit 0 = arrays section
   file.U8(0);
   file.U32(static_cast<uint32_t>(packed.size()));
   file.U32(static_cast<uint32_t>(section.Bytes.size()));
   file.Raw(packed);
   file.U32(static_cast<uint32_t>(geometry.size()));
   file.Raw(geometry);
+  std::string packedArrays;
+  if (withArrays)
+  {
+    ByteWriter values;
+    WriteArrays(*arrays, values);
+    packedArrays = Deflate(values.Bytes);
+    file.U32(static_cast<uint32_t>(packedArrays.size()));
+    file.U32(static_cast<uint32_t>(values.Bytes.size()));
+    file.Raw(packedArrays);
+  }
   file.U32(Crc(file.Bytes.data(), file.Bytes.size()));
   bytes = std::move(file.Bytes);
   if (stats)
@@ -521,6 +614,7 @@ bool EncodeCompactTree(const FoldingTree& tree,
     stats->bytes = bytes.size();
     stats->treeSectionBytes = packed.size();
     stats->geometryBytes = geometry.size();
+    stats->arrayBytes = packedArrays.size();
     stats->quantizationBits = coding.bits;
     stats->quantizationError = quantizationError;
     stats->points = tree.StoredPoints();
@@ -532,8 +626,11 @@ bool EncodeCompactTree(const FoldingTree& tree,
 bool DecodeCompactTree(const std::string& bytes,
   FoldingTree& tree,
   std::string& error,
-  double* quantizationError)
+  double* quantizationError,
+  std::vector<CompactArray>* arrays)
 {
+  if (arrays)
+    arrays->clear();
   tree = FoldingTree();
   try
   {
@@ -546,7 +643,10 @@ bool DecodeCompactTree(const std::string& bytes,
       throw CompactFormatError("format version " + std::to_string(version) +
         " is not supported (this reader reads version " +
         std::to_string(CompactTreeFormatVersion) + ")");
-    header.Take(2);
+    const uint8_t flags = header.U8();
+    header.Take(1);
+    if (flags & ~1)
+      throw CompactFormatError("unknown flags in the header");
     if (bytes.size() < HeaderBytes + 8)
       throw CompactFormatError("truncated");
     ByteReader tail(bytes.data() + bytes.size() - 4, 4, "checksum");
@@ -558,8 +658,16 @@ bool DecodeCompactTree(const std::string& bytes,
     const std::string raw = Inflate(header.Take(packedSize), packedSize, rawSize);
     const uint32_t geometrySize = header.U32();
     const char* geometry = header.Take(geometrySize);
+    std::string rawArrays;
+    if (flags & 1)
+    {
+      const uint32_t packedArrays = header.U32(), rawArraysSize = header.U32();
+      if (rawArraysSize > 1100 * (static_cast<uint64_t>(packedArrays) + 64))
+        throw CompactFormatError("arrays section: implausible size");
+      rawArrays = Inflate(header.Take(packedArrays), packedArrays, rawArraysSize);
+    }
     if (header.Remaining() != 4)
-      throw CompactFormatError("unexpected bytes after the geometry section");
+      throw CompactFormatError("unexpected bytes after the last section");
 
     ByteReader section(raw.data(), raw.size(), "tree section");
     LeafGeometryCoding coding;
@@ -571,6 +679,13 @@ bool DecodeCompactTree(const std::string& bytes,
           geometry, geometrySize, coding, static_cast<int>(leaves.size()), decoded, error))
       throw CompactFormatError(error);
     AttachLeaves(tree, decoded, leaves, palette);
+    if (flags & 1)
+    {
+      ByteReader arraySection(rawArrays.data(), rawArrays.size(), "arrays section");
+      std::vector<CompactArray> read = ReadArrays(arraySection, tree);
+      if (arrays)
+        *arrays = std::move(read);
+    }
     if (quantizationError)
       *quantizationError = coding.QuantizationError() + PlaneError(tree);
   }
@@ -578,6 +693,8 @@ bool DecodeCompactTree(const std::string& bytes,
   {
     error = e.what();
     tree = FoldingTree();
+    if (arrays)
+      arrays->clear();
     return false;
   }
   const std::string invalid = tree.Validate();
@@ -585,6 +702,8 @@ bool DecodeCompactTree(const std::string& bytes,
   {
     error = "the decoded tree is invalid: " + invalid;
     tree = FoldingTree();
+    if (arrays)
+      arrays->clear();
     return false;
   }
   return true;

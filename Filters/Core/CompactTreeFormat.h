@@ -3,7 +3,7 @@
 //
 //   offset 0   4 bytes  magic "FMZ" 0x1a
 //          4   u16      format version (CompactTreeFormatVersion); readers reject others
-//          6   u16      reserved flags (0)
+//          6   u16      flags: bit 0 = an arrays section follows the geometry section
 //          8   u32      size T of the zlib-compressed tree section, u32 its raw size
 //         16   T bytes  tree section (zlib): counts, lengths, quantisation, nodes in preorder
 //                       (kind, leaf reason, children, epsilon / root epsilon, fold planes),
@@ -11,7 +11,11 @@
 //     16 + T   u32      size D of the Draco section, then D bytes: one Draco mesh of every
 //                       leaf (positions; per point: leaf, flags, tear / plane masks, error
 //                       budget, mirrored-flag group), faces of each leaf oriented as stored
-//   16+T+4+D   u32      CRC-32 (zlib) of every byte before it
+//   16+T+4+D            with flag bit 0: u32 size A of the zlib-compressed arrays section, u32
+//                       its raw size, A bytes: user arrays of the leaves (CompactArray), each
+//                       as raw values in the leaves' point / triangle order (the geometry is
+//                       then coded sequentially, which keeps that order)
+//   end - 4    u32      CRC-32 (zlib) of every byte before it
 //
 // The tree section is documented field by field in CompactTreeFormat.cxx (WriteTreeSection).
 // Positions are quantised on a grid over the stored points' bounding box; the largest move a
@@ -21,13 +25,14 @@
 //
 // Not stored (the unfolder does not need them): the input ids of stored points and faces (the
 // decoder numbers the stored points and faces 0..n-1), the input's border / non-manifold edge
-// lists, the nodes' face lists and detection statistics, user arrays.
+// lists, the nodes' face lists and detection statistics; user arrays only when given.
 #ifndef foldingmeshes_CompactTreeFormat_h
 #define foldingmeshes_CompactTreeFormat_h
 
 #include "FoldingTree.h"
 
 #include <string>
+#include <vector>
 
 namespace foldingmeshes
 {
@@ -44,12 +49,27 @@ struct CompactTreeOptions
   int dracoSpeed = 3;
 };
 
+/**
+ * A user array of the leaves, opaque to the format: `dataType` and `elementSize` are the
+ * caller's (VTK's type id and its size), values raw in the machine's byte order (little-endian).
+ */
+struct CompactArray
+{
+  std::string name;
+  bool perTriangle = false; ///< else per point
+  int dataType = 0;
+  int components = 1;
+  int elementSize = 4;              ///< bytes of one component (1, 2, 4 or 8)
+  std::vector<std::string> leaves; ///< per leaf (preorder): its points' or triangles' values
+};
+
 /// What an encoding made (sizes in bytes).
 struct CompactTreeStats
 {
   size_t bytes = 0;             ///< the whole file
   size_t treeSectionBytes = 0;  ///< compressed tree section
   size_t geometryBytes = 0;     ///< Draco section
+  size_t arrayBytes = 0;        ///< compressed arrays section (0: none)
   int quantizationBits = 0;     ///< the bits used
   double quantizationError = 0; ///< largest distance a stored point can move (a length)
   int points = 0;               ///< stored points
@@ -57,14 +77,16 @@ struct CompactTreeStats
 };
 
 /**
- * Encodes `tree` (which must pass FoldingTree::Validate) into `bytes`. False with `error` for an
- * invalid tree or options.
+ * Encodes `tree` (which must pass FoldingTree::Validate) into `bytes`, with `arrays` (optional,
+ * may be empty: then no arrays section) sized for the tree's leaves. False with `error` for an
+ * invalid tree, options or arrays.
  */
 bool EncodeCompactTree(const FoldingTree& tree,
   const CompactTreeOptions& options,
   std::string& bytes,
   CompactTreeStats* stats,
-  std::string& error);
+  std::string& error,
+  const std::vector<CompactArray>* arrays = nullptr);
 
 /**
  * Decodes a file written by EncodeCompactTree. False with a description of the first problem
@@ -75,7 +97,8 @@ bool EncodeCompactTree(const FoldingTree& tree,
 bool DecodeCompactTree(const std::string& bytes,
   FoldingTree& tree,
   std::string& error,
-  double* quantizationError = nullptr);
+  double* quantizationError = nullptr,
+  std::vector<CompactArray>* arrays = nullptr);
 
 /// True when `bytes` starts with the compact tree file's magic number.
 bool LooksLikeCompactTree(const std::string& bytes);

@@ -5,8 +5,9 @@ A sphere folded by foldingmeshes.vtkFoldingTreeBuilder is written with
 vtkFoldingTreeCompactWriter (smaller than the .vtm of the same tree, the bits and quantisation
 error reported), read back with vtkFoldingTreeCompactReader (QuantizationError in the "Tree"
 block) and unfolded: the same number of stored triangles, the unfolded mesh within the root
-epsilon of the sphere (vtkFoldingTreeUnfolder's proved HausdorffToOriginalBound). A file that
-is not a .fmz gives an error and an empty output.
+epsilon of the sphere (vtkFoldingTreeUnfolder's proved HausdorffToOriginalBound). User arrays
+come back (exactly in the leaves) only with StoreUserArrays. A file that is not a .fmz gives an
+error and an empty output.
 
 Run with /usr/bin/python3 and PYTHONPATH=<build>/lib/python3/dist-packages:
     TestCompactTreePython.py TEMP_DIR
@@ -15,10 +16,15 @@ Run with /usr/bin/python3 and PYTHONPATH=<build>/lib/python3/dist-packages:
 import os
 import sys
 
+from vtkmodules.vtkFiltersCore import vtkElevationFilter
 from vtkmodules.vtkFiltersSources import vtkSphereSource
+try:
+    from vtkmodules.vtkFiltersCore import vtkGenerateIds
+except ImportError:  # VTK < 9.3
+    from vtkmodules.vtkFiltersCore import vtkIdFilter as vtkGenerateIds
 from vtkmodules.vtkIOXML import vtkXMLMultiBlockDataWriter
 
-from foldingmeshes import (vtkFoldingTreeBuilder, vtkFoldingTreeCompactReader,
+from foldingmeshes import (vtkExpatSafeXMLMultiBlockDataReader, vtkFoldingTreeBuilder, vtkFoldingTreeCompactReader,
                            vtkFoldingTreeCompactWriter, vtkFoldingTreeUnfolder)
 
 failures = []
@@ -28,6 +34,19 @@ def check(condition, message):
     print(("ok:   " if condition else "FAIL: ") + message)
     if not condition:
         failures.append(message)
+
+
+def leaves_of(tree):
+    """The non-empty vtkPolyData blocks of a tree, in traversal order."""
+    iterator = tree.NewTreeIterator()
+    iterator.InitTraversal()
+    blocks = []
+    while not iterator.IsDoneWithTraversal():
+        data = iterator.GetCurrentDataObject()
+        if data is not None and data.IsA("vtkPolyData") and data.GetNumberOfCells() > 0:
+            blocks.append(data)
+        iterator.GoToNextItem()
+    return blocks
 
 
 def field(data, name):
@@ -66,6 +85,16 @@ def main(temp_dir):
     check(os.path.getsize(fmz) * 5 < vtm_bytes,
           ".fmz %d bytes, the .vtm tree %d" % (os.path.getsize(fmz), vtm_bytes))
 
+    # .vtm -> .fmz: the tree read back from the .vtm gives the same bytes.
+    vtm_reader = vtkExpatSafeXMLMultiBlockDataReader()
+    vtm_reader.SetFileName(vtm)
+    from_vtm = vtkFoldingTreeCompactWriter()
+    from_vtm.SetInputConnection(vtm_reader.GetOutputPort())
+    from_vtm.WriteToOutputStringOn()
+    from_vtm.Write()
+    check(from_vtm.GetBytesWritten() == os.path.getsize(fmz),
+          ".vtm -> .fmz: %d bytes, as from the builder" % from_vtm.GetBytesWritten())
+
     reader = vtkFoldingTreeCompactReader()
     check(vtkFoldingTreeCompactReader.CanReadFile(fmz) == 1, "CanReadFile(.fmz)")
     check(vtkFoldingTreeCompactReader.CanReadFile(vtm) == 0, "not CanReadFile(.vtm)")
@@ -85,6 +114,80 @@ def main(temp_dir):
     epsilon = field(info, "RootEpsilon") if info is not None else None
     check(bound is not None and epsilon is not None and bound <= epsilon,
           "unfolded within the root epsilon: proved Hausdorff %s, epsilon %s" % (bound, epsilon))
+
+    # .fmz -> .vtm: the read tree saved as .vtm unfolds to the same mesh.
+    back_vtm = os.path.join(temp_dir, "TestCompactTreePython_back.vtm")
+    back_writer = vtkXMLMultiBlockDataWriter()
+    back_writer.SetInputConnection(reader.GetOutputPort())
+    back_writer.SetDataModeToBinary()
+    back_writer.SetFileName(back_vtm)
+    back_writer.Write()
+    back_reader = vtkExpatSafeXMLMultiBlockDataReader()
+    back_reader.SetFileName(back_vtm)
+    back_unfolder = vtkFoldingTreeUnfolder()
+    back_unfolder.SetInputConnection(back_reader.GetOutputPort())
+    back_unfolder.Update()
+    back = back_unfolder.GetOutput()
+    check(back.GetNumberOfCells() == mesh.GetNumberOfCells() and
+          back.GetNumberOfPoints() == mesh.GetNumberOfPoints() and
+          all(back.GetPoint(i) == mesh.GetPoint(i) for i in range(back.GetNumberOfPoints())),
+          ".fmz -> .vtm unfolds to the same mesh (%d cells)" % back.GetNumberOfCells())
+
+    # User arrays: dropped by default, kept with StoreUserArrays (values exact, as from the
+    # .vtm: the unfolder carries them), at the cost of a larger file.
+    elevation = vtkElevationFilter()
+    elevation.SetInputConnection(sphere.GetOutputPort())
+    cell_ids = vtkGenerateIds()
+    cell_ids.SetInputConnection(elevation.GetOutputPort())
+    cell_ids.PointIdsOff()
+    cell_ids.CellIdsOn()
+    cell_ids.SetCellIdsArrayName("Patch")
+    builder.SetInputConnection(cell_ids.GetOutputPort())
+    builder.Update()
+    sizes = {}
+    for store in (False, True):
+        writer.SetStoreUserArrays(store)
+        writer.Write()
+        sizes[store] = os.path.getsize(fmz)
+        reader.Modified()
+        unfolder.SetOriginalData(None)
+        unfolder.Update()
+        out = unfolder.GetOutput()
+        elevation_out = out.GetPointData().GetArray("Elevation")
+        patch_out = out.GetCellData().GetArray("Patch")
+        if not store:
+            check(elevation_out is None and patch_out is None,
+                  "without StoreUserArrays: no user arrays (%d bytes)" % sizes[store])
+            continue
+        check(elevation_out is not None and patch_out is not None,
+              "with StoreUserArrays: Elevation and Patch come back (%d bytes)" % sizes[store])
+        # In the tree: every leaf's values exactly as the builder's tree has them.
+        same, compared = True, 0
+        for mine, theirs in zip(leaves_of(reader.GetOutput()), leaves_of(builder.GetOutputDataObject(0))):
+            for name, attrs in (("Elevation", lambda d: d.GetPointData()),
+                                ("Patch", lambda d: d.GetCellData())):
+                a, b = attrs(mine).GetArray(name), attrs(theirs).GetArray(name)
+                if b is None:  # not a leaf (a fold plane's glyph)
+                    continue
+                same = same and a is not None and \
+                    a.GetDataType() == b.GetDataType() and \
+                    a.GetNumberOfValues() == b.GetNumberOfValues() and \
+                    all(a.GetValue(i) == b.GetValue(i) for i in range(a.GetNumberOfValues()))
+                compared += 1
+        check(same and compared > 0, "with StoreUserArrays: the leaves' arrays are exact "
+              "(%d compared)" % compared)
+        # In the unfolded mesh: one tuple per point / cell, values from the input's.
+        ref_e = cell_ids.GetOutput().GetPointData().GetArray("Elevation").GetRange()
+        ref_p = cell_ids.GetOutput().GetCellData().GetArray("Patch").GetRange()
+        check(elevation_out is not None and patch_out is not None and
+              elevation_out.GetNumberOfTuples() == out.GetNumberOfPoints() and
+              patch_out.GetNumberOfTuples() == out.GetNumberOfCells() and
+              ref_e[0] <= elevation_out.GetRange()[0] <= elevation_out.GetRange()[1] <= ref_e[1]
+              and ref_p[0] <= patch_out.GetRange()[0] <= patch_out.GetRange()[1] <= ref_p[1],
+              "with StoreUserArrays: Elevation and Patch in the unfolded mesh, values from the "
+              "input's (%s, %s)" % (elevation_out.GetRange() if elevation_out else None,
+                                    patch_out.GetRange() if patch_out else None))
+    check(sizes[True] > sizes[False], "the arrays cost bytes: %d > %d" % (sizes[True], sizes[False]))
 
     bad = vtkFoldingTreeCompactReader()
     errors = []
