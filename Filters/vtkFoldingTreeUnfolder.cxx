@@ -1,5 +1,8 @@
 #include "vtkFoldingTreeUnfolder.h"
 
+#include "vtkAbstractCellLocator.h"
+#include "vtkCellLocatorFaceQuery.h"
+
 #include "Core/FoldingTreeUnfolder.h"
 #include "Core/SurfaceDistance.h"
 #include "vtkFoldingArrays.h"
@@ -39,6 +42,7 @@
 
 vtkStandardNewMacro(vtkFoldingTreeUnfolder);
 vtkCxxSetObjectMacro(vtkFoldingTreeUnfolder, Controller, vtkMultiProcessController);
+vtkCxxSetObjectMacro(vtkFoldingTreeUnfolder, Locator, vtkAbstractCellLocator);
 
 namespace
 {
@@ -130,6 +134,7 @@ vtkFoldingTreeUnfolder::vtkFoldingTreeUnfolder()
 vtkFoldingTreeUnfolder::~vtkFoldingTreeUnfolder()
 {
   this->SetController(nullptr);
+  this->SetLocator(nullptr);
 }
 
 //------------------------------------------------------------------------------
@@ -191,7 +196,11 @@ bool vtkFoldingTreeUnfolder::MeasureToOriginal(vtkPolyData* original, vtkPolyDat
   for (polys->InitTraversal(); polys->GetNextCell(n, pts);)
     unfolded.triangles.push_back(
       { static_cast<int>(pts[0]), static_cast<int>(pts[1]), static_cast<int>(pts[2]) });
-  const foldingmeshes::SurfaceComparison c = foldingmeshes::CompareSurfaces(unfolded, reference);
+  // Closest-face queries through a cell locator (vtkStaticCellLocator unless the user set one).
+  const foldingmeshes::ClosestFaceQueryFactory locator =
+    foldingmeshes::CellLocatorFaceQueryFactory(this->Locator);
+  const foldingmeshes::SurfaceComparison c =
+    foldingmeshes::CompareSurfaces(unfolded, reference, locator);
 
   vtkNew<vtkDoubleArray> distance;
   distance->SetName("DistanceToOriginal");
@@ -213,12 +222,17 @@ bool vtkFoldingTreeUnfolder::MeasureToOriginal(vtkPolyData* original, vtkPolyDat
   AddValue(fd, "MeanDistanceToOriginalRelative", diagonal > 0 ? c.mean / diagonal : 0.0);
   // Over every point of both surfaces, not only the samples: a proved upper bound.
   const foldingmeshes::HausdorffBounds proved =
-    foldingmeshes::SymmetricHausdorffBounds(unfolded, reference, BoundTolerance * diagonal);
+    foldingmeshes::SymmetricHausdorffBounds(unfolded, reference, BoundTolerance * diagonal,
+      foldingmeshes::DefaultMaximumEvaluations, 0.0, locator);
   if (!proved.converged)
     vtkWarningMacro("HausdorffToOriginalBound: the evaluation budget ran out before the bound "
                     "came within "
       << BoundTolerance << " of the diagonal; it is still an upper bound, only looser.");
   AddValue(fd, "HausdorffToOriginalBound", proved.upper);
+  vtkNew<vtkStringArray> locatorName;
+  locatorName->SetName("DistanceLocator");
+  locatorName->InsertNextValue(this->Locator ? this->Locator->GetClassName() : "vtkStaticCellLocator");
+  fd->AddArray(locatorName);
   AddValue(fd, "HausdorffToOriginalBoundRelative", diagonal > 0 ? proved.upper / diagonal : 0.0);
   this->HausdorffToOriginal = c.hausdorff;
   return true;
@@ -561,6 +575,7 @@ void vtkFoldingTreeUnfolder::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "Controller: " << this->Controller << "\n";
+  os << indent << "Locator: " << this->Locator << "\n";
   os << indent << "Stitch: " << this->Stitch << "\n";
   os << indent << "StitchToleranceScale: " << this->StitchToleranceScale << "\n";
   os << indent << "Zipper: " << this->Zipper << "\n";

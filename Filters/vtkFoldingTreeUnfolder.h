@@ -98,6 +98,7 @@
 #include "FoldingMeshesFiltersModule.h" // for export macro
 #include "vtkPolyDataAlgorithm.h"
 
+class vtkAbstractCellLocator;
 class vtkAlgorithmOutput;
 class vtkMultiProcessController;
 class vtkPolyData;
@@ -244,6 +245,19 @@ public:
   ///@}
 
   ///@{
+  /**
+   * The cell locator that answers the point-to-surface distance queries against the original
+   * (DistanceToOriginal, HausdorffToOriginal and the proved HausdorffToOriginalBound, both
+   * ways). nullptr (the default): a vtkStaticCellLocator. A locator set here is not used
+   * itself: a new instance of its class is built per surface (its settings are not copied);
+   * locators other than vtkStaticCellLocator are queried by one thread at a time. The field
+   * data "DistanceLocator" names the class used.
+   */
+  virtual void SetLocator(vtkAbstractCellLocator*);
+  vtkGetObjectMacro(Locator, vtkAbstractCellLocator);
+  ///@}
+
+  ///@{
   /** Results of the last run. */
   vtkGetMacro(OpenGapCount, int);
   vtkGetMacro(OpenGapLength, double);
@@ -296,6 +310,7 @@ protected:
   double HausdorffToOriginal = -1.0;
 
   vtkMultiProcessController* Controller = nullptr;
+  vtkAbstractCellLocator* Locator = nullptr;
 
 private:
   vtkFoldingTreeUnfolder(const vtkFoldingTreeUnfolder&) = delete;

@@ -200,6 +200,14 @@ bool DecodeLeafGeometry(const char* data,
 
   leaves.assign(static_cast<size_t>(numberOfLeaves), DecodedLeaf());
   const uint32_t points = mesh->num_points();
+  // Every point's values must exist (Draco's buffers are not bounds-checked when read).
+  for (const draco::PointAttribute* a : { position, leafAttribute, symbol })
+    for (uint32_t p = 0; p < points; ++p)
+      if (a->mapped_index(draco::PointIndex(p)).value() >= a->size())
+      {
+        error = "geometry section: a point without attribute values";
+        return false;
+      }
   std::vector<int> local(points);
   std::vector<uint32_t> leafOf(points);
   for (uint32_t p = 0; p < points; ++p)

@@ -113,20 +113,42 @@ std::string Deflate(const std::string& raw)
 {
   uLongf size = compressBound(static_cast<uLong>(raw.size()));
   std::string out(size, '\0');
-  compress2(reinterpret_cast<Bytef*>(&out[0]), &size, reinterpret_cast<const Bytef*>(raw.data()),
-    static_cast<uLong>(raw.size()), 9);
+  if (compress2(reinterpret_cast<Bytef*>(&out[0]), &size,
+        reinterpret_cast<const Bytef*>(raw.data()), static_cast<uLong>(raw.size()), 9) != Z_OK)
+    return std::string(); // the callers check: a deflated section is never empty
   out.resize(size);
   return out;
 }
 
+/// Inflates a section that must give exactly rawSize bytes; memory grows with what zlib
+/// really produces (a corrupt size cannot allocate more than the data inflates to).
 std::string Inflate(const char* data, size_t size, size_t rawSize)
 {
-  std::string out(rawSize, '\0');
-  uLongf got = static_cast<uLongf>(rawSize);
-  if (uncompress(reinterpret_cast<Bytef*>(&out[0]), &got, reinterpret_cast<const Bytef*>(data),
-        static_cast<uLong>(size)) != Z_OK ||
-    got != rawSize)
+  z_stream stream{};
+  if (inflateInit(&stream) != Z_OK)
     throw CompactFormatError("zlib cannot inflate a section");
+  stream.next_in = reinterpret_cast<Bytef*>(const_cast<char*>(data));
+  stream.avail_in = static_cast<uInt>(size);
+  std::string out;
+  int status = Z_OK;
+  char chunk[65536];
+  while (status == Z_OK)
+  {
+    stream.next_out = reinterpret_cast<Bytef*>(chunk);
+    stream.avail_out = sizeof(chunk);
+    status = inflate(&stream, Z_NO_FLUSH);
+    const size_t produced = sizeof(chunk) - stream.avail_out;
+    if ((status != Z_OK && status != Z_STREAM_END) || out.size() + produced > rawSize ||
+      (status == Z_OK && produced == 0 && stream.avail_in == 0))
+    {
+      inflateEnd(&stream);
+      throw CompactFormatError("zlib cannot inflate a section (corrupt or wrong size)");
+    }
+    out.append(chunk, produced);
+  }
+  inflateEnd(&stream);
+  if (out.size() != rawSize)
+    throw CompactFormatError("zlib cannot inflate a section (wrong size)");
   return out;
 }
 
@@ -155,7 +177,11 @@ constexpr double BudgetCodes = 65535.0;
 /// point of the leaf: it may move them less than the .vtm allows, never more).
 uint16_t LeafBudgetCode(const FoldingLeafMesh& m, double rootEpsilon, double quantizationError)
 {
-  const double smallest = *std::min_element(m.errorBudget.begin(), m.errorBudget.end());
+  // A leaf without budgets (an older tree) may move up to the root epsilon: store what is
+  // left of it, so that the quantisation stays inside the bound there too.
+  const double smallest = m.errorBudget.empty()
+    ? rootEpsilon
+    : *std::min_element(m.errorBudget.begin(), m.errorBudget.end());
   const double left = std::max(0.0, smallest - quantizationError);
   return static_cast<uint16_t>(std::min(BudgetCodes, std::floor(left / rootEpsilon * BudgetCodes)));
 }
@@ -242,12 +268,10 @@ void WriteTreeSection(const FoldingTree& tree,
     if (node.kind == FoldingNodeKind::Leaf)
     {
       const FoldingLeafMesh& m = node.mesh;
-      w.U8(static_cast<uint8_t>((m.errorBudget.empty() ? 0 : LeafHasBudget) |
-        (m.inputBoundary.empty() ? 0 : LeafHasInputBoundary)));
+      w.U8(static_cast<uint8_t>(LeafHasBudget | (m.inputBoundary.empty() ? 0 : LeafHasInputBoundary)));
       w.VarUInt(static_cast<uint64_t>(m.NumberOfPoints()));
       w.VarUInt(static_cast<uint64_t>(m.NumberOfFaces()));
-      if (!m.errorBudget.empty())
-        w.U16(LeafBudgetCode(m, tree.rootEpsilon, quantizationError));
+      w.U16(LeafBudgetCode(m, tree.rootEpsilon, quantizationError));
     }
   }
   // The palette of point data (PointData), the most frequent entry first.
@@ -296,7 +320,8 @@ void ReadTreeSection(ByteReader& r,
     coding.bits < 1 || coding.bits > 30 || !std::isfinite(tree.rootEpsilon))
     throw CompactFormatError("tree section: invalid geometry coding");
 
-  const size_t n = r.Count(std::min<uint64_t>(MaximumCount, r.Remaining()), "nodes");
+  // A node takes at least two bytes of the section.
+  const size_t n = r.Count(std::min<uint64_t>(MaximumCount, r.Remaining() / 2), "nodes");
   if (n == 0)
     throw CompactFormatError("tree section: no nodes");
   tree.nodes.assign(n, FoldingNode());
@@ -496,9 +521,13 @@ void WriteArrays(const std::vector<CompactArray>& arrays, ByteWriter& w)
 std::vector<CompactArray> ReadArrays(ByteReader& r, const FoldingTree& tree)
 {
   const auto sizes = LeafSizes(tree);
-  std::vector<CompactArray> arrays(r.Count(r.Remaining(), "arrays"));
-  for (CompactArray& a : arrays)
+  // An array record takes at least five bytes.
+  const size_t count = r.Count(r.Remaining() / 5, "arrays");
+  std::vector<CompactArray> arrays;
+  for (size_t k = 0; k < count; ++k)
   {
+    arrays.emplace_back();
+    CompactArray& a = arrays.back();
     const size_t length = r.Count(r.Remaining(), "array name length");
     a.name.assign(r.Take(length), length);
     a.perTriangle = r.U8() != 0;
@@ -585,7 +614,18 @@ bool EncodeCompactTree(const FoldingTree& tree,
   ByteWriter section;
   WriteTreeSection(tree, coding, quantizationError, palette, section);
   const std::string packed = Deflate(section.Bytes);
+  if (packed.empty())
+  {
+    error = "zlib cannot compress the tree section";
+    return false;
+  }
 
+  if (packed.size() > 0xffffffffu || section.Bytes.size() > 0xffffffffu ||
+    geometry.size() > 0xffffffffu)
+  {
+    error = "the tree is too large for the compact format (a section over 4 GB)";
+    return false;
+  }
   ByteWriter file;
   file.Raw(std::string(Magic, 4));
   file.U8(static_cast<uint8_t>(CompactTreeFormatVersion & 0xff));
@@ -603,6 +643,12 @@ bool EncodeCompactTree(const FoldingTree& tree,
     ByteWriter values;
     WriteArrays(*arrays, values);
     packedArrays = Deflate(values.Bytes);
+    if (packedArrays.empty() || packedArrays.size() > 0xffffffffu ||
+      values.Bytes.size() > 0xffffffffu)
+    {
+      error = "the arrays cannot be compressed into the compact format (over 4 GB?)";
+      return false;
+    }
     file.U32(static_cast<uint32_t>(packedArrays.size()));
     file.U32(static_cast<uint32_t>(values.Bytes.size()));
     file.Raw(packedArrays);
@@ -689,7 +735,7 @@ bool DecodeCompactTree(const std::string& bytes,
     if (quantizationError)
       *quantizationError = coding.QuantizationError() + PlaneError(tree);
   }
-  catch (const CompactFormatError& e)
+  catch (const std::exception& e) // CompactFormatError, and bad_alloc or length_error
   {
     error = e.what();
     tree = FoldingTree();

@@ -326,7 +326,8 @@ HausdorffBounds SymmetricHausdorffBounds(const TriangleMesh& a,
   const TriangleMesh& b,
   double tolerance,
   long long maxEvaluations,
-  double floor)
+  double floor,
+  const ClosestFaceQueryFactory& factory)
 {
   HausdorffBounds result;
   const bool aEmpty = a.triangles.empty(), bEmpty = b.triangles.empty();
@@ -335,7 +336,7 @@ HausdorffBounds SymmetricHausdorffBounds(const TriangleMesh& a,
     result.lower = result.upper = aEmpty && bEmpty ? 0.0 : std::numeric_limits<double>::infinity();
     return result;
   }
-  const SurfaceDistanceQuery toA(a), toB(b);
+  const SurfaceDistanceQuery toA(a, factory), toB(b, factory);
   // The second direction needs no bound below what the first one measured.
   const HausdorffBounds ab = DirectedHausdorffBounds(a, toB, tolerance, maxEvaluations, floor);
   const HausdorffBounds ba =

@@ -15,9 +15,19 @@ struct SurfaceDistanceQuery::Internal
 {
   PreparedMesh Mesh; // only what FaceTree reads: points, triangles, centroids, normals
   std::unique_ptr<FaceTree> Tree;
+  std::unique_ptr<ClosestFaceQuery> External; // the factory's query, when given
+
+  ClosestFaceHit Closest(const Vec3& p) const
+  {
+    if (this->External)
+      return this->External->Closest(p);
+    const FaceTree::Hit hit = this->Tree->ClosestFace(p, std::numeric_limits<double>::infinity());
+    return { hit.face, hit.distance };
+  }
 };
 
-SurfaceDistanceQuery::SurfaceDistanceQuery(const TriangleMesh& surface)
+SurfaceDistanceQuery::SurfaceDistanceQuery(
+  const TriangleMesh& surface, const ClosestFaceQueryFactory& factory)
   : Impl(new Internal)
 {
   PreparedMesh& m = this->Impl->Mesh;
@@ -32,14 +42,17 @@ SurfaceDistanceQuery::SurfaceDistanceQuery(const TriangleMesh& surface)
     m.faceCentroids[f] = (m.points[t[0]] + m.points[t[1]] + m.points[t[2]]) / 3.0;
   }
   m.vertexNormals.assign(m.points.size(), Vec3::Zero()); // no normal cones
-  this->Impl->Tree.reset(new FaceTree(m));
+  if (factory)
+    this->Impl->External = factory(surface);
+  if (!this->Impl->External)
+    this->Impl->Tree.reset(new FaceTree(m));
 }
 
 SurfaceDistanceQuery::~SurfaceDistanceQuery() = default;
 
 double SurfaceDistanceQuery::Distance(const Vec3& p) const
 {
-  return this->Impl->Tree->ClosestFace(p, std::numeric_limits<double>::infinity()).distance;
+  return this->Impl->Closest(p).distance;
 }
 
 std::vector<double> SurfaceDistanceQuery::Distances(const std::vector<Vec3>& points) const
@@ -67,8 +80,7 @@ void SurfaceDistanceQuery::Closest(const std::vector<Vec3>& points,
     {
       for (vtkIdType i = begin; i < end; ++i)
       {
-        const FaceTree::Hit hit =
-          this->Impl->Tree->ClosestFace(points[i], std::numeric_limits<double>::infinity());
+        const ClosestFaceHit hit = this->Impl->Closest(points[i]);
         distances[i] = hit.distance;
         faces[i] = hit.face;
       }
@@ -140,7 +152,8 @@ void OneWay(const TriangleMesh& from,
 }
 }
 
-SurfaceComparison CompareSurfaces(const TriangleMesh& a, const TriangleMesh& b)
+SurfaceComparison CompareSurfaces(
+  const TriangleMesh& a, const TriangleMesh& b, const ClosestFaceQueryFactory& factory)
 {
   SurfaceComparison result;
   const bool aEmpty = a.triangles.empty(), bEmpty = b.triangles.empty();
@@ -155,7 +168,7 @@ SurfaceComparison CompareSurfaces(const TriangleMesh& a, const TriangleMesh& b)
     result.hausdorff = result.mean = d;
     return result;
   }
-  const SurfaceDistanceQuery toA(a), toB(b);
+  const SurfaceDistanceQuery toA(a, factory), toB(b, factory);
   double sumA = 0.0, sumB = 0.0;
   int countA = 0, countB = 0;
   OneWay(a, toB, result.aPointDistances, result.aToB, sumA, countA);

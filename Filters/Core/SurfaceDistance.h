@@ -3,6 +3,7 @@
 #ifndef foldingmeshes_SurfaceDistance_h
 #define foldingmeshes_SurfaceDistance_h
 
+#include "ClosestFaceQuery.h"
 #include "TriangleMesh.h"
 
 #include <memory>
@@ -20,7 +21,10 @@ class FaceTree;
 class SurfaceDistanceQuery
 {
 public:
-  explicit SurfaceDistanceQuery(const TriangleMesh& surface);
+  /// With `factory`, the closest-face queries (Distance, Distances, Closest) go through the
+  /// query it makes (e.g. a VTK cell locator); without it, through the core's FaceTree.
+  explicit SurfaceDistanceQuery(
+    const TriangleMesh& surface, const ClosestFaceQueryFactory& factory = nullptr);
   ~SurfaceDistanceQuery();
   SurfaceDistanceQuery(const SurfaceDistanceQuery&) = delete;
   SurfaceDistanceQuery& operator=(const SurfaceDistanceQuery&) = delete;
@@ -70,7 +74,9 @@ struct SurfaceComparison
  * mean distance their mean. Empty surfaces give infinite distances (0 when both are empty).
  * Deterministic.
  */
-SurfaceComparison CompareSurfaces(const TriangleMesh& a, const TriangleMesh& b);
+SurfaceComparison CompareSurfaces(const TriangleMesh& a,
+  const TriangleMesh& b,
+  const ClosestFaceQueryFactory& factory = nullptr);
 
 /// Bounds on a Hausdorff distance over whole surfaces (see DirectedHausdorffBounds).
 struct HausdorffBounds
@@ -123,7 +129,8 @@ HausdorffBounds SymmetricHausdorffBounds(const TriangleMesh& a,
   const TriangleMesh& b,
   double tolerance,
   long long maxEvaluations = DefaultMaximumEvaluations,
-  double floor = 0.0);
+  double floor = 0.0,
+  const ClosestFaceQueryFactory& factory = nullptr);
 }
 
 #endif

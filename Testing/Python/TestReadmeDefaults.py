@@ -46,6 +46,8 @@ def parse_tables(text):
 
 def parse_default(text):
     text = text.strip()
+    if text.startswith("none"):  # an object property whose default is no object
+        return None
     if text == "on":
         return True
     if text == "off":
@@ -141,7 +143,9 @@ def main():
                 failures += 1
                 continue
             actual, documented = getter(), parse_default(default)
-            if isinstance(documented, tuple) or isinstance(actual, tuple):
+            if documented is None or actual is None:
+                ok = documented is None and actual is None
+            elif isinstance(documented, tuple) or isinstance(actual, tuple):
                 ok = (isinstance(documented, tuple) and isinstance(actual, tuple) and
                       len(actual) == len(documented) and
                       all(abs(a - d) <= 1e-12 for a, d in zip(actual, documented)))
