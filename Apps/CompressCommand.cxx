@@ -82,15 +82,24 @@ int Compress(int argc, char* argv[])
                 "  \"originalFaces\": %d,\n  \"storedFaces\": %d,\n  \"rootEpsilon\": %.9g,\n"
                 "  \"quantizationBits\": %d,\n  \"quantizationError\": %.9g,\n"
                 "  \"seconds\": %.3f\n}\n",
-      JsonString(f.meshPath).c_str(), JsonString(output).c_str(), bytes, original, stored,
-      epsilon, writer->GetQuantizationBitsUsed(), writer->GetQuantizationError(), seconds);
+      JsonString(f.meshPath).c_str(),
+      JsonString(output).c_str(),
+      bytes,
+      original,
+      stored,
+      epsilon,
+      writer->GetQuantizationBitsUsed(),
+      writer->GetQuantizationError(),
+      seconds);
   else
   {
     std::printf("mesh:                    %s\n", f.meshPath.c_str());
     std::printf("faces:                   %d original, %d stored\n", original, stored);
     std::printf("quantisation:            %d bits, points moved up to %.6g (root epsilon "
                 "%.6g, the bound it stays inside)\n",
-      writer->GetQuantizationBitsUsed(), writer->GetQuantizationError(), epsilon);
+      writer->GetQuantizationBitsUsed(),
+      writer->GetQuantizationError(),
+      epsilon);
     std::printf("time:                    %.3f s\n", seconds);
     std::printf("wrote:                   %s (%lld bytes)\n", output.c_str(), bytes);
   }

@@ -42,9 +42,9 @@ public:
       else
         this->Grid->InsertNextCell(VTK_TRIANGLE, 3, ids);
     }
-    this->Locator = prototype ? vtk::TakeSmartPointer(prototype->NewInstance())
-                              : vtkSmartPointer<vtkAbstractCellLocator>(
-                                  vtkSmartPointer<vtkStaticCellLocator>::New());
+    this->Locator = prototype
+      ? vtk::TakeSmartPointer(prototype->NewInstance())
+      : vtkSmartPointer<vtkAbstractCellLocator>(vtkSmartPointer<vtkStaticCellLocator>::New());
     this->Locator->SetDataSet(this->Grid);
     this->Locator->BuildLocator();
     this->ThreadSafe = vtkStaticCellLocator::SafeDownCast(this->Locator) != nullptr;

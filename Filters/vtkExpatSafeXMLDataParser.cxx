@@ -19,8 +19,8 @@ SetReparseDeferralEnabled LookUp()
   // expat mangles the names with a vtkexpat_ prefix: then that copy's function is the
   // one to call (another expat in the process, e.g. Python's, must not touch its parser).
   const bool bundled = dlsym(RTLD_DEFAULT, "vtkexpat_XML_ParserCreate") != nullptr;
-  return reinterpret_cast<SetReparseDeferralEnabled>(dlsym(
-    RTLD_DEFAULT, bundled ? "vtkexpat_XML_SetReparseDeferralEnabled" : "XML_SetReparseDeferralEnabled"));
+  return reinterpret_cast<SetReparseDeferralEnabled>(dlsym(RTLD_DEFAULT,
+    bundled ? "vtkexpat_XML_SetReparseDeferralEnabled" : "XML_SetReparseDeferralEnabled"));
 }
 
 SetReparseDeferralEnabled FindSetReparseDeferralEnabled()

@@ -1,7 +1,7 @@
 #include "vtkExpatSafeXMLMultiBlockDataReader.h"
 
-#include "vtkDataArraySelection.h"
 #include "vtkCommand.h"
+#include "vtkDataArraySelection.h"
 #include "vtkDataSet.h"
 #include "vtkEventForwarderCommand.h"
 #include "vtkExecutive.h"
@@ -34,8 +34,9 @@ void vtkExpatSafeXMLMultiBlockDataReader::CreateXMLParser()
   this->XMLParser = vtkExpatSafeXMLDataParser::New();
 }
 
-int vtkExpatSafeXMLMultiBlockDataReader::RequestInformation(
-  vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+int vtkExpatSafeXMLMultiBlockDataReader::RequestInformation(vtkInformation* request,
+  vtkInformationVector** inputVector,
+  vtkInformationVector* outputVector)
 {
   // vtkXMLMultiBlockDataReader::RequestInformation would fill the composite meta-data and
   // the array selections by reading each piece's header with a stock vtkXMLPolyDataReader,
@@ -43,14 +44,14 @@ int vtkExpatSafeXMLMultiBlockDataReader::RequestInformation(
   return this->vtkXMLCompositeDataReader::RequestInformation(request, inputVector, outputVector);
 }
 
-vtkDataSet* vtkExpatSafeXMLMultiBlockDataReader::ReadDataset(
-  vtkXMLDataElement* xmlElem, const char* filePath)
+vtkDataSet* vtkExpatSafeXMLMultiBlockDataReader::ReadDataset(vtkXMLDataElement* xmlElem,
+  const char* filePath)
 {
   return vtkDataSet::SafeDownCast(this->ReadDataObject(xmlElem, filePath));
 }
 
-vtkDataObject* vtkExpatSafeXMLMultiBlockDataReader::ReadDataObject(
-  vtkXMLDataElement* xmlElem, const char* filePath)
+vtkDataObject* vtkExpatSafeXMLMultiBlockDataReader::ReadDataObject(vtkXMLDataElement* xmlElem,
+  const char* filePath)
 {
   const std::string fileName = this->GetFileNameFromXML(xmlElem, filePath);
   const std::string extension = ".vtp";

@@ -72,13 +72,15 @@ bool AttachArrays(vtkMultiBlockDataSet* tree,
       }
       data->SetName(a.name.c_str());
       data->SetNumberOfComponents(a.components);
-      data->SetNumberOfTuples(a.perTriangle ? leaves[l]->GetNumberOfCells() : leaves[l]->GetNumberOfPoints());
+      data->SetNumberOfTuples(
+        a.perTriangle ? leaves[l]->GetNumberOfCells() : leaves[l]->GetNumberOfPoints());
       if (static_cast<size_t>(data->GetNumberOfValues()) * a.elementSize != a.leaves[l].size())
       {
         error = "array '" + a.name + "' does not fit a leaf";
         return false;
       }
-      std::copy(a.leaves[l].begin(), a.leaves[l].end(), static_cast<char*>(data->GetVoidPointer(0)));
+      std::copy(
+        a.leaves[l].begin(), a.leaves[l].end(), static_cast<char*>(data->GetVoidPointer(0)));
       if (a.perTriangle)
         leaves[l]->GetCellData()->AddArray(data);
       else
@@ -101,13 +103,13 @@ vtkFoldingTreeCompactReader::~vtkFoldingTreeCompactReader()
 int vtkFoldingTreeCompactReader::CanReadFile(const char* fileName)
 {
   std::string head;
-  return fileName && ReadBytes(fileName, head, 4) && foldingmeshes::LooksLikeCompactTree(head)
-    ? 1
-    : 0;
+  return fileName && ReadBytes(fileName, head, 4) && foldingmeshes::LooksLikeCompactTree(head) ? 1
+                                                                                               : 0;
 }
 
-int vtkFoldingTreeCompactReader::RequestData(
-  vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
+int vtkFoldingTreeCompactReader::RequestData(vtkInformation*,
+  vtkInformationVector**,
+  vtkInformationVector* outputVector)
 {
   this->ErrorCode = vtkErrorCode::NoError;
   vtkMultiBlockDataSet* output = vtkMultiBlockDataSet::GetData(outputVector, 0);

@@ -23,8 +23,8 @@ vtkStandardNewMacro(vtkFoldingTreeCompactWriter);
 namespace
 {
 /// The leaves' user arrays (vtkFoldingArrays.h: CommonLeafArrays), numeric ones, as raw values.
-std::vector<foldingmeshes::CompactArray> UserArrays(
-  const foldingmeshes::FoldingTree& tree, const std::vector<vtkPolyData*>& blocks)
+std::vector<foldingmeshes::CompactArray> UserArrays(const foldingmeshes::FoldingTree& tree,
+  const std::vector<vtkPolyData*>& blocks)
 {
   std::vector<vtkPolyData*> leaves;
   for (size_t i = 0; i < tree.nodes.size(); ++i)
@@ -44,8 +44,9 @@ std::vector<foldingmeshes::CompactArray> UserArrays(
       bool numeric = true;
       for (vtkPolyData* leaf : leaves)
       {
-        vtkDataSetAttributes* dsa = points ? static_cast<vtkDataSetAttributes*>(leaf->GetPointData())
-                                           : static_cast<vtkDataSetAttributes*>(leaf->GetCellData());
+        vtkDataSetAttributes* dsa = points
+          ? static_cast<vtkDataSetAttributes*>(leaf->GetPointData())
+          : static_cast<vtkDataSetAttributes*>(leaf->GetCellData());
         vtkDataArray* data = vtkDataArray::SafeDownCast(dsa->GetAbstractArray(name.c_str()));
         if (!data || data->GetDataTypeSize() < 1 || data->GetDataTypeSize() > 8 ||
           (!data->HasStandardMemoryLayout()))
@@ -106,8 +107,9 @@ void vtkFoldingTreeCompactWriter::WriteData()
   options.quantizationBits = this->QuantizationBits;
   foldingmeshes::CompactTreeStats stats;
   std::string bytes;
-  const std::vector<foldingmeshes::CompactArray> arrays =
-    this->StoreUserArrays ? UserArrays(tree, leafBlocks) : std::vector<foldingmeshes::CompactArray>();
+  const std::vector<foldingmeshes::CompactArray> arrays = this->StoreUserArrays
+    ? UserArrays(tree, leafBlocks)
+    : std::vector<foldingmeshes::CompactArray>();
   if (!foldingmeshes::EncodeCompactTree(tree, options, bytes, &stats, error, &arrays))
   {
     vtkErrorMacro("Cannot encode the tree: " << error << ".");

@@ -18,8 +18,8 @@ namespace
 enum AttributeId : uint32_t
 {
   PositionId = 0,
-  LeafId = 1,   // uint32: the leaf's ordinal among the tree's leaves (preorder)
-  SymbolId = 2  // uint32: the point's entry in the tree's palette of point data
+  LeafId = 1,  // uint32: the leaf's ordinal among the tree's leaves (preorder)
+  SymbolId = 2 // uint32: the point's entry in the tree's palette of point data
 };
 
 template <typename T>
@@ -30,8 +30,13 @@ int AddAttribute(draco::Mesh& mesh,
   uint32_t uniqueId)
 {
   draco::GeometryAttribute ga;
-  ga.Init(type, nullptr, static_cast<uint8_t>(components), dataType, false,
-    static_cast<int64_t>(sizeof(T)) * components, 0);
+  ga.Init(type,
+    nullptr,
+    static_cast<uint8_t>(components),
+    dataType,
+    false,
+    static_cast<int64_t>(sizeof(T)) * components,
+    0);
   const int id = mesh.AddAttribute(ga, true, mesh.num_points());
   mesh.attribute(id)->set_unique_id(uniqueId);
   return id;
@@ -45,8 +50,8 @@ std::unique_ptr<draco::Mesh> BuildMesh(const std::vector<LeafToEncode>& leaves,
   for (const LeafToEncode& leaf : leaves)
     points += static_cast<uint32_t>(leaf.mesh->NumberOfPoints());
   mesh->set_num_points(points);
-  const int position =
-    AddAttribute<float>(*mesh, draco::GeometryAttribute::POSITION, draco::DT_FLOAT32, 3, PositionId);
+  const int position = AddAttribute<float>(
+    *mesh, draco::GeometryAttribute::POSITION, draco::DT_FLOAT32, 3, PositionId);
   const int leafAttribute =
     AddAttribute<uint32_t>(*mesh, draco::GeometryAttribute::GENERIC, draco::DT_UINT32, 1, LeafId);
   const int symbol =
@@ -61,7 +66,8 @@ std::unique_ptr<draco::Mesh> BuildMesh(const std::vector<LeafToEncode>& leaves,
       const draco::AttributeValueIndex at(base + static_cast<uint32_t>(v));
       const Vec3 offset = m.points[v] - coding.origin;
       const std::array<float, 3> xyz{ static_cast<float>(offset.x()),
-        static_cast<float>(offset.y()), static_cast<float>(offset.z()) };
+        static_cast<float>(offset.y()),
+        static_cast<float>(offset.z()) };
       mesh->attribute(position)->SetAttributeValue(at, xyz.data());
       const uint32_t leafIndex = static_cast<uint32_t>(l);
       mesh->attribute(leafAttribute)->SetAttributeValue(at, &leafIndex);
@@ -160,8 +166,12 @@ bool EncodeLeafGeometry(const std::vector<LeafToEncode>& leaves,
     }
     std::vector<DecodedLeaf> check;
     std::string decodeError;
-    if (!DecodeLeafGeometry(buffer.data(), buffer.size(), coding,
-          static_cast<int>(leaves.size()), check, decodeError))
+    if (!DecodeLeafGeometry(buffer.data(),
+          buffer.size(),
+          coding,
+          static_cast<int>(leaves.size()),
+          check,
+          decodeError))
       continue;
     bool same = true;
     for (size_t l = 0; l < leaves.size() && same; ++l)
@@ -190,10 +200,8 @@ bool DecodeLeafGeometry(const char* data,
   std::unique_ptr<draco::Mesh> mesh;
   if (!Decode(data, size, mesh, error))
     return false;
-  const draco::PointAttribute* position =
-    Attribute(*mesh, PositionId, draco::DT_FLOAT32, 3, error);
-  const draco::PointAttribute* leafAttribute =
-    Attribute(*mesh, LeafId, draco::DT_UINT32, 1, error);
+  const draco::PointAttribute* position = Attribute(*mesh, PositionId, draco::DT_FLOAT32, 3, error);
+  const draco::PointAttribute* leafAttribute = Attribute(*mesh, LeafId, draco::DT_UINT32, 1, error);
   const draco::PointAttribute* symbol = Attribute(*mesh, SymbolId, draco::DT_UINT32, 1, error);
   if (!position || !leafAttribute || !symbol)
     return false;

@@ -77,10 +77,13 @@ Palette MakePalette(const FoldingTree& tree)
   std::vector<const std::pair<const PointData, std::pair<size_t, size_t>>*> byCount;
   for (const auto& e : seen)
     byCount.push_back(&e);
-  std::sort(byCount.begin(), byCount.end(), [](const auto* a, const auto* b) {
-    return a->second.first != b->second.first ? a->second.first > b->second.first
-                                              : a->second.second < b->second.second;
-  });
+  std::sort(byCount.begin(),
+    byCount.end(),
+    [](const auto* a, const auto* b)
+    {
+      return a->second.first != b->second.first ? a->second.first > b->second.first
+                                                : a->second.second < b->second.second;
+    });
   Palette palette;
   std::map<const PointData*, uint32_t> index;
   for (const auto* e : byCount)
@@ -113,8 +116,11 @@ std::string Deflate(const std::string& raw)
 {
   uLongf size = compressBound(static_cast<uLong>(raw.size()));
   std::string out(size, '\0');
-  if (compress2(reinterpret_cast<Bytef*>(&out[0]), &size,
-        reinterpret_cast<const Bytef*>(raw.data()), static_cast<uLong>(raw.size()), 9) != Z_OK)
+  if (compress2(reinterpret_cast<Bytef*>(&out[0]),
+        &size,
+        reinterpret_cast<const Bytef*>(raw.data()),
+        static_cast<uLong>(raw.size()),
+        9) != Z_OK)
     return std::string(); // the callers check: a deflated section is never empty
   out.resize(size);
   return out;
@@ -248,7 +254,8 @@ void WriteTreeSection(const FoldingTree& tree,
   for (size_t i = 0; i < tree.nodes.size(); ++i)
   {
     const FoldingNode& node = tree.nodes[i];
-    w.U8(static_cast<uint8_t>(static_cast<int>(node.kind) | (static_cast<int>(node.leafReason) << 2)));
+    w.U8(
+      static_cast<uint8_t>(static_cast<int>(node.kind) | (static_cast<int>(node.leafReason) << 2)));
     if (node.kind != FoldingNodeKind::Leaf)
       w.VarUInt(node.children.size());
     if (i > 0)
@@ -268,7 +275,8 @@ void WriteTreeSection(const FoldingTree& tree,
     if (node.kind == FoldingNodeKind::Leaf)
     {
       const FoldingLeafMesh& m = node.mesh;
-      w.U8(static_cast<uint8_t>(LeafHasBudget | (m.inputBoundary.empty() ? 0 : LeafHasInputBoundary)));
+      w.U8(
+        static_cast<uint8_t>(LeafHasBudget | (m.inputBoundary.empty() ? 0 : LeafHasInputBoundary)));
       w.VarUInt(static_cast<uint64_t>(m.NumberOfPoints()));
       w.VarUInt(static_cast<uint64_t>(m.NumberOfFaces()));
       w.U16(LeafBudgetCode(m, tree.rootEpsilon, quantizationError));
@@ -389,7 +397,8 @@ void ReadTreeSection(ByteReader& r,
   }
   if (!open.empty())
     throw CompactFormatError("tree section: fewer nodes than the children listed");
-  const size_t entries = r.Count(std::min<uint64_t>(MaximumCount, r.Remaining()), "palette entries");
+  const size_t entries =
+    r.Count(std::min<uint64_t>(MaximumCount, r.Remaining()), "palette entries");
   for (size_t e = 0; e < entries; ++e)
   {
     PointData d;
@@ -462,8 +471,10 @@ void AttachLeaves(FoldingTree& tree,
     m.originalFaceIds.resize(m.triangles.size());
     for (int& id : m.originalFaceIds)
       id = faceId++;
-    std::sort(m.mirroredFlags.begin(), m.mirroredFlags.end(),
-      [](const MirroredFlag& a, const MirroredFlag& b) {
+    std::sort(m.mirroredFlags.begin(),
+      m.mirroredFlags.end(),
+      [](const MirroredFlag& a, const MirroredFlag& b)
+      {
         return std::tie(a.point, a.level, a.flag, a.mirrorMask) <
           std::tie(b.point, b.level, b.flag, b.mirrorMask);
       });
@@ -534,8 +545,8 @@ std::vector<CompactArray> ReadArrays(ByteReader& r, const FoldingTree& tree)
     a.dataType = static_cast<int>(r.Count(1 << 20, "array type"));
     a.components = static_cast<int>(r.Count(1024, "array components"));
     a.elementSize = r.U8();
-    if (a.components < 1 || (a.elementSize != 1 && a.elementSize != 2 && a.elementSize != 4 &&
-                               a.elementSize != 8))
+    if (a.components < 1 ||
+      (a.elementSize != 1 && a.elementSize != 2 && a.elementSize != 4 && a.elementSize != 8))
       throw CompactFormatError("arrays section: invalid components or element size");
     for (const auto& leaf : sizes)
     {
@@ -687,8 +698,8 @@ bool DecodeCompactTree(const std::string& bytes,
     const int version = header.U8() | (header.U8() << 8);
     if (version != CompactTreeFormatVersion)
       throw CompactFormatError("format version " + std::to_string(version) +
-        " is not supported (this reader reads version " +
-        std::to_string(CompactTreeFormatVersion) + ")");
+        " is not supported (this reader reads version " + std::to_string(CompactTreeFormatVersion) +
+        ")");
     const uint8_t flags = header.U8();
     header.Take(1);
     if (flags & ~1)

@@ -59,7 +59,7 @@ struct CompactArray
   bool perTriangle = false; ///< else per point
   int dataType = 0;
   int components = 1;
-  int elementSize = 4;              ///< bytes of one component (1, 2, 4 or 8)
+  int elementSize = 4;             ///< bytes of one component (1, 2, 4 or 8)
   std::vector<std::string> leaves; ///< per leaf (preorder): its points' or triangles' values
 };
 

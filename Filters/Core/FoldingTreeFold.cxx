@@ -432,8 +432,9 @@ void Builder::Fold(int index,
     if (used[v])
       childBudget = std::min(childBudget, w.budget[v]);
   if (std::getenv("FOLDINGMESHES_DEBUG"))
-    std::printf("[fold] node %d depth %d eps %.3g: mirror error %.3g, projection "
-                "error %.3g, least child budget %.3g\n",
+    std::fprintf(stderr,
+      "[fold] node %d depth %d eps %.3g: mirror error %.3g, projection "
+      "error %.3g, least child budget %.3g\n",
       index,
       depth,
       eps,

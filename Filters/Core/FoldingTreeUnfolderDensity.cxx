@@ -66,8 +66,9 @@ int Unfolder::MatchDiscardedDensity(const FoldingNode& node,
     : FoldExcessFaces(node, piece);
   const bool debug = std::getenv("FOLDINGMESHES_DENSITY_DEBUG") != nullptr;
   if (debug)
-    std::printf("[density] fold at depth %d: S %d faces (%d discarded), result %d faces, %d "
-                "above S (pending projected points apart)",
+    std::fprintf(stderr,
+      "[density] fold at depth %d: S %d faces (%d discarded), result %d faces, %d "
+      "above S (pending projected points apart)",
       node.depth,
       node.numberOfFaces,
       node.discardedFaces,
@@ -76,7 +77,7 @@ int Unfolder::MatchDiscardedDensity(const FoldingNode& node,
   if (excess < 2)
   {
     if (debug)
-      std::printf("\n");
+      std::fprintf(stderr, "\n");
     return 0;
   }
   const uint64_t bit = uint64_t(1) << node.depth;
@@ -144,7 +145,7 @@ int Unfolder::MatchDiscardedDensity(const FoldingNode& node,
   if (counted == 0 || meanArea <= 0.0)
   {
     if (debug)
-      std::printf(": no candidate\n");
+      std::fprintf(stderr, ": no candidate\n");
     return 0;
   }
   meanArea /= counted;
@@ -205,7 +206,7 @@ int Unfolder::MatchDiscardedDensity(const FoldingNode& node,
         queue.push({ StarArea(piece, remover, a) / meanArea, a, ++version[a] });
   }
   if (debug)
-    std::printf(": removed %d points, %d faces above S left\n", remover.Count(), excess);
+    std::fprintf(stderr, ": removed %d points, %d faces above S left\n", remover.Count(), excess);
   // Bit 0: the budget was unknown; bit 1: the point is flagged in `added`.
   std::vector<char> flags(n, 0);
   for (int v = 0; v < n; ++v)

@@ -78,15 +78,16 @@ int Unfolder::RemoveProjectedPoints(const FoldingNode* node, Piece& piece, std::
   }
   if (debug)
   {
-    std::printf("[projected] %s %d: removed %d",
+    std::fprintf(stderr,
+      "[projected] %s %d: removed %d",
       atFold   ? "fold at depth"
         : node ? "seams at depth"
                : "final pass, points",
       node ? node->depth : n,
       remover.Count());
     for (const auto& r : reasons)
-      std::printf(", %s %d", r.first.c_str(), r.second);
-    std::printf("\n");
+      std::fprintf(stderr, ", %s %d", r.first.c_str(), r.second);
+    std::fprintf(stderr, "\n");
   }
   return remover.Compact(added);
 }

@@ -123,9 +123,13 @@ double Field(vtkPolyData* mesh, const char* name)
 }
 
 const std::map<std::string, std::string> Table1 = { { "dino_cgal", "Dino" },
-  { "horse_psb397", "Horse" }, { "chair_psb108", "Chair" }, { "table_psb152", "Table" },
-  { "hammer_oded_dec4360", "Hammer" }, { "triceratops_cgal", "Triceratops" },
-  { "eagle_psb258", "Eagle" }, { "queen_chess_quaddamage", "Queen" } };
+  { "horse_psb397", "Horse" },
+  { "chair_psb108", "Chair" },
+  { "table_psb152", "Table" },
+  { "hammer_oded_dec4360", "Hammer" },
+  { "triceratops_cgal", "Triceratops" },
+  { "eagle_psb258", "Eagle" },
+  { "queen_chess_quaddamage", "Queen" } };
 }
 
 int main(int argc, char* argv[])
@@ -151,8 +155,19 @@ int main(int argc, char* argv[])
     std::fprintf(stderr, "usage: %s [--threads N] [--bits N] DIR_OR_MESH...\n", argv[0]);
     return 1;
   }
-  std::printf("%-28s %7s %9s %9s %8s %8s %8s %6s %4s %8s %6s %6s\n", "mesh", "faces", "PLY",
-    "VTP", "Draco11", "DracoQ", "fmz", "fmz/Dq", "Q", "Hmax/dg", "t_c", "t_d");
+  std::printf("%-28s %7s %9s %9s %8s %8s %8s %6s %4s %8s %6s %6s\n",
+    "mesh",
+    "faces",
+    "PLY",
+    "VTP",
+    "Draco11",
+    "DracoQ",
+    "fmz",
+    "fmz/Dq",
+    "Q",
+    "Hmax/dg",
+    "t_c",
+    "t_d");
   std::vector<double> ratios, table1Ratios;
   std::vector<std::string> table1Rows;
   for (const std::string& path : paths)
@@ -206,10 +221,21 @@ int main(int argc, char* argv[])
     const double ratio = dracoQ ? double(bytes.size()) / double(dracoQ) : 0.0;
     ratios.push_back(ratio);
     char row[512];
-    std::snprintf(row, sizeof(row),
-      "%-28s %7lld %9zu %9zu %8zu %8zu %8zu %6.3f %4d %8.4f %6.3f %6.3f", stem.c_str(),
-      static_cast<long long>(mesh->GetNumberOfCells()), PlyBytes(mesh), VtpBytes(mesh), draco11,
-      dracoQ, bytes.size(), ratio, q, bound, compressSeconds, decompressSeconds);
+    std::snprintf(row,
+      sizeof(row),
+      "%-28s %7lld %9zu %9zu %8zu %8zu %8zu %6.3f %4d %8.4f %6.3f %6.3f",
+      stem.c_str(),
+      static_cast<long long>(mesh->GetNumberOfCells()),
+      PlyBytes(mesh),
+      VtpBytes(mesh),
+      draco11,
+      dracoQ,
+      bytes.size(),
+      ratio,
+      q,
+      bound,
+      compressSeconds,
+      decompressSeconds);
     std::printf("%s\n", row);
     std::fflush(stdout);
     const auto t = Table1.find(stem);
@@ -219,18 +245,23 @@ int main(int argc, char* argv[])
       table1Rows.push_back(t->second + std::string(": ") + row);
     }
   }
-  auto median = [](std::vector<double> v) {
+  auto median = [](std::vector<double> v)
+  {
     if (v.empty())
       return 0.0;
     std::sort(v.begin(), v.end());
     return v.size() % 2 ? v[v.size() / 2] : 0.5 * (v[v.size() / 2 - 1] + v[v.size() / 2]);
   };
   std::printf("\nall %zu meshes: fmz / Draco at the same bits: median %.3f, max %.3f\n",
-    ratios.size(), median(ratios), ratios.empty() ? 0.0 : *std::max_element(ratios.begin(), ratios.end()));
+    ratios.size(),
+    median(ratios),
+    ratios.empty() ? 0.0 : *std::max_element(ratios.begin(), ratios.end()));
   if (!table1Rows.empty())
   {
-    std::printf("Table 1 stand-ins (%zu): median %.3f, max %.3f\n", table1Rows.size(),
-      median(table1Ratios), *std::max_element(table1Ratios.begin(), table1Ratios.end()));
+    std::printf("Table 1 stand-ins (%zu): median %.3f, max %.3f\n",
+      table1Rows.size(),
+      median(table1Ratios),
+      *std::max_element(table1Ratios.begin(), table1Ratios.end()));
     for (const std::string& r : table1Rows)
       std::printf("  %s\n", r.c_str());
   }

@@ -51,7 +51,8 @@ TriangleMesh ToMesh(vtkPolyData* pd)
   {
     pd->GetCellPoints(c, ids);
     for (vtkIdType k = 1; k + 1 < ids->GetNumberOfIds(); ++k) // fan (the dino has quads? no)
-      m.triangles.push_back({ static_cast<int>(ids->GetId(0)), static_cast<int>(ids->GetId(k)),
+      m.triangles.push_back({ static_cast<int>(ids->GetId(0)),
+        static_cast<int>(ids->GetId(k)),
         static_cast<int>(ids->GetId(k + 1)) });
   }
   return m;
@@ -103,10 +104,15 @@ void CompareQueries(const TriangleMesh& mesh, const char* name)
     const char* which = prototype ? "vtkCellLocator" : "vtkStaticCellLocator";
     std::printf("%s, %zu triangles, %zu queries: FaceTree %.4f s, %s %.4f s, largest "
                 "difference %.3g of the diagonal\n",
-      name, mesh.triangles.size(), queries.size(), treeSeconds, which, seconds,
+      name,
+      mesh.triangles.size(),
+      queries.size(),
+      treeSeconds,
+      which,
+      seconds,
       worst / diagonal);
-    EXPECT(worst <= 1e-9 * diagonal, name << ": " << which << " distances agree ("
-                                          << worst / diagonal << " of the diagonal)");
+    EXPECT(worst <= 1e-9 * diagonal,
+      name << ": " << which << " distances agree (" << worst / diagonal << " of the diagonal)");
   }
 
   // Against a moved copy: sampled distances and proved bounds.
@@ -120,25 +126,25 @@ void CompareQueries(const TriangleMesh& mesh, const char* name)
     name << ": CompareSurfaces agrees (" << a.hausdorff << " / " << b.hausdorff << ")");
   const double tolerance = 1e-4 * diagonal;
   const HausdorffBounds x = SymmetricHausdorffBounds(mesh, moved, tolerance);
-  const HausdorffBounds y = SymmetricHausdorffBounds(mesh, moved, tolerance,
-    DefaultMaximumEvaluations, 0.0, CellLocatorFaceQueryFactory(nullptr));
+  const HausdorffBounds y = SymmetricHausdorffBounds(
+    mesh, moved, tolerance, DefaultMaximumEvaluations, 0.0, CellLocatorFaceQueryFactory(nullptr));
   EXPECT(std::abs(x.upper - y.upper) <= tolerance && std::abs(x.lower - y.lower) <= tolerance &&
       y.lower <= y.upper,
-    name << ": proved bounds agree ([" << x.lower << ", " << x.upper << "] / [" << y.lower
-         << ", " << y.upper << "])");
+    name << ": proved bounds agree ([" << x.lower << ", " << x.upper << "] / [" << y.lower << ", "
+         << y.upper << "])");
 }
 
 TriangleMesh WithDegenerateTriangles(TriangleMesh m)
 {
   const int n = static_cast<int>(m.points.size());
   const Vec3 a = m.points[0], b = m.points[1];
-  m.points.push_back(a + 2.0 * (b - a));                    // n: on the line through a, b
-  m.points.push_back(a + Vec3(0.5, 0.5, 0.5));              // n + 1
-  m.points.push_back(a + Vec3(0.5, 0.5, 0.5));              // n + 2: the same point
+  m.points.push_back(a + 2.0 * (b - a));                           // n: on the line through a, b
+  m.points.push_back(a + Vec3(0.5, 0.5, 0.5));                     // n + 1
+  m.points.push_back(a + Vec3(0.5, 0.5, 0.5));                     // n + 2: the same point
   m.points.push_back(a + Vec3(0.5, 0.5, 0.5) + Vec3(1e-13, 0, 0)); // n + 3: a sliver corner
-  m.triangles.push_back({ 0, 1, n });          // collinear corners
-  m.triangles.push_back({ n + 1, n + 2, n + 1 }); // one point three times
-  m.triangles.push_back({ n + 1, n + 3, 0 });  // a sliver
+  m.triangles.push_back({ 0, 1, n });                              // collinear corners
+  m.triangles.push_back({ n + 1, n + 2, n + 1 });                  // one point three times
+  m.triangles.push_back({ n + 1, n + 3, 0 });                      // a sliver
   return m;
 }
 
@@ -153,16 +159,19 @@ void Unfolder(const std::string& dino)
   unfolder->SetOriginalConnection(reader->GetOutputPort());
   EXPECT(unfolder->GetLocator() == nullptr, "the unfolder's Locator is null by default");
   unfolder->Update();
-  auto field = [&](const char* name) {
+  auto field = [&](const char* name)
+  {
     vtkDataArray* a = unfolder->GetOutput()->GetFieldData()->GetArray(name);
     return a ? a->GetTuple1(0) : -1.0;
   };
-  auto locator = [&]() -> std::string {
+  auto locator = [&]() -> std::string
+  {
     auto* a = vtkStringArray::SafeDownCast(
       unfolder->GetOutput()->GetFieldData()->GetAbstractArray("DistanceLocator"));
     return a && a->GetNumberOfValues() ? a->GetValue(0) : std::string();
   };
-  EXPECT(locator() == "vtkStaticCellLocator", "default: vtkStaticCellLocator (" << locator() << ")");
+  EXPECT(
+    locator() == "vtkStaticCellLocator", "default: vtkStaticCellLocator (" << locator() << ")");
   const double hausdorff = field("HausdorffToOriginal"), bound = field("HausdorffToOriginalBound");
   vtkNew<vtkCellLocator> user;
   unfolder->SetLocator(user);

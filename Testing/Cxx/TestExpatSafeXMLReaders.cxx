@@ -197,7 +197,8 @@ void TestPolyData(const std::string& dir)
     errors.Observe(reader->GetExecutive());
     reader->SetFileName(file.c_str());
     reader->Update();
-    EXPECT(errors.errors == 0, mode.name << ": the safe reader raised " << errors.errors << " errors");
+    EXPECT(
+      errors.errors == 0, mode.name << ": the safe reader raised " << errors.errors << " errors");
     EXPECT(SameMesh(mesh, reader->GetOutput()),
       mode.name << ": read back " << reader->GetOutput()->GetNumberOfPoints() << " points / "
                 << reader->GetOutput()->GetNumberOfCells() << " cells, not the mesh written");
@@ -210,14 +211,17 @@ void TestPolyData(const std::string& dir)
     stock->Update();
     const bool stockRead = stockErrors.errors == 0 && SameMesh(mesh, stock->GetOutput());
     stockFailures += !stockRead;
-    std::printf("%-26s safe reader %s, stock vtkXMLPolyDataReader %s\n", mode.name,
-      SameMesh(mesh, reader->GetOutput()) ? "ok" : "FAILED", stockRead ? "ok" : "cannot read it");
+    std::printf("%-26s safe reader %s, stock vtkXMLPolyDataReader %s\n",
+      mode.name,
+      SameMesh(mesh, reader->GetOutput()) ? "ok" : "FAILED",
+      stockRead ? "ok" : "cannot read it");
     if (mode.dataMode != vtkXMLWriter::Appended)
       EXPECT(stockRead, mode.name << ": the stock reader cannot read an inline file");
   }
   const bool deferral = vtkExpatSafeXMLPolyDataReader::ExpatHasReparseDeferral();
   std::printf("expat reparse deferral: %s; the stock reader failed on %d of %d files\n",
-    deferral ? "present (switched off by the safe readers)" : "absent", stockFailures,
+    deferral ? "present (switched off by the safe readers)" : "absent",
+    stockFailures,
     static_cast<int>(sizeof(modes) / sizeof(modes[0])));
   EXPECT(stockFailures == 0 || deferral,
     "the stock reader failed but the safe reader saw no reparse deferral to switch off");

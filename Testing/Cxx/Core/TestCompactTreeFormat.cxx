@@ -49,8 +49,8 @@ std::string Encode(const FoldingTree& tree, int bits, CompactTreeStats* stats = 
 
 uint32_t Crc(const std::string& b, size_t n)
 {
-  return static_cast<uint32_t>(crc32(crc32(0L, Z_NULL, 0),
-    reinterpret_cast<const Bytef*>(b.data()), static_cast<uInt>(n)));
+  return static_cast<uint32_t>(
+    crc32(crc32(0L, Z_NULL, 0), reinterpret_cast<const Bytef*>(b.data()), static_cast<uInt>(n)));
 }
 
 /// Rewrites the checksum so that a change gets past it to the parsers.
@@ -67,8 +67,11 @@ std::string WithTreeSection(const std::string& file, const std::string& raw)
   std::memcpy(&packedSize, file.data() + 8, 4);
   uLongf size = compressBound(static_cast<uLong>(raw.size()));
   std::string packed(size, '\0');
-  compress2(reinterpret_cast<Bytef*>(&packed[0]), &size,
-    reinterpret_cast<const Bytef*>(raw.data()), static_cast<uLong>(raw.size()), 9);
+  compress2(reinterpret_cast<Bytef*>(&packed[0]),
+    &size,
+    reinterpret_cast<const Bytef*>(raw.data()),
+    static_cast<uLong>(raw.size()),
+    9);
   packed.resize(size);
   std::string out = file.substr(0, 8);
   const uint32_t sizes[2] = { static_cast<uint32_t>(packed.size()),
@@ -86,8 +89,10 @@ std::string TreeSection(const std::string& file)
   std::memcpy(sizes, file.data() + 8, 8);
   std::string raw(sizes[1], '\0');
   uLongf got = sizes[1];
-  uncompress(reinterpret_cast<Bytef*>(&raw[0]), &got,
-    reinterpret_cast<const Bytef*>(file.data() + 16), sizes[0]);
+  uncompress(reinterpret_cast<Bytef*>(&raw[0]),
+    &got,
+    reinterpret_cast<const Bytef*>(file.data() + 16),
+    sizes[0]);
   return raw;
 }
 
@@ -96,11 +101,13 @@ bool Rejected(const std::string& bytes, const std::string& what)
   FoldingTree tree;
   std::string error;
   const bool ok = DecodeCompactTree(bytes, tree, error);
-  EXPECT(!ok && !error.empty() && tree.Empty(), what << ": rejected with an error (" << error << ")");
+  EXPECT(
+    !ok && !error.empty() && tree.Empty(), what << ": rejected with an error (" << error << ")");
   return !ok;
 }
 
-using PointKey = std::tuple<uint64_t, uint64_t, int, int, std::vector<std::tuple<int, int, uint64_t>>>;
+using PointKey =
+  std::tuple<uint64_t, uint64_t, int, int, std::vector<std::tuple<int, int, uint64_t>>>;
 
 std::multiset<PointKey> PointData(const FoldingLeafMesh& m)
 {
@@ -109,8 +116,11 @@ std::multiset<PointKey> PointData(const FoldingLeafMesh& m)
     mirrored[f.point].emplace_back(f.level, static_cast<int>(f.flag), f.mirrorMask);
   std::multiset<PointKey> keys;
   for (int v = 0; v < m.NumberOfPoints(); ++v)
-    keys.emplace(m.tearMask[v], m.planeMask[v], m.projected[v],
-      m.inputBoundary.empty() ? -1 : m.inputBoundary[v], mirrored[v]);
+    keys.emplace(m.tearMask[v],
+      m.planeMask[v],
+      m.projected[v],
+      m.inputBoundary.empty() ? -1 : m.inputBoundary[v],
+      mirrored[v]);
   return keys;
 }
 
@@ -138,7 +148,8 @@ void CompareTrees(const FoldingTree& a, const FoldingTree& b, double quantizatio
         x.depth == y.depth && x.foldsAbove == y.foldsAbove && x.leafReason == y.leafReason &&
         x.numberOfFaces == y.numberOfFaces,
       name << ": node " << i << " structure");
-    EXPECT(std::abs(x.epsilon - y.epsilon) <= 1e-7 * a.rootEpsilon, name << ": node " << i << " epsilon");
+    EXPECT(std::abs(x.epsilon - y.epsilon) <= 1e-7 * a.rootEpsilon,
+      name << ": node " << i << " epsilon");
     if (x.kind == FoldingNodeKind::Folding)
       EXPECT((x.plane.normal - y.plane.normal).norm() < 1e-6 &&
           std::abs(x.plane.SignedDistance(y.plane.origin)) < 1e-6 * a.diagonal &&
@@ -183,9 +194,11 @@ void CompareTrees(const FoldingTree& a, const FoldingTree& b, double quantizatio
       orientationOff += reversed < same;
     }
   }
-  EXPECT(pointsOff == 0, name << ": " << pointsOff << " points farther than the quantisation error " << quantization);
+  EXPECT(pointsOff == 0,
+    name << ": " << pointsOff << " points farther than the quantisation error " << quantization);
   EXPECT(orientationOff == 0, name << ": " << orientationOff << " triangles flipped");
-  EXPECT(budgetsOff == 0, name << ": " << budgetsOff << " budgets above the original's minus quantisation");
+  EXPECT(budgetsOff == 0,
+    name << ": " << budgetsOff << " budgets above the original's minus quantisation");
 }
 
 /// Encodes, decodes, compares, unfolds and bounds the distance to the input.
@@ -198,7 +211,8 @@ void RoundTrip(const TriangleMesh& input, const FoldingTree& tree, int bits, con
   std::string error;
   double quantization = -1;
   REQUIRE(DecodeCompactTree(bytes, decoded, error, &quantization), name << ": decode: " << error);
-  EXPECT(quantization > 0 && quantization <= stats.quantizationError, name << ": quantisation error stored");
+  EXPECT(quantization > 0 && quantization <= stats.quantizationError,
+    name << ": quantisation error stored");
   EXPECT(stats.bytes == bytes.size() && (bits == 0 || stats.quantizationBits == bits),
     name << ": stats");
   CompareTrees(tree, decoded, stats.quantizationError, name);
@@ -209,10 +223,15 @@ void RoundTrip(const TriangleMesh& input, const FoldingTree& tree, int bits, con
   const HausdorffBounds bound = SymmetricHausdorffBounds(input, result, 1e-4 * tree.diagonal);
   std::printf("%s (%d bits): %zu bytes, %d stored triangles, quantisation %.3g of epsilon, "
               "proved Hausdorff <= %.4f epsilon\n",
-    name, stats.quantizationBits, bytes.size(), tree.StoredFaces(),
-    stats.quantizationError / tree.rootEpsilon, bound.upper / tree.rootEpsilon);
-  EXPECT(bound.upper <= tree.rootEpsilon, name << ": unfolded within the root epsilon ("
-                                              << bound.upper / tree.rootEpsilon << " epsilon)");
+    name,
+    stats.quantizationBits,
+    bytes.size(),
+    tree.StoredFaces(),
+    stats.quantizationError / tree.rootEpsilon,
+    bound.upper / tree.rootEpsilon);
+  EXPECT(bound.upper <= tree.rootEpsilon,
+    name << ": unfolded within the root epsilon (" << bound.upper / tree.rootEpsilon
+         << " epsilon)");
 }
 
 /// User arrays: a per-point float and a per-triangle int array come back byte for byte, the
@@ -236,7 +255,8 @@ void Arrays(const FoldingTree& tree)
       values.insert(values.end(), { static_cast<float>(p.x()), static_cast<float>(k++) });
     std::vector<int64_t> patches(node.mesh.triangles.size(), k);
     arrays[0].leaves.emplace_back(reinterpret_cast<const char*>(values.data()), values.size() * 4);
-    arrays[1].leaves.emplace_back(reinterpret_cast<const char*>(patches.data()), patches.size() * 8);
+    arrays[1].leaves.emplace_back(
+      reinterpret_cast<const char*>(patches.data()), patches.size() * 8);
   }
   std::string bytes, error;
   CompactTreeStats stats;
@@ -244,7 +264,8 @@ void Arrays(const FoldingTree& tree)
     "encode with arrays: " << error);
   FoldingTree decoded;
   std::vector<CompactArray> back;
-  REQUIRE(DecodeCompactTree(bytes, decoded, error, nullptr, &back), "decode with arrays: " << error);
+  REQUIRE(
+    DecodeCompactTree(bytes, decoded, error, nullptr, &back), "decode with arrays: " << error);
   EXPECT(back.size() == 2 && back[0].name == "value" && back[1].name == "patch" &&
       back[0].components == 2 && back[1].perTriangle && back[0].leaves == arrays[0].leaves &&
       back[1].leaves == arrays[1].leaves,
@@ -253,8 +274,10 @@ void Arrays(const FoldingTree& tree)
   for (size_t i = 0; i < tree.nodes.size(); ++i)
     ordered = ordered && decoded.nodes[i].mesh.triangles == tree.nodes[i].mesh.triangles;
   EXPECT(ordered, "with arrays the leaves keep their triangles' order");
-  std::printf("arrays: %zu bytes (%zu of them the arrays section), %zu without\n", bytes.size(),
-    stats.arrayBytes, Encode(tree, 0).size());
+  std::printf("arrays: %zu bytes (%zu of them the arrays section), %zu without\n",
+    bytes.size(),
+    stats.arrayBytes,
+    Encode(tree, 0).size());
   arrays[1].leaves[0].pop_back();
   EXPECT(!EncodeCompactTree(tree, CompactTreeOptions(), bytes, nullptr, error, &arrays) &&
       !error.empty(),
@@ -312,8 +335,10 @@ void BadInput(const FoldingTree& tree)
     else
       EXPECT(t.Validate().empty(), "a corrupted file decoded to an invalid tree");
   }
-  std::printf("fuzz: %d of %d corrupted files behind a valid checksum rejected, the rest valid trees\n",
-    rejected, total);
+  std::printf(
+    "fuzz: %d of %d corrupted files behind a valid checksum rejected, the rest valid trees\n",
+    rejected,
+    total);
   EXPECT(rejected > total / 4, "most corrupted files are rejected");
   // Another version, another magic number.
   std::string version = good;
@@ -352,7 +377,8 @@ void BadInput(const FoldingTree& tree)
   options.quantizationBits = 0;
   EXPECT(!EncodeCompactTree(invalid, options, bytes, nullptr, error) && !error.empty(),
     "an invalid tree is not encoded");
-  EXPECT(!EncodeCompactTree(FoldingTree(), options, bytes, nullptr, error), "an empty tree is not encoded");
+  EXPECT(!EncodeCompactTree(FoldingTree(), options, bytes, nullptr, error),
+    "an empty tree is not encoded");
 }
 }
 
@@ -388,7 +414,8 @@ int main()
   const TriangleMesh sphere = coretest::ToTriangleMesh(pm::MakeSphere(2000).mesh);
   FoldingTreeOptions noFolds;
   noFolds.maximumFolds = 0;
-  const FoldingTree leaf = coretest::Fold(sphere, 0.02 * pm::BoundsDiagonal(pm::MakeSphere(2000).mesh), noFolds);
+  const FoldingTree leaf =
+    coretest::Fold(sphere, 0.02 * pm::BoundsDiagonal(pm::MakeSphere(2000).mesh), noFolds);
   EXPECT(leaf.NumberOfNodes() == 1, "maximumFolds 0: a single leaf");
   RoundTrip(sphere, leaf, 0, "single leaf");
   Arrays(first);
