@@ -5,7 +5,8 @@
 #   1. detects the symmetry plane and symmetric region  -> results/<stem>_symmetry.{vtp,png}
 #   2. folds the mesh into a folding tree                -> results/<stem>_tree.vtm, segmentation
 #   3. unfolds the tree back into a mesh                 -> results/<stem>_unfolded.{vtp,png}
-# and writes results/summary.json with the three summaries. Safe to run twice.
+#   4. writes the compact folding tree                   -> results/<stem>.fmz
+# and writes results/summary.json with the four summaries. Safe to run twice.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/build.sh
@@ -19,13 +20,15 @@ run detect "$MESH" --up "$UP" --outdir results --json > results/detect.json
 run fold "$MESH" --up "$UP" --outdir results --json > results/fold.json
 run unfold "results/${STEM}_tree.vtm" --original "$MESH" --up "$UP" --outdir results --json \
   > results/unfold.json
+run compress "$MESH" --outdir results --json --quiet > results/compress.json
 {
   echo "{"
   echo "\"detect\": $(cat results/detect.json),"
   echo "\"fold\": $(cat results/fold.json),"
-  echo "\"unfold\": $(cat results/unfold.json)"
+  echo "\"unfold\": $(cat results/unfold.json),"
+  echo "\"compress\": $(cat results/compress.json)"
   echo "}"
 } > results/summary.json
-rm -f results/detect.json results/fold.json results/unfold.json
+rm -f results/detect.json results/fold.json results/unfold.json results/compress.json
 cat results/summary.json
 echo "results written to $(pwd)/results"
