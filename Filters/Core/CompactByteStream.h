@@ -1,5 +1,6 @@
 // Little-endian byte writer and bounds-checked reader for the compact tree file
-// (CompactTreeFormat.h): fixed-size numbers and LEB128 variable-length unsigned integers.
+// (CompactTreeFormat.h): fixed-size numbers and LEB128 variable-length unsigned integers; and
+// the zlib helpers of its sections (CompactByteStream.cxx).
 #ifndef foldingmeshes_CompactByteStream_h
 #define foldingmeshes_CompactByteStream_h
 
@@ -16,6 +17,14 @@ struct CompactFormatError : std::runtime_error
 {
   using std::runtime_error::runtime_error;
 };
+
+/// CRC-32 (zlib's) of `size` bytes.
+uint32_t Crc(const char* data, size_t size);
+/// zlib-compressed bytes (level 9); empty when zlib fails (a deflated section is never empty).
+std::string Deflate(const std::string& raw);
+/// Inflates a zlib section that must give exactly `rawSize` bytes; memory grows with what zlib
+/// really produces. Throws CompactFormatError for corrupt data or another size.
+std::string Inflate(const char* data, size_t size, size_t rawSize);
 
 class ByteWriter
 {

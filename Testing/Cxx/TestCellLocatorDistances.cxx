@@ -50,7 +50,7 @@ TriangleMesh ToMesh(vtkPolyData* pd)
   for (vtkIdType c = 0; c < pd->GetNumberOfCells(); ++c)
   {
     pd->GetCellPoints(c, ids);
-    for (vtkIdType k = 1; k + 1 < ids->GetNumberOfIds(); ++k) // fan (the dino has quads? no)
+    for (vtkIdType k = 1; k + 1 < ids->GetNumberOfIds(); ++k) // polygons as fans
       m.triangles.push_back({ static_cast<int>(ids->GetId(0)),
         static_cast<int>(ids->GetId(k)),
         static_cast<int>(ids->GetId(k + 1)) });
