@@ -15,7 +15,7 @@ MESH="${1:-Data/dino.off}"
 UP="${2:-$([ -z "${1:-}" ] && echo z || echo auto)}"
 STEM="$(basename "${MESH%.*}")"
 mkdir -p results
-run() { xvfb-run -a "$BUILD_DIR/bin/foldingmeshes" "$@"; }
+run() { xvfb-run -a -s "-screen 0 1280x1024x24 -noreset" "$BUILD_DIR/bin/foldingmeshes" "$@"; }
 run detect "$MESH" --up "$UP" --outdir results --json > results/detect.json
 run fold "$MESH" --up "$UP" --outdir results --json > results/fold.json
 run unfold "results/${STEM}_tree.vtm" --original "$MESH" --up "$UP" --outdir results --json \
