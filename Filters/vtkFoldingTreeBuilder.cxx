@@ -5,6 +5,7 @@
 #include "vtkFoldingArrays.h"
 #include "vtkFoldingMeshesParallel.h"
 #include "vtkFoldingTreeIO.h"
+#include "vtkParameterChecks.h"
 #include "vtkTriangleMeshAdapter.h"
 
 #include <vtkCellData.h>
@@ -24,6 +25,78 @@
 
 vtkStandardNewMacro(vtkFoldingTreeBuilder);
 vtkCxxSetObjectMacro(vtkFoldingTreeBuilder, Controller, vtkMultiProcessController);
+
+namespace
+{
+/// The filter's parameters as the core's options; progress goes to 95% of the filter's bar.
+foldingmeshes::FoldingTreeOptions FoldingTreeOptionsOf(vtkFoldingTreeBuilder* self, double epsilon)
+{
+  foldingmeshes::FoldingTreeOptions options;
+  options.epsilon = epsilon;
+  options.symmetry.robust = self->GetMethod() == vtkFoldingTreeBuilder::ROBUST;
+  options.symmetry.seed = static_cast<unsigned>(self->GetRandomSeed());
+  options.sampledSearchAboveFaces = self->GetSampledSearchAboveFaces();
+  options.useMinimumFaces = self->GetUseMinimumFaces();
+  options.minimumFaces = self->GetMinimumFaces();
+  options.useMinimumAreaFraction = self->GetUseMinimumAreaFraction();
+  options.minimumAreaFraction = self->GetMinimumAreaFraction();
+  options.useMaximumFolds = self->GetUseMaximumFolds();
+  options.maximumFolds = self->GetMaximumFolds();
+  options.requireMeaningfulSymmetry = self->GetRequireMeaningfulSymmetry();
+  options.requireTightSymmetry = self->GetRequireTightSymmetry();
+  options.keepSide = self->GetKeepSide() == vtkFoldingTreeBuilder::FEWER_FACES
+    ? foldingmeshes::KeepSide::FewerFaces
+    : foldingmeshes::KeepSide::MoreFaces;
+  options.connectNearbyParts = self->GetConnectNearbyParts();
+  options.progress = [self](double p)
+  {
+    self->UpdateProgress(0.95 * p);
+    return !self->GetAbortExecute();
+  };
+  return options;
+}
+
+/// The builder's arrays on the segmentation output (the triangulated input): FoldingLeafId
+/// (active scalars), FoldingDepth and FoldingRole per face. Input arrays of these names are
+/// renamed, with a warning through `warner`.
+void AddSegmentationArrays(const foldingmeshes::FoldingTree& folding,
+  const foldingmeshes::TriangleMesh& soup,
+  vtkPolyData* segmentation,
+  vtkObject* warner)
+{
+  std::vector<std::string> renamed;
+  foldingmeshes::RenameReservedArrays(
+    segmentation->GetCellData(), { "FoldingLeafId", "FoldingDepth", "FoldingRole" }, renamed);
+  for (const std::string& r : renamed)
+    vtkWarningWithObjectMacro(warner,
+      "Segmentation output: the input's cell array " << r << " (the name is the builder's).");
+  const vtkIdType nf = segmentation->GetNumberOfCells();
+  vtkNew<vtkIntArray> leafId, depth, role;
+  leafId->SetName("FoldingLeafId");
+  depth->SetName("FoldingDepth");
+  role->SetName("FoldingRole");
+  for (vtkIntArray* a : { leafId.GetPointer(), depth.GetPointer(), role.GetPointer() })
+  {
+    a->SetNumberOfTuples(nf);
+    a->FillValue(-1);
+  }
+  const foldingmeshes::FoldingSegmentation labels =
+    foldingmeshes::LabelFacesByLeaf(folding, soup.points, soup.triangles);
+  for (vtkIdType f = 0; f < nf && f < static_cast<vtkIdType>(labels.leaf.size()); ++f)
+  {
+    leafId->SetValue(f, labels.leaf[f]);
+    depth->SetValue(f, labels.depth[f]);
+    role->SetValue(f, labels.role[f]);
+  }
+  segmentation->GetCellData()->AddArray(leafId);
+  segmentation->GetCellData()->AddArray(depth);
+  segmentation->GetCellData()->AddArray(role);
+  segmentation->GetCellData()->SetActiveScalars("FoldingLeafId");
+  // Viewers colour by active point scalars before cell scalars: keep the input's point
+  // scalars (e.g. COFF Colors) as plain arrays so the leaves are what is shown.
+  segmentation->GetPointData()->SetActiveScalars(nullptr);
+}
+}
 
 //------------------------------------------------------------------------------
 vtkFoldingTreeBuilder::vtkFoldingTreeBuilder()
@@ -87,22 +160,16 @@ int vtkFoldingTreeBuilder::RequestWholeData(vtkInformation*,
     vtkErrorMacro("Missing input poly data or outputs.");
     return 0;
   }
-  // NaN passes vtkSetClampMacro: check the floating-point parameters here.
-  if (!std::isfinite(this->Tolerance) || !(this->Tolerance > 0.0))
+  std::string error;
+  if (!foldingmeshes::CheckParameters({ { "Tolerance", this->Tolerance } },
+        { { "MinimumAreaFraction", this->MinimumAreaFraction } },
+        error))
   {
-    vtkErrorMacro("Tolerance must be a positive, finite number (it is " << this->Tolerance
-                                                                        << ").");
-    return 0;
-  }
-  if (!std::isfinite(this->MinimumAreaFraction))
-  {
-    vtkErrorMacro("MinimumAreaFraction must be a finite number (it is "
-      << this->MinimumAreaFraction << ").");
+    vtkErrorMacro(<< error << ".");
     return 0;
   }
   foldingmeshes::TriangleMesh soup;
   std::vector<foldingmeshes::Vec3> normals;
-  std::string error;
   vtkIdType droppedVerts = 0, droppedLines = 0;
   vtkSmartPointer<vtkPolyData> surface = foldingmeshes::SurfaceInput(
     input, "a folding tree needs a surface mesh", soup, normals, droppedVerts, droppedLines, error);
@@ -131,48 +198,16 @@ int vtkFoldingTreeBuilder::RequestWholeData(vtkInformation*,
       lo = lo.cwiseMin(soup.points[v]);
       hi = hi.cwiseMax(soup.points[v]);
     }
-  const double diagonal = (hi - lo).norm();
-  if (!std::isfinite(diagonal))
+  double epsilon = 0.0;
+  if (!foldingmeshes::ToleranceLengthOf(
+        this->ToleranceMode == ABSOLUTE, this->Tolerance, (hi - lo).norm(), epsilon, error))
   {
-    vtkErrorMacro("Invalid input mesh: non-finite point coordinates.");
-    return 0;
-  }
-  const double epsilon =
-    this->ToleranceMode == ABSOLUTE ? this->Tolerance : this->Tolerance * diagonal;
-  if (!(diagonal > 0.0) && this->ToleranceMode != ABSOLUTE)
-  {
-    vtkErrorMacro("Invalid input mesh: zero extent, so the relative tolerance is zero.");
-    return 0;
-  }
-  if (!std::isfinite(epsilon) || !(epsilon > 0.0))
-  {
-    vtkErrorMacro("The tolerance length (Tolerance x the bounding-box diagonal "
-      << diagonal << ") is " << epsilon << ": it must be positive and finite.");
+    vtkErrorMacro(<< error << ".");
     return 0;
   }
   this->ToleranceLength = epsilon;
 
-  foldingmeshes::FoldingTreeOptions options;
-  options.epsilon = epsilon;
-  options.symmetry.robust = this->Method == ROBUST;
-  options.symmetry.seed = static_cast<unsigned>(this->RandomSeed);
-  options.sampledSearchAboveFaces = this->SampledSearchAboveFaces;
-  options.useMinimumFaces = this->UseMinimumFaces;
-  options.minimumFaces = this->MinimumFaces;
-  options.useMinimumAreaFraction = this->UseMinimumAreaFraction;
-  options.minimumAreaFraction = this->MinimumAreaFraction;
-  options.useMaximumFolds = this->UseMaximumFolds;
-  options.maximumFolds = this->MaximumFolds;
-  options.requireMeaningfulSymmetry = this->RequireMeaningfulSymmetry;
-  options.requireTightSymmetry = this->RequireTightSymmetry;
-  options.keepSide = this->KeepSide == FEWER_FACES ? foldingmeshes::KeepSide::FewerFaces
-                                                   : foldingmeshes::KeepSide::MoreFaces;
-  options.connectNearbyParts = this->ConnectNearbyParts;
-  options.progress = [this](double p)
-  {
-    this->UpdateProgress(0.95 * p);
-    return !this->GetAbortExecute();
-  };
+  const foldingmeshes::FoldingTreeOptions options = FoldingTreeOptionsOf(this, epsilon);
 
   foldingmeshes::FoldingTree folding;
   if (!foldingmeshes::BuildFoldingTree(soup, normals, options, folding, error))
@@ -199,37 +234,7 @@ int vtkFoldingTreeBuilder::RequestWholeData(vtkInformation*,
 
   // Output 1: the segmentation view.
   segmentation->ShallowCopy(surface);
-  std::vector<std::string> renamed;
-  foldingmeshes::RenameReservedArrays(
-    segmentation->GetCellData(), { "FoldingLeafId", "FoldingDepth", "FoldingRole" }, renamed);
-  for (const std::string& r : renamed)
-    vtkWarningMacro(
-      "Segmentation output: the input's cell array " << r << " (the name is the builder's).");
-  const vtkIdType nf = segmentation->GetNumberOfCells();
-  vtkNew<vtkIntArray> leafId, depth, role;
-  leafId->SetName("FoldingLeafId");
-  depth->SetName("FoldingDepth");
-  role->SetName("FoldingRole");
-  for (vtkIntArray* a : { leafId.GetPointer(), depth.GetPointer(), role.GetPointer() })
-  {
-    a->SetNumberOfTuples(nf);
-    a->FillValue(-1);
-  }
-  const foldingmeshes::FoldingSegmentation labels =
-    foldingmeshes::LabelFacesByLeaf(folding, soup.points, soup.triangles);
-  for (vtkIdType f = 0; f < nf && f < static_cast<vtkIdType>(labels.leaf.size()); ++f)
-  {
-    leafId->SetValue(f, labels.leaf[f]);
-    depth->SetValue(f, labels.depth[f]);
-    role->SetValue(f, labels.role[f]);
-  }
-  segmentation->GetCellData()->AddArray(leafId);
-  segmentation->GetCellData()->AddArray(depth);
-  segmentation->GetCellData()->AddArray(role);
-  segmentation->GetCellData()->SetActiveScalars("FoldingLeafId");
-  // Viewers colour by active point scalars before cell scalars: keep the input's point
-  // scalars (e.g. COFF Colors) as plain arrays so the leaves are what is shown.
-  segmentation->GetPointData()->SetActiveScalars(nullptr);
+  AddSegmentationArrays(folding, soup, segmentation, this);
   this->UpdateProgress(1.0);
   return 1;
 }

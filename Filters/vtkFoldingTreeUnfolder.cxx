@@ -8,6 +8,7 @@
 #include "vtkFoldingArrays.h"
 #include "vtkFoldingMeshesParallel.h"
 #include "vtkFoldingTreeIO.h"
+#include "vtkParameterChecks.h"
 #include "vtkTriangleMeshAdapter.h"
 #include "vtkUnfoldedMeshOutput.h"
 
@@ -232,19 +233,19 @@ int vtkFoldingTreeUnfolder::RequestWholeData(vtkInformation*,
     vtkErrorMacro("Missing input multiblock or output poly data.");
     return 0;
   }
-  // NaN passes vtkSetClampMacro: check the floating-point parameters here.
-  if (!std::isfinite(this->StitchToleranceScale) || !std::isfinite(this->SmoothingWeight) ||
-    !std::isfinite(this->WeldToleranceScale) || !std::isfinite(this->HoleToleranceScale))
+  std::string error;
+  if (!foldingmeshes::CheckParameters({},
+        { { "StitchToleranceScale", this->StitchToleranceScale },
+          { "SmoothingWeight", this->SmoothingWeight },
+          { "WeldToleranceScale", this->WeldToleranceScale },
+          { "HoleToleranceScale", this->HoleToleranceScale } },
+        error))
   {
-    vtkErrorMacro("StitchToleranceScale, SmoothingWeight, WeldToleranceScale and "
-                  "HoleToleranceScale must be finite numbers (they are "
-      << this->StitchToleranceScale << ", " << this->SmoothingWeight << ", "
-      << this->WeldToleranceScale << " and " << this->HoleToleranceScale << ").");
+    vtkErrorMacro(<< error << ".");
     return 0;
   }
   foldingmeshes::FoldingTree tree;
   std::vector<vtkPolyData*> leaves;
-  std::string error;
   if (!foldingmeshes::MultiBlockToFoldingTree(input, tree, &leaves, error))
   {
     vtkErrorMacro("Malformed folding tree: " << error << ".");

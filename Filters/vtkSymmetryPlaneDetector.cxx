@@ -4,6 +4,7 @@
 #include "Core/SymmetryDetection.h"
 #include "vtkFoldingArrays.h"
 #include "vtkFoldingMeshesParallel.h"
+#include "vtkParameterChecks.h"
 #include "vtkTriangleMeshAdapter.h"
 
 #include <vtkCellArray.h>
@@ -20,6 +21,7 @@
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -98,6 +100,150 @@ void BuildPlaneGlyph(const foldingmeshes::PreparedMesh& mesh,
   glyph->SetPoints(points);
   glyph->SetPolys(quads);
 }
+
+/// The filter's initial plane, its normal made unit length. False when the origin is not
+/// finite or the normal is not finite and non-zero.
+bool InitialPlaneOf(vtkSymmetryPlaneDetector* self, Vec3& origin, Vec3& normal)
+{
+  const double* n = self->GetInitialPlaneNormal();
+  const double* o = self->GetInitialPlaneOrigin();
+  normal = Vec3(n[0], n[1], n[2]);
+  origin = Vec3(o[0], o[1], o[2]);
+  // Divide by the largest component first: the norm of (1e300, 1e300, 0) overflows.
+  const double largest = normal.cwiseAbs().maxCoeff();
+  if (!std::isfinite(largest) || !(largest > 0.0) || !origin.allFinite())
+    return false;
+  const double norm = normal.norm();
+  normal =
+    std::isfinite(norm) && norm > 1e-150 ? Vec3(normal / norm) : (normal / largest).normalized();
+  return true;
+}
+
+/// The filter's parameters as the core's options (the initial plane already checked).
+foldingmeshes::SymmetryOptions SymmetryOptionsOf(vtkSymmetryPlaneDetector* self,
+  double epsilon,
+  const Vec3& origin,
+  const Vec3& normal)
+{
+  foldingmeshes::SymmetryOptions options;
+  options.epsilon = epsilon;
+  options.robust = self->GetMethod() == vtkSymmetryPlaneDetector::ROBUST;
+  options.useInitialPlane = self->GetUseInitialPlane();
+  if (self->GetUseInitialPlane())
+  {
+    options.initialPlane.origin = origin;
+    options.initialPlane.normal = normal;
+  }
+  options.numberOfCandidates = self->GetNumberOfCandidates();
+  options.maximumIterations = self->GetMaximumIterations();
+  options.compatibilityAngle = self->GetCompatibilityAngle();
+  options.minimumSymmetricAreaFraction = self->GetMinimumSymmetricAreaFraction();
+  options.seed = static_cast<unsigned>(self->GetRandomSeed());
+  options.progress = [self](double p)
+  {
+    self->UpdateProgress(p);
+    return !self->GetAbortExecute();
+  };
+
+  return options;
+}
+
+/// The detector's arrays on output 0 (the triangulated input): SymmetryRegion (cell, active
+/// scalars), SymmetryDistance and SymmetryWeight (point). Input arrays of these names are renamed,
+/// with a warning through `warner`.
+void AddDetectionArrays(const foldingmeshes::PreparedMesh& mesh,
+  const foldingmeshes::SymmetryResult& result,
+  vtkPolyData* output,
+  vtkObject* warner)
+{
+  {
+    std::vector<std::string> renamed;
+    foldingmeshes::RenameReservedArrays(output->GetCellData(), { "SymmetryRegion" }, renamed);
+    foldingmeshes::RenameReservedArrays(
+      output->GetPointData(), { "SymmetryDistance", "SymmetryWeight" }, renamed);
+    for (const std::string& r : renamed)
+      vtkWarningWithObjectMacro(
+        warner, "The input's array " << r << " (the name is the detector's).");
+  }
+  const vtkIdType nf = output->GetNumberOfCells();
+  vtkNew<vtkIntArray> region;
+  region->SetName("SymmetryRegion");
+  region->SetNumberOfTuples(nf);
+  for (vtkIdType f = 0; f < nf; ++f)
+    region->SetValue(f, result.faceLabel[f]);
+  output->GetCellData()->AddArray(region);
+  output->GetCellData()->SetActiveScalars("SymmetryRegion");
+  // Active point scalars (e.g. vertex colours) would hide the region colouring in ParaView;
+  // the array stays, it is just no longer the active one.
+  output->GetPointData()->SetActiveAttribute(-1, vtkDataSetAttributes::SCALARS);
+
+  const vtkIdType np = output->GetNumberOfPoints();
+  vtkNew<vtkDoubleArray> distance, weight;
+  distance->SetName("SymmetryDistance");
+  weight->SetName("SymmetryWeight");
+  distance->SetNumberOfTuples(np);
+  weight->SetNumberOfTuples(np);
+  for (vtkIdType i = 0; i < np; ++i)
+  {
+    const int v = mesh.inputToWelded[i];
+    const double d = result.distance[v];
+    distance->SetValue(i, std::isfinite(d) ? d : std::numeric_limits<double>::quiet_NaN());
+    weight->SetValue(i, result.weight[v]);
+  }
+  output->GetPointData()->AddArray(distance);
+  output->GetPointData()->AddArray(weight);
+}
+
+/// Output 0's field data: the input's field arrays first, so that ours replace stale ones of
+/// the same name (running the detector on its own output), then the plane, the symmetric
+/// area fraction, whether a symmetry was found, the tolerance length, the iterations and the
+/// cost history.
+vtkSmartPointer<vtkFieldData> DetectionFieldData(vtkPolyData* input,
+  const foldingmeshes::SymmetryResult& result,
+  double epsilon)
+{
+  vtkNew<vtkFieldData> field;
+  for (int a = 0; a < input->GetFieldData()->GetNumberOfArrays(); ++a)
+    field->AddArray(input->GetFieldData()->GetAbstractArray(a));
+  const double origin[3] = {
+    result.plane.origin[0], result.plane.origin[1], result.plane.origin[2]
+  };
+  const double normal[3] = {
+    result.plane.normal[0], result.plane.normal[1], result.plane.normal[2]
+  };
+  field->AddArray(MakeTuple("SymmetryPlaneOrigin", origin, 3));
+  field->AddArray(MakeTuple("SymmetryPlaneNormal", normal, 3));
+  field->AddArray(MakeTuple("SymmetricAreaFraction", &result.symmetricAreaFraction, 1));
+  const double found = result.found ? 1.0 : 0.0;
+  field->AddArray(MakeTuple("SymmetryFound", &found, 1));
+  field->AddArray(MakeTuple("SymmetryTolerance", &epsilon, 1));
+  const double iterations[2] = { static_cast<double>(result.coarseIterations),
+    static_cast<double>(result.fineIterations) };
+  field->AddArray(MakeTuple("SymmetryIterations", iterations, 2));
+  field->AddArray(MakeSeries("SymmetryCostHistory", result.costHistory));
+  return field;
+}
+
+/// Output 1: the plane glyph over the symmetric region, with the plane's field arrays of
+/// output 0 (`field`).
+void SetPlaneGlyphOutput(const foldingmeshes::PreparedMesh& mesh,
+  const foldingmeshes::SymmetryResult& result,
+  vtkFieldData* field,
+  vtkPolyData* glyph)
+{
+  std::vector<char> symmetric(mesh.NumberOfFaces());
+  for (int f = 0; f < mesh.NumberOfFaces(); ++f)
+    symmetric[f] = result.faceLabel[f] == 2;
+  BuildPlaneGlyph(mesh, symmetric, result.plane, glyph);
+  vtkNew<vtkFieldData> glyphField;
+  for (const char* name : { "SymmetryPlaneOrigin",
+         "SymmetryPlaneNormal",
+         "SymmetricAreaFraction",
+         "SymmetryFound",
+         "SymmetryTolerance" })
+    glyphField->AddArray(field->GetAbstractArray(name));
+  glyph->SetFieldData(glyphField);
+}
 }
 
 //------------------------------------------------------------------------------
@@ -161,41 +307,24 @@ int vtkSymmetryPlaneDetector::RequestWholeData(vtkInformation*,
     vtkErrorMacro("Missing input or output poly data.");
     return 0;
   }
-  // NaN passes vtkSetClampMacro: check the floating-point parameters here.
-  if (!std::isfinite(this->Tolerance) || !(this->Tolerance > 0.0))
+  std::string error;
+  if (!foldingmeshes::CheckParameters({ { "Tolerance", this->Tolerance } },
+        { { "CompatibilityAngle", this->CompatibilityAngle },
+          { "MinimumSymmetricAreaFraction", this->MinimumSymmetricAreaFraction } },
+        error))
   {
-    vtkErrorMacro("Tolerance must be a positive, finite number (it is " << this->Tolerance
-                                                                        << ").");
+    vtkErrorMacro(<< error << ".");
     return 0;
   }
-  if (!std::isfinite(this->CompatibilityAngle) || !std::isfinite(this->MinimumSymmetricAreaFraction))
+  Vec3 initialOrigin, initialNormal;
+  if (this->UseInitialPlane && !InitialPlaneOf(this, initialOrigin, initialNormal))
   {
-    vtkErrorMacro("CompatibilityAngle and MinimumSymmetricAreaFraction must be finite numbers "
-                  "(they are "
-      << this->CompatibilityAngle << " and " << this->MinimumSymmetricAreaFraction << ").");
+    vtkErrorMacro("The initial plane needs a finite origin and a finite, non-zero normal.");
     return 0;
-  }
-  Vec3 initialNormal(
-    this->InitialPlaneNormal[0], this->InitialPlaneNormal[1], this->InitialPlaneNormal[2]);
-  const Vec3 initialOrigin(
-    this->InitialPlaneOrigin[0], this->InitialPlaneOrigin[1], this->InitialPlaneOrigin[2]);
-  if (this->UseInitialPlane)
-  {
-    // Divide by the largest component first: the norm of (1e300, 1e300, 0) overflows.
-    const double largest = initialNormal.cwiseAbs().maxCoeff();
-    if (!std::isfinite(largest) || !(largest > 0.0) || !initialOrigin.allFinite())
-    {
-      vtkErrorMacro("The initial plane needs a finite origin and a finite, non-zero normal.");
-      return 0;
-    }
-    const double norm = initialNormal.norm();
-    initialNormal = std::isfinite(norm) && norm > 1e-150 ? Vec3(initialNormal / norm)
-                                                         : (initialNormal / largest).normalized();
   }
 
   foldingmeshes::TriangleMesh soup;
   std::vector<Vec3> normals;
-  std::string error;
   vtkIdType droppedVerts = 0, droppedLines = 0;
   vtkSmartPointer<vtkPolyData> surface = foldingmeshes::SurfaceInput(input,
     "symmetry detection needs a surface mesh",
@@ -205,10 +334,8 @@ int vtkSymmetryPlaneDetector::RequestWholeData(vtkInformation*,
     droppedLines,
     error);
   if (droppedVerts + droppedLines > 0)
-  {
     vtkWarningMacro("Ignoring " << droppedVerts << " vertex and " << droppedLines
                                 << " line cells: only polygons are used.");
-  }
   if (!surface)
   {
     vtkErrorMacro(<< error);
@@ -221,40 +348,19 @@ int vtkSymmetryPlaneDetector::RequestWholeData(vtkInformation*,
     return 0;
   }
 
-  const double epsilon =
-    this->ToleranceMode == ABSOLUTE ? this->Tolerance : this->Tolerance * mesh.diagonal;
-  if (!std::isfinite(epsilon) || !(epsilon > 0.0))
+  double epsilon = 0.0;
+  if (!foldingmeshes::ToleranceLengthOf(
+        this->ToleranceMode == ABSOLUTE, this->Tolerance, mesh.diagonal, epsilon, error))
   {
-    vtkErrorMacro("The tolerance length (Tolerance x the bounding-box diagonal "
-      << mesh.diagonal << ") is " << epsilon << ": it must be positive and finite.");
+    vtkErrorMacro(<< error << ".");
     return 0;
   }
   this->ToleranceLength = epsilon;
   if (this->ConnectNearbyParts)
-  {
     foldingmeshes::LinkNearbyParts(mesh, epsilon);
-  }
 
-  foldingmeshes::SymmetryOptions options;
-  options.epsilon = epsilon;
-  options.robust = this->Method == ROBUST;
-  options.useInitialPlane = this->UseInitialPlane;
-  if (this->UseInitialPlane)
-  {
-    options.initialPlane.origin = initialOrigin;
-    options.initialPlane.normal = initialNormal;
-  }
-  options.numberOfCandidates = this->NumberOfCandidates;
-  options.maximumIterations = this->MaximumIterations;
-  options.compatibilityAngle = this->CompatibilityAngle;
-  options.minimumSymmetricAreaFraction = this->MinimumSymmetricAreaFraction;
-  options.seed = static_cast<unsigned>(this->RandomSeed);
-  options.progress = [this](double p)
-  {
-    this->UpdateProgress(p);
-    return !this->GetAbortExecute();
-  };
-
+  const foldingmeshes::SymmetryOptions options =
+    SymmetryOptionsOf(this, epsilon, initialOrigin, initialNormal);
   const foldingmeshes::SymmetryResult result = foldingmeshes::DetectSymmetry(mesh, options);
   if (result.aborted)
   {
@@ -270,84 +376,18 @@ int vtkSymmetryPlaneDetector::RequestWholeData(vtkInformation*,
     return 0;
   }
 
-  for (int k = 0; k < 3; ++k)
-  {
-    this->PlaneOrigin[k] = result.plane.origin[k];
-    this->PlaneNormal[k] = result.plane.normal[k];
-  }
+  std::copy(result.plane.origin.data(), result.plane.origin.data() + 3, this->PlaneOrigin);
+  std::copy(result.plane.normal.data(), result.plane.normal.data() + 3, this->PlaneNormal);
   this->SymmetricAreaFraction = result.symmetricAreaFraction;
   this->SymmetryFound = result.found;
   this->CoarseIterations = result.coarseIterations;
   this->FineIterations = result.fineIterations;
 
-  // Output 0: the triangulated input with the labels.
+  // Output 0: the triangulated input with the labels; output 1: the plane glyph.
   output->ShallowCopy(surface);
-  {
-    std::vector<std::string> renamed;
-    foldingmeshes::RenameReservedArrays(output->GetCellData(), { "SymmetryRegion" }, renamed);
-    foldingmeshes::RenameReservedArrays(
-      output->GetPointData(), { "SymmetryDistance", "SymmetryWeight" }, renamed);
-    for (const std::string& r : renamed)
-      vtkWarningMacro("The input's array " << r << " (the name is the detector's).");
-  }
-  const vtkIdType nf = output->GetNumberOfCells();
-  vtkNew<vtkIntArray> region;
-  region->SetName("SymmetryRegion");
-  region->SetNumberOfTuples(nf);
-  for (vtkIdType f = 0; f < nf; ++f)
-    region->SetValue(f, result.faceLabel[f]);
-  output->GetCellData()->AddArray(region);
-  output->GetCellData()->SetActiveScalars("SymmetryRegion");
-  // Active point scalars (e.g. vertex colours) would hide the region colouring in ParaView;
-  // the array stays, it is just no longer the active one.
-  output->GetPointData()->SetActiveAttribute(-1, vtkDataSetAttributes::SCALARS);
-
-  const vtkIdType np = output->GetNumberOfPoints();
-  vtkNew<vtkDoubleArray> distance, weight;
-  distance->SetName("SymmetryDistance");
-  weight->SetName("SymmetryWeight");
-  distance->SetNumberOfTuples(np);
-  weight->SetNumberOfTuples(np);
-  for (vtkIdType i = 0; i < np; ++i)
-  {
-    const int v = mesh.inputToWelded[i];
-    const double d = result.distance[v];
-    distance->SetValue(i, std::isfinite(d) ? d : std::numeric_limits<double>::quiet_NaN());
-    weight->SetValue(i, result.weight[v]);
-  }
-  output->GetPointData()->AddArray(distance);
-  output->GetPointData()->AddArray(weight);
-
-  // The input's field arrays first, so that ours replace stale ones of the same name
-  // (running the detector on its own output).
-  vtkNew<vtkFieldData> field;
-  for (int a = 0; a < input->GetFieldData()->GetNumberOfArrays(); ++a)
-    field->AddArray(input->GetFieldData()->GetAbstractArray(a));
-  field->AddArray(MakeTuple("SymmetryPlaneOrigin", this->PlaneOrigin, 3));
-  field->AddArray(MakeTuple("SymmetryPlaneNormal", this->PlaneNormal, 3));
-  field->AddArray(MakeTuple("SymmetricAreaFraction", &this->SymmetricAreaFraction, 1));
-  const double found = this->SymmetryFound ? 1.0 : 0.0;
-  field->AddArray(MakeTuple("SymmetryFound", &found, 1));
-  field->AddArray(MakeTuple("SymmetryTolerance", &epsilon, 1));
-  const double iterations[2] = { static_cast<double>(result.coarseIterations),
-    static_cast<double>(result.fineIterations) };
-  field->AddArray(MakeTuple("SymmetryIterations", iterations, 2));
-  field->AddArray(MakeSeries("SymmetryCostHistory", result.costHistory));
-  output->SetFieldData(field);
-
-  // Output 1: the plane glyph.
-  std::vector<char> symmetric(mesh.NumberOfFaces());
-  for (int f = 0; f < mesh.NumberOfFaces(); ++f)
-    symmetric[f] = result.faceLabel[f] == 2;
-  BuildPlaneGlyph(mesh, symmetric, result.plane, glyph);
-  vtkNew<vtkFieldData> glyphField;
-  for (const char* name : { "SymmetryPlaneOrigin",
-         "SymmetryPlaneNormal",
-         "SymmetricAreaFraction",
-         "SymmetryFound",
-         "SymmetryTolerance" })
-    glyphField->AddArray(field->GetAbstractArray(name));
-  glyph->SetFieldData(glyphField);
+  AddDetectionArrays(mesh, result, output, this);
+  output->SetFieldData(DetectionFieldData(input, result, epsilon));
+  SetPlaneGlyphOutput(mesh, result, output->GetFieldData(), glyph);
   return 1;
 }
 

@@ -87,6 +87,41 @@ void CarryArrays(const std::vector<std::pair<std::string, std::string>>& names,
     out->AddArray(array);
   }
 }
+
+/// The leaves' common named arrays as (leaf name, output name) pairs, cell arrays in
+/// carried[0], point arrays in carried[1]: renamed, with a warning, where the unfolder writes an
+/// array of the same name (only in trees not written by this builder, which renames such input
+/// arrays itself).
+void CarriedArrayNames(const std::vector<vtkPolyData*>& leaves,
+  vtkObject* warner,
+  std::vector<std::pair<std::string, std::string>> carried[2])
+{
+  int unnamed[2] = { 0, 0 };
+  for (int points = 0; points < 2; ++points)
+  {
+    const std::vector<std::string>& own =
+      points ? UnfoldedPointArrayNames() : UnfoldedCellArrayNames();
+    const std::vector<std::string> names = CommonLeafArrays(leaves, points != 0, unnamed[points]);
+    for (const std::string& name : names)
+    {
+      std::string as = name;
+      if (std::find(own.begin(), own.end(), name) != own.end())
+      {
+        std::vector<std::string> avoid(own);
+        avoid.insert(avoid.end(), names.begin(), names.end());
+        as = FreeInputName(nullptr, name, avoid);
+        vtkWarningWithObjectMacro(warner,
+          "The leaves' " << (points ? "point" : "cell") << " array " << name << " is carried as "
+                         << as << " (the name is the unfolder's).");
+      }
+      carried[points].emplace_back(name, as);
+    }
+  }
+  if (unnamed[0] + unnamed[1] > 0)
+    vtkWarningWithObjectMacro(warner,
+      "Unnamed leaf arrays are not carried (" << unnamed[0] << " point, " << unnamed[1]
+                                              << " cell arrays).");
+}
 }
 
 void AddFieldValue(vtkFieldData* fd, const char* name, double value)
@@ -187,34 +222,8 @@ bool CarryLeafArrays(const FoldingTree& tree,
     faceLocal[f] = it->second;
     faceCopy[f] = mesh.faceCopy[f];
   }
-  // The leaves' arrays, renamed where the unfolder writes an array of the same name (only in
-  // trees not written by this builder, which renames such input arrays itself).
-  int unnamed[2] = { 0, 0 };
   std::vector<std::pair<std::string, std::string>> carried[2];
-  for (int points = 0; points < 2; ++points)
-  {
-    const std::vector<std::string>& own =
-      points ? UnfoldedPointArrayNames() : UnfoldedCellArrayNames();
-    const std::vector<std::string> names = CommonLeafArrays(leaves, points != 0, unnamed[points]);
-    for (const std::string& name : names)
-    {
-      std::string as = name;
-      if (std::find(own.begin(), own.end(), name) != own.end())
-      {
-        std::vector<std::string> avoid(own);
-        avoid.insert(avoid.end(), names.begin(), names.end());
-        as = FreeInputName(nullptr, name, avoid);
-        vtkWarningWithObjectMacro(warner,
-          "The leaves' " << (points ? "point" : "cell") << " array " << name << " is carried as "
-                         << as << " (the name is the unfolder's).");
-      }
-      carried[points].emplace_back(name, as);
-    }
-  }
-  if (unnamed[0] + unnamed[1] > 0)
-    vtkWarningWithObjectMacro(warner,
-      "Unnamed leaf arrays are not carried (" << unnamed[0] << " point, " << unnamed[1]
-                                              << " cell arrays).");
+  CarriedArrayNames(leaves, warner, carried);
   CarryArrays(carried[1],
     leaves,
     true,
