@@ -159,18 +159,74 @@ bool FillWithinTolerance(const std::vector<Vec3>& points,
   const std::vector<Triangle>& fill,
   double tolerance);
 
-struct CellKey
+// ---- the stages of a seam's stitch (FoldingTreeUnfolderStitching.cxx) ----
+
+/// Two vertices proposed for merging, a < b, at `distance`; sameChild: of one child.
+struct StitchProposal
 {
-  long long x, y, z;
-  bool operator==(const CellKey& o) const { return x == o.x && y == o.y && z == o.z; }
+  double distance;
+  int a, b;
+  bool sameChild;
 };
-struct CellHash
+
+/// Merged vertices: rep[v] is v's cluster root (v itself when not merged), count[r] the
+/// members of root r, spread[r] the farthest any member moved, children[r] the sorted child
+/// ids the cluster spans.
+struct StitchClusters
 {
-  size_t operator()(const CellKey& k) const
-  {
-    return static_cast<size_t>(k.x * 73856093LL ^ k.y * 19349663LL ^ k.z * 83492791LL);
-  }
+  std::vector<int> rep;
+  std::vector<int> count;
+  std::vector<double> spread;
+  std::unordered_map<int, std::vector<int>> children;
 };
+
+/// The piece after the merge, with per point what the zipper, the gap filling and the
+/// smoothing need: the children a point belongs to, whether it was merged, whether it was a
+/// stitch candidate, and how far smoothing may move it (rough; 0: fixed); per face its child.
+struct SeamPiece
+{
+  Piece piece;
+  std::vector<int> faceChild;
+  std::vector<std::vector<int>> children;
+  std::vector<char> matched, candidate;
+  std::vector<double> rough;
+};
+
+/// Each candidate (`tears`) paired with its nearest candidate of another child within `tol`
+/// (lowest distance, then id), and with every candidate of its own child within
+/// `sameChildDistance`; sorted by (distance, a, b).
+std::vector<StitchProposal> ProposeStitches(const std::vector<Vec3>& points,
+  const std::vector<int>& tears,
+  const std::vector<int>& childOf,
+  double tol,
+  double sameChildDistance);
+
+/// Union-find over the proposals in order: two clusters merge unless they share a child
+/// (proposals of one child excepted).
+StitchClusters ClusterStitches(const std::vector<StitchProposal>& proposals,
+  const std::vector<int>& childOf,
+  int n);
+
+/// Moves each cluster to its mean, else to one of its members (lowest id first), whichever
+/// keeps every member within its error budget; a cluster with no such place is dissolved
+/// (SeamReport::budgetRejectedClusters). Spends the budgets, merges the tear lists into the
+/// roots and counts the stitched vertices.
+void PlaceClusters(Piece& piece, StitchClusters& clusters, SeamReport& seam);
+
+/// Removes the points of `merged` no face uses, with their per-point data.
+void DropUnusedPoints(SeamPiece& merged);
+
+/**
+ * The paper's constrained Laplacian smoothing of the seam (section 4.3): `iterations` steps of
+ * x <- (1 - lambda) x + lambda * mean of its neighbours for the vertices with rough > 0, each
+ * kept within min(rough, budget) of where it started (rough: the distance its stitch moved
+ * it), the others fixed, so sharp features along a seam are not eroded. Spends the budgets;
+ * returns the number of vertices with rough > 0.
+ */
+int ConstrainedLaplacianSmoothing(Piece& out,
+  std::vector<double> rough,
+  int iterations,
+  double lambda);
 
 /// Hash of an edge (pair of point ids), for the repair's edge sets.
 struct EdgeHash
@@ -274,6 +330,15 @@ private:
     SeamReport& seam,
     double sameChildDistance = 0.0);
 
+  /// The piece with each stitch cluster one vertex: faces remapped, collapsed and duplicate
+  /// faces dropped (but the input's own duplicates), unused points dropped; rough = the
+  /// cluster's spread where it exceeds `roughAbove`.
+  SeamPiece MergeClusters(const Piece& piece,
+    const std::vector<char>& candidate,
+    const std::vector<int>& childOf,
+    const StitchClusters& clusters,
+    double roughAbove,
+    SeamReport& seam) const;
   int InputNonManifoldFaces(const Piece& piece, int a, int b) const;
   bool InputDuplicate(const Piece& piece,
     const Triangle& t,

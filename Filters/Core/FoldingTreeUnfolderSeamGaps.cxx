@@ -1,5 +1,6 @@
 // Seam repair after pairing: the zipper and the ear-clipping fill of small seam gap loops.
 #include "FoldingTreeUnfolderInternal.h"
+#include "PointBuckets.h"
 
 #include <algorithm>
 #include <array>
@@ -66,7 +67,7 @@ int Unfolder::Zip(Piece& out,
       longest = std::max(longest, (out.points[e.first] - out.points[e.second]).norm());
     const double cell = std::max({ tol, longest / 8.0, 1e-300 });
     auto cellOf = [cell](double x) { return static_cast<long long>(std::floor(x / cell)); };
-    std::unordered_map<CellKey, std::vector<int>, CellHash> buckets;
+    std::unordered_map<std::array<long long, 3>, std::vector<int>, PointBuckets::KeyHash> buckets;
     for (int i = 0; i < static_cast<int>(open.size()); ++i)
     {
       const Vec3 lo = out.points[open[i].first].cwiseMin(out.points[open[i].second]);
@@ -74,7 +75,7 @@ int Unfolder::Zip(Piece& out,
       for (long long x = cellOf(lo.x() - tol); x <= cellOf(hi.x() + tol); ++x)
         for (long long y = cellOf(lo.y() - tol); y <= cellOf(hi.y() + tol); ++y)
           for (long long z = cellOf(lo.z() - tol); z <= cellOf(hi.z() + tol); ++z)
-            buckets[CellKey{ x, y, z }].push_back(i);
+            buckets[{ x, y, z }].push_back(i);
     }
     for (int u = 0; u < out.NumberOfPoints(); ++u)
     {
@@ -85,7 +86,7 @@ int Unfolder::Zip(Piece& out,
       Edge bestEdge;
       double bestDistance = tol;
       Vec3 bestPoint = x;
-      auto bucket = buckets.find(CellKey{ cellOf(x.x()), cellOf(x.y()), cellOf(x.z()) });
+      auto bucket = buckets.find({ cellOf(x.x()), cellOf(x.y()), cellOf(x.z()) });
       if (bucket == buckets.end())
         continue;
       for (int i : bucket->second) // increasing i: the map order of the edges

@@ -1,5 +1,6 @@
 // Seam stitching and final weld: union-find pairing, budgeted cluster placement, smoothing.
 #include "FoldingTreeUnfolderInternal.h"
+#include "PointBuckets.h"
 
 #include <algorithm>
 #include <array>
@@ -93,10 +94,11 @@ bool Unfolder::InputDuplicate(const Piece& piece,
 }
 
 /**
- * Stitching of the candidate vertices `isTear` (see UnfoldFoldingTree): pairing by
- * union-find within `tol` (two vertices of one child only within `sameChildDistance`), merged
- * clusters placed where every member's move stays within its error budget, zipper, gap filling,
- * constrained smoothing. Fills seam's stitch statistics (not the gaps).
+ * Stitching of the candidate vertices (see UnfoldFoldingTree), in stages: proposals
+ * (ProposeStitches), clusters (ClusterStitches), their placement within the error budgets
+ * (PlaceClusters), the merge (MergeClusters), the zipper, gap filling and the paper's
+ * constrained Laplacian smoothing (ConstrainedLaplacianSmoothing). Two vertices of one child
+ * merge only within `sameChildDistance`. Fills seam's stitch statistics (not the gaps).
  */
 void Unfolder::StitchVertices(Piece& piece,
   const std::vector<char>& candidate,
@@ -112,61 +114,64 @@ void Unfolder::StitchVertices(Piece& piece,
     if (candidate[v])
       tears.push_back(v);
   seam.tearVertices = static_cast<int>(tears.size());
+  const std::vector<StitchProposal> proposals =
+    ProposeStitches(piece.points, tears, childOf, tol, sameChildDistance);
+  StitchClusters clusters = ClusterStitches(proposals, childOf, piece.NumberOfPoints());
+  PlaceClusters(piece, clusters, seam);
+  // Smoothing budget: how far a merged vertex may move (its cluster's spread); 0: fixed.
+  SeamPiece out = this->MergeClusters(
+    piece, candidate, childOf, clusters, this->Options.exactStitchFraction * epsilon, seam);
 
-  auto key = [&](const Vec3& x)
+  // Zipper: tear vertices left without a partner vertex are inserted into the nearest open
+  // seam edge of another child (splitting its triangle), so seams whose two sides were
+  // tessellated differently close too.
+  if (this->Options.zipper)
   {
-    return CellKey{ static_cast<long long>(std::floor(x.x() / tol)),
-      static_cast<long long>(std::floor(x.y() / tol)),
-      static_cast<long long>(std::floor(x.z() / tol)) };
-  };
-  std::unordered_map<CellKey, std::vector<int>, CellHash> cells;
-  for (int v : tears)
-    cells[key(piece.points[v])].push_back(v);
+    const int zipped =
+      Zip(out.piece, out.faceChild, out.children, out.matched, out.candidate, tol, out.rough);
+    seam.zippedVertices = zipped;
+    seam.stitchedVertices += zipped;
+    seam.unmatchedTearVertices -= zipped;
+  }
+  if (fill)
+    FillSeamGaps(out.piece, out.faceChild, out.children, out.candidate, tol, seam);
+  seam.smoothedVertices = ConstrainedLaplacianSmoothing(
+    out.piece, out.rough, this->Options.smoothingIterations, this->Options.smoothingWeight);
+  piece = std::move(out.piece);
+}
 
-  // Proposals: each tear vertex's nearest tear vertex of another child.
-  struct Proposal
-  {
-    double distance;
-    int a, b;
-    bool sameChild; // two vertices of one child (within sameChildDistance)
-  };
-  std::vector<Proposal> proposals;
+std::vector<StitchProposal> ProposeStitches(const std::vector<Vec3>& points,
+  const std::vector<int>& tears,
+  const std::vector<int>& childOf,
+  double tol,
+  double sameChildDistance)
+{
+  PointBuckets grid;
+  grid.cell = tol;
+  for (int v : tears)
+    grid.Add(points[v], v);
+  std::vector<StitchProposal> proposals;
   for (int v : tears)
   {
-    const CellKey c = key(piece.points[v]);
-    int best = -1;
-    double bestDistance = tol;
-    for (long long dx = -1; dx <= 1; ++dx)
-      for (long long dy = -1; dy <= 1; ++dy)
-        for (long long dz = -1; dz <= 1; ++dz)
-        {
-          auto it = cells.find(CellKey{ c.x + dx, c.y + dy, c.z + dz });
-          if (it == cells.end())
-            continue;
-          for (int w : it->second)
-          {
-            if (childOf[w] == childOf[v])
-            {
-              // (merged with each other only when nearly coincident)
-              const double d = (piece.points[w] - piece.points[v]).norm();
-              if (sameChildDistance > 0.0 && w > v && d <= sameChildDistance)
-                proposals.push_back({ d, v, w, true });
-              continue;
-            }
-            const double d = (piece.points[w] - piece.points[v]).norm();
-            if (d <= tol && (best < 0 || d < bestDistance || (d == bestDistance && w < best)))
-            {
-              bestDistance = d;
-              best = w;
-            }
-          }
-        }
+    // Each tear vertex's nearest tear vertex of another child (lowest distance, then id).
+    const int best =
+      grid.NearestWhere(points, points[v], tol, [&](int w) { return childOf[w] != childOf[v]; });
     if (best >= 0)
-      proposals.push_back({ bestDistance, std::min(v, best), std::max(v, best), false });
+      proposals.push_back(
+        { (points[best] - points[v]).norm(), std::min(v, best), std::max(v, best), false });
+    // Two vertices of one child are merged with each other only when nearly coincident.
+    if (sameChildDistance > 0.0)
+      grid.ForEachNear(points[v],
+        [&](int w)
+        {
+          const double d = (points[w] - points[v]).norm();
+          if (childOf[w] == childOf[v] && w > v && d <= sameChildDistance)
+            proposals.push_back({ d, v, w, true });
+        });
   }
   std::sort(proposals.begin(),
     proposals.end(),
-    [](const Proposal& x, const Proposal& y)
+    [](const StitchProposal& x, const StitchProposal& y)
     {
       if (x.distance != y.distance)
         return x.distance < y.distance;
@@ -174,11 +179,17 @@ void Unfolder::StitchVertices(Piece& piece,
         return x.a < y.a;
       return x.b < y.b;
     });
+  return proposals;
+}
 
-  const int n = piece.NumberOfPoints();
+StitchClusters ClusterStitches(const std::vector<StitchProposal>& proposals,
+  const std::vector<int>& childOf,
+  int n)
+{
+  StitchClusters clusters;
   std::vector<int> parent(n);
   std::iota(parent.begin(), parent.end(), 0);
-  std::unordered_map<int, std::vector<int>> childrenOfRoot; // sorted child ids per cluster
+  auto& childrenOfRoot = clusters.children;
   auto childrenOf = [&](int root) -> std::vector<int>&
   {
     auto it = childrenOfRoot.find(root);
@@ -186,7 +197,7 @@ void Unfolder::StitchVertices(Piece& piece,
       it = childrenOfRoot.emplace(root, std::vector<int>{ childOf[root] }).first;
     return it->second;
   };
-  for (const Proposal& pr : proposals)
+  for (const StitchProposal& pr : proposals)
   {
     const int ra = FindRoot(parent, pr.a), rb = FindRoot(parent, pr.b);
     if (ra == rb)
@@ -206,17 +217,24 @@ void Unfolder::StitchVertices(Piece& piece,
     childrenOfRoot[root] = std::move(merged);
     childrenOfRoot.erase(other);
   }
-
-  // Clusters: mean position; spread decides smoothing.
-  std::vector<int> rep(n);
-  std::vector<Vec3> sum(n, Vec3::Zero());
-  std::vector<int> count(n, 0);
+  clusters.rep.resize(n);
+  clusters.count.assign(n, 0);
   for (int v = 0; v < n; ++v)
   {
-    rep[v] = FindRoot(parent, v);
-    sum[rep[v]] += piece.points[v];
-    ++count[rep[v]];
+    clusters.rep[v] = FindRoot(parent, v);
+    ++clusters.count[clusters.rep[v]];
   }
+  return clusters;
+}
+
+void PlaceClusters(Piece& piece, StitchClusters& clusters, SeamReport& seam)
+{
+  const int n = piece.NumberOfPoints();
+  std::vector<int>& rep = clusters.rep;
+  std::vector<int>& count = clusters.count;
+  std::vector<Vec3> sum(n, Vec3::Zero());
+  for (int v = 0; v < n; ++v)
+    sum[rep[v]] += piece.points[v];
   // Where a cluster goes: its mean, else the position of one of its members (lowest id
   // first), whichever moves no member farther than its error budget; none: not merged.
   std::vector<std::vector<int>> members(n);
@@ -252,11 +270,12 @@ void Unfolder::StitchVertices(Piece& piece,
         rep[v] = v;
         count[v] = 1;
       }
-      childrenOfRoot.erase(r);
+      clusters.children.erase(r);
       members[r].clear();
     }
   }
-  std::vector<double> spread(n, 0.0);
+  std::vector<double>& spread = clusters.spread;
+  spread.assign(n, 0.0);
   for (int r = 0; r < n; ++r)
     for (int v : members[r])
     {
@@ -285,31 +304,39 @@ void Unfolder::StitchVertices(Piece& piece,
       piece.border[rep[v]] = std::max(piece.border[rep[v]], piece.border[v]);
     }
   seam.unmatchedTearVertices = seam.tearVertices - seam.stitchedVertices;
+}
 
-  // Remap faces; drop collapsed and duplicate ones (but the input's own duplicates:
-  // InputDuplicate).
-  Piece out;
+SeamPiece Unfolder::MergeClusters(const Piece& piece,
+  const std::vector<char>& candidate,
+  const std::vector<int>& childOf,
+  const StitchClusters& clusters,
+  double roughAbove,
+  SeamReport& seam) const
+{
+  const int n = piece.NumberOfPoints();
+  const std::vector<int>& rep = clusters.rep;
+  const std::vector<int>& count = clusters.count;
+  SeamPiece merged;
+  Piece& out = merged.piece;
   std::vector<int> newId(n, -1);
-  std::vector<std::vector<int>> outChildren; // children a point belongs to (sorted)
-  std::vector<char> outMatched, outCandidate;
   for (int v = 0; v < n; ++v)
     if (rep[v] == v)
     {
       newId[v] = out.NumberOfPoints();
       out.AppendPoint(piece, v);
-      outCandidate.push_back(candidate[v]);
-      auto it = childrenOfRoot.find(v);
-      outChildren.push_back(
-        it != childrenOfRoot.end() ? it->second : std::vector<int>{ childOf[v] });
-      outMatched.push_back(count[v] >= 2);
+      merged.candidate.push_back(candidate[v]);
+      auto it = clusters.children.find(v);
+      merged.children.push_back(
+        it != clusters.children.end() ? it->second : std::vector<int>{ childOf[v] });
+      merged.matched.push_back(count[v] >= 2);
     }
-  std::vector<int> faceChild;
-  // Smoothing budget: how far a merged vertex may move (its cluster's spread); 0: fixed.
-  std::vector<double> rough(out.points.size(), 0.0);
+  merged.rough.assign(out.points.size(), 0.0);
   for (int v = 0; v < n; ++v)
-    if (rep[v] == v && count[v] >= 2 && spread[v] > this->Options.exactStitchFraction * epsilon)
-      rough[newId[v]] = spread[v];
-  // Sorted vertices -> the faces kept there: input face and sorted input ids of its vertices.
+    if (rep[v] == v && count[v] >= 2 && clusters.spread[v] > roughAbove)
+      merged.rough[newId[v]] = clusters.spread[v];
+  // Remap faces; drop collapsed and duplicate ones (but the input's own duplicates:
+  // InputDuplicate). Sorted vertices -> the faces kept there: input face and sorted input ids
+  // of its vertices.
   std::map<std::array<int, 3>, std::vector<std::pair<int, std::array<int, 3>>>> seen;
   for (int f = 0; f < piece.NumberOfFaces(); ++f)
   {
@@ -335,103 +362,88 @@ void Unfolder::StitchVertices(Piece& piece,
     out.faceOrig.push_back(piece.faceOrig[f]);
     out.faceCopy.push_back(piece.faceCopy[f]);
     out.faceFilled.push_back(piece.faceFilled[f]);
-    faceChild.push_back(childOf[t[0]]);
+    merged.faceChild.push_back(childOf[t[0]]);
   }
-  // Drop points no face uses any more (keeps the output compact).
-  {
-    std::vector<char> used(out.points.size(), 0);
-    for (const Triangle& t : out.triangles)
-      for (int v : t)
-        used[v] = 1;
-    Piece compact;
-    std::vector<int> id(out.points.size(), -1);
-    std::vector<double> compactRough;
-    std::vector<char> compactMatched, compactCandidate;
-    std::vector<std::vector<int>> compactChildren;
-    for (int v = 0; v < out.NumberOfPoints(); ++v)
-      if (used[v])
-      {
-        id[v] = compact.NumberOfPoints();
-        compact.AppendPoint(out, v);
-        compactCandidate.push_back(outCandidate[v]);
-        compactRough.push_back(rough[v]);
-        compactMatched.push_back(outMatched[v]);
-        compactChildren.push_back(outChildren[v]);
-      }
-    for (const Triangle& t : out.triangles)
-      compact.triangles.push_back({ id[t[0]], id[t[1]], id[t[2]] });
-    compact.faceOrig = std::move(out.faceOrig);
-    compact.faceCopy = std::move(out.faceCopy);
-    compact.faceFilled = std::move(out.faceFilled);
-    out = std::move(compact);
-    rough = std::move(compactRough);
-    outMatched = std::move(compactMatched);
-    outChildren = std::move(compactChildren);
-    outCandidate = std::move(compactCandidate);
-  }
+  DropUnusedPoints(merged);
+  return merged;
+}
 
-  // Zipper: tear vertices left without a partner vertex are inserted into the nearest open
-  // seam edge of another child (splitting its triangle), so seams whose two sides were
-  // tessellated differently close too.
-  if (this->Options.zipper)
-  {
-    const int zipped = Zip(out, faceChild, outChildren, outMatched, outCandidate, tol, rough);
-    seam.zippedVertices = zipped;
-    seam.stitchedVertices += zipped;
-    seam.unmatchedTearVertices -= zipped;
-  }
-  if (fill)
-    FillSeamGaps(out, faceChild, outChildren, outCandidate, tol, seam);
+void DropUnusedPoints(SeamPiece& merged)
+{
+  Piece& out = merged.piece;
+  std::vector<char> used(out.points.size(), 0);
+  for (const Triangle& t : out.triangles)
+    for (int v : t)
+      used[v] = 1;
+  SeamPiece compact;
+  std::vector<int> id(out.points.size(), -1);
+  for (int v = 0; v < out.NumberOfPoints(); ++v)
+    if (used[v])
+    {
+      id[v] = compact.piece.NumberOfPoints();
+      compact.piece.AppendPoint(out, v);
+      compact.candidate.push_back(merged.candidate[v]);
+      compact.rough.push_back(merged.rough[v]);
+      compact.matched.push_back(merged.matched[v]);
+      compact.children.push_back(merged.children[v]);
+    }
+  for (const Triangle& t : out.triangles)
+    compact.piece.triangles.push_back({ id[t[0]], id[t[1]], id[t[2]] });
+  compact.piece.faceOrig = std::move(out.faceOrig);
+  compact.piece.faceCopy = std::move(out.faceCopy);
+  compact.piece.faceFilled = std::move(out.faceFilled);
+  compact.faceChild = std::move(merged.faceChild);
+  merged = std::move(compact);
+}
 
-  // Constrained Laplacian smoothing of the rough seam vertices: the others are fixed, and
-  // each moves at most by its budget (the distance its stitch already moved it), so
-  // sharp features along a seam are not eroded.
+int ConstrainedLaplacianSmoothing(Piece& out,
+  std::vector<double> rough,
+  int iterations,
+  double lambda)
+{
   int smoothed = 0;
   for (double r : rough)
     smoothed += r > 0.0;
-  if (smoothed > 0 && this->Options.smoothingIterations > 0)
+  if (smoothed == 0 || iterations <= 0)
+    return smoothed;
+  std::vector<std::vector<int>> ring(out.points.size());
+  for (const Triangle& t : out.triangles)
+    for (int k = 0; k < 3; ++k)
+    {
+      const int a = t[k], b = t[(k + 1) % 3];
+      if (rough[a] > 0.0)
+        ring[a].push_back(b);
+      if (rough[b] > 0.0)
+        ring[b].push_back(a);
+    }
+  for (auto& r : ring)
   {
-    std::vector<std::vector<int>> ring(out.points.size());
-    for (const Triangle& t : out.triangles)
-      for (int k = 0; k < 3; ++k)
-      {
-        const int a = t[k], b = t[(k + 1) % 3];
-        if (rough[a] > 0.0)
-          ring[a].push_back(b);
-        if (rough[b] > 0.0)
-          ring[b].push_back(a);
-      }
-    for (auto& r : ring)
-    {
-      std::sort(r.begin(), r.end());
-      r.erase(std::unique(r.begin(), r.end()), r.end());
-    }
-    const double lambda = this->Options.smoothingWeight;
-    const std::vector<Vec3> start = out.points;
-    for (size_t v = 0; v < rough.size(); ++v)
-      rough[v] = std::min(rough[v], out.budget[v]);
-    for (int iteration = 0; iteration < this->Options.smoothingIterations; ++iteration)
-    {
-      std::vector<Vec3> next = out.points;
-      for (int v = 0; v < out.NumberOfPoints(); ++v)
-        if (rough[v] > 0.0 && !ring[v].empty())
-        {
-          Vec3 mean = Vec3::Zero();
-          for (int w : ring[v])
-            mean += out.points[w];
-          mean /= static_cast<double>(ring[v].size());
-          next[v] = (1.0 - lambda) * out.points[v] + lambda * mean;
-          const Vec3 moved = next[v] - start[v];
-          if (moved.norm() > rough[v])
-            next[v] = start[v] + moved * (rough[v] / moved.norm());
-        }
-      out.points.swap(next);
-    }
-    for (int v = 0; v < out.NumberOfPoints(); ++v)
-      out.budget[v] = std::max(0.0, out.budget[v] - (out.points[v] - start[v]).norm());
+    std::sort(r.begin(), r.end());
+    r.erase(std::unique(r.begin(), r.end()), r.end());
   }
-  seam.smoothedVertices = smoothed;
-  piece = std::move(out);
+  const std::vector<Vec3> start = out.points;
+  for (size_t v = 0; v < rough.size(); ++v)
+    rough[v] = std::min(rough[v], out.budget[v]);
+  for (int iteration = 0; iteration < iterations; ++iteration)
+  {
+    std::vector<Vec3> next = out.points;
+    for (int v = 0; v < out.NumberOfPoints(); ++v)
+      if (rough[v] > 0.0 && !ring[v].empty())
+      {
+        Vec3 mean = Vec3::Zero();
+        for (int w : ring[v])
+          mean += out.points[w];
+        mean /= static_cast<double>(ring[v].size());
+        next[v] = (1.0 - lambda) * out.points[v] + lambda * mean;
+        const Vec3 moved = next[v] - start[v];
+        if (moved.norm() > rough[v])
+          next[v] = start[v] + moved * (rough[v] / moved.norm());
+      }
+    out.points.swap(next);
+  }
+  for (int v = 0; v < out.NumberOfPoints(); ++v)
+    out.budget[v] = std::max(0.0, out.budget[v] - (out.points[v] - start[v]).norm());
+  return smoothed;
 }
 } // namespace unfolder_detail
 } // namespace foldingmeshes

@@ -40,6 +40,22 @@ struct PointBuckets
       static_cast<long long>(std::floor(x.z() / cell)) };
   }
   void Add(const Vec3& x, int id) { cells[Key(x)].push_back(id); }
+  /// Calls f(v) for every bucketed point v in the 27 cells around x (all those within `cell`
+  /// of x, and some farther), in no particular order: callers that need an order sort.
+  template <typename Visit>
+  void ForEachNear(const Vec3& x, Visit f) const
+  {
+    const auto c = Key(x);
+    for (long long dx = -1; dx <= 1; ++dx)
+      for (long long dy = -1; dy <= 1; ++dy)
+        for (long long dz = -1; dz <= 1; ++dz)
+        {
+          auto it = cells.find({ c[0] + dx, c[1] + dy, c[2] + dz });
+          if (it != cells.end())
+            for (int v : it->second)
+              f(v);
+        }
+  }
   int Nearest(const std::vector<Vec3>& points, const Vec3& x, double radius) const
   {
     return this->NearestWhere(points, x, radius, [](int) { return true; });
@@ -52,28 +68,20 @@ struct PointBuckets
     double radius,
     Member member) const
   {
-    const auto c = Key(x);
     int best = -1;
     double bestDistance = radius;
-    for (long long dx = -1; dx <= 1; ++dx)
-      for (long long dy = -1; dy <= 1; ++dy)
-        for (long long dz = -1; dz <= 1; ++dz)
+    this->ForEachNear(x,
+      [&](int v)
+      {
+        if (!member(v))
+          return;
+        const double d = (points[v] - x).norm();
+        if (d <= bestDistance && (best < 0 || d < bestDistance || v < best))
         {
-          auto it = cells.find({ c[0] + dx, c[1] + dy, c[2] + dz });
-          if (it == cells.end())
-            continue;
-          for (int v : it->second)
-          {
-            if (!member(v))
-              continue;
-            const double d = (points[v] - x).norm();
-            if (d <= bestDistance && (best < 0 || d < bestDistance || v < best))
-            {
-              bestDistance = d;
-              best = v;
-            }
-          }
+          bestDistance = d;
+          best = v;
         }
+      });
     return best;
   }
 };
