@@ -3,6 +3,7 @@
 #include "FoldingTreeBuilderInternal.h"
 
 #include "CandidatePlanes.h"
+#include "EdgeTable.h"
 #include "MeshPreparation.h"
 #include "MirrorDistance.h"
 #include "RegionGrowing.h"
@@ -143,14 +144,11 @@ int Builder::Build(WorkMesh w, int parent, int depth, double eps, int folds, uin
     this->Tree.numberOfDroppedFaces = static_cast<int>(dropped.size());
     // The input's own border (edges of one face), by input point id: recorded in the
     // leaves (FoldingLeafMesh::inputBoundary); does not change any folding decision.
-    std::map<std::pair<int, int>, int> uses;
-    for (const Triangle& t : w.triangles)
-      for (int k = 0; k < 3; ++k)
-        ++uses[{ std::min(t[k], t[(k + 1) % 3]), std::max(t[k], t[(k + 1) % 3]) }];
+    const EdgeTable uses = EdgeFaces(w.triangles);
     this->InputBoundary.assign(this->Tree.numberOfOriginalPoints, 0);
     this->Tree.inputBorderEdges.clear();
     for (const auto& e : uses)
-      if (e.second == 1)
+      if (e.second.size() == 1)
       {
         const int a = w.pointOrig[e.first.first], b = w.pointOrig[e.first.second];
         this->Tree.inputBorderEdges.push_back({ std::min(a, b), std::max(a, b) });
@@ -163,10 +161,11 @@ int Builder::Build(WorkMesh w, int parent, int depth, double eps, int folds, uin
     // unfolder's repair keeps their faces (FoldingTree::inputNonManifoldEdges).
     this->Tree.inputNonManifoldEdges.clear();
     for (const auto& e : uses)
-      if (e.second > 2)
+      if (e.second.size() > 2)
       {
         const int a = w.pointOrig[e.first.first], b = w.pointOrig[e.first.second];
-        this->Tree.inputNonManifoldEdges.push_back({ std::min(a, b), std::max(a, b), e.second });
+        this->Tree.inputNonManifoldEdges.push_back(
+          { std::min(a, b), std::max(a, b), static_cast<int>(e.second.size()) });
       }
     std::sort(this->Tree.inputNonManifoldEdges.begin(), this->Tree.inputNonManifoldEdges.end());
   }

@@ -1,11 +1,12 @@
 // Folding-tree unfolding: postorder traversal, mirrored copies, on-plane merging, reports.
 #include "FoldingTreeUnfolder.h"
+#include "EdgeTable.h"
 #include "FoldingTreeUnfolderInternal.h"
 
 #include <algorithm>
-#include <cstdlib>
 #include <array>
 #include <cmath>
+#include <cstdlib>
 #include <limits>
 #include <map>
 
@@ -126,14 +127,10 @@ void Unfolder::Reflect(const FoldingNode& node, Piece& piece)
   if (this->Options.foldLineToleranceScale > 0.0)
   {
     const double slab = this->Options.foldLineToleranceScale * node.epsilon;
-    std::map<std::pair<int, int>, int> edges;
-    for (const Triangle& t : piece.triangles)
-      for (int k = 0; k < 3; ++k)
-        ++edges[{ std::min(t[k], t[(k + 1) % 3]), std::max(t[k], t[(k + 1) % 3]) }];
-    for (const auto& e : edges)
+    for (const Edge& e : OpenEdges(piece.triangles))
     {
-      const int a = e.first.first, b = e.first.second;
-      if (e.second == 1 && std::abs(p.SignedDistance(piece.points[a])) <= slab &&
+      const int a = e.first, b = e.second;
+      if (std::abs(p.SignedDistance(piece.points[a])) <= slab &&
         std::abs(p.SignedDistance(piece.points[b])) <= slab)
         inSlab[a] = inSlab[b] = 1;
     }
@@ -226,25 +223,42 @@ void Unfolder::Consume(Piece& piece, int code)
 /// Boundary edges whose two vertices are tear vertices.
 void Unfolder::CountGaps(const Piece& piece, const std::vector<char>& isTear, SeamReport& seam)
 {
-  std::map<std::pair<int, int>, int> edges;
-  for (const Triangle& t : piece.triangles)
-    for (int k = 0; k < 3; ++k)
-    {
-      const int a = t[k], b = t[(k + 1) % 3];
-      if (isTear[a] && isTear[b])
-        ++edges[{ std::min(a, b), std::max(a, b) }];
-    }
-  for (const auto& e : edges)
-    if (e.second == 1)
+  for (const Edge& e : OpenEdges(piece.triangles))
+    if (isTear[e.first] && isTear[e.second])
     {
       ++seam.gapEdges;
-      seam.gapLength += (piece.points[e.first.first] - piece.points[e.first.second]).norm();
+      seam.gapLength += (piece.points[e.first] - piece.points[e.second]).norm();
     }
 }
 } // namespace unfolder_detail
 
 using unfolder_detail::Piece;
 using unfolder_detail::Unfolder;
+
+namespace
+{
+/// Open, non-manifold and misoriented edges of the result (an edge used twice in the same
+/// direction is misoriented).
+void CountEdgeDefects(UnfoldedMesh& result)
+{
+  for (const auto& e : EdgeFaces(result.triangles))
+  {
+    int forward = 0;
+    for (size_t i = 0; i < e.second.size(); ++i)
+    {
+      if (i > 0 && e.second[i] == e.second[i - 1])
+        continue; // a degenerate face on the edge twice: count its traversals once
+      const Triangle& t = result.triangles[e.second[i]];
+      for (int k = 0; k < 3; ++k)
+        forward += t[k] == e.first.first && t[(k + 1) % 3] == e.first.second;
+    }
+    const int uses = static_cast<int>(e.second.size());
+    result.openEdges += uses == 1;
+    result.nonManifoldEdges += uses > 2;
+    result.misorientedEdges += uses == 2 && forward != 1;
+  }
+}
+}
 
 bool UnfoldFoldingTree(const FoldingTree& tree,
   const UnfoldOptions& options,
@@ -296,29 +310,10 @@ bool UnfoldFoldingTree(const FoldingTree& tree,
   result.pointMirrored.resize(result.points.size());
   for (size_t v = 0; v < result.points.size(); ++v)
     result.pointMirrored[v] = result.copies[result.pointCopy[v]].mirrored;
-  {
-    // Per undirected edge: uses in increasing and in decreasing vertex order.
-    std::map<std::pair<int, int>, std::array<int, 2>> edges;
-    for (const Triangle& t : result.triangles)
-      for (int k = 0; k < 3; ++k)
-      {
-        const int a = t[k], b = t[(k + 1) % 3];
-        auto it =
-          edges.emplace(std::make_pair(std::min(a, b), std::max(a, b)), std::array<int, 2>{ 0, 0 })
-            .first;
-        ++it->second[a < b ? 0 : 1];
-      }
-    for (const auto& e : edges)
-    {
-      const int uses = e.second[0] + e.second[1];
-      result.openEdges += uses == 1;
-      result.nonManifoldEdges += uses > 2;
-      result.misorientedEdges += uses == 2 && e.second[0] != 1;
-    }
-    for (const SeamReport& seam : result.seams)
-      result.budgetRejectedClusters += seam.budgetRejectedClusters;
-    result.budgetRejectedClusters += result.weld.budgetRejectedClusters;
-  }
+  CountEdgeDefects(result);
+  for (const SeamReport& seam : result.seams)
+    result.budgetRejectedClusters += seam.budgetRejectedClusters;
+  result.budgetRejectedClusters += result.weld.budgetRejectedClusters;
   result.filledFaces =
     static_cast<int>(std::count(result.faceFilled.begin(), result.faceFilled.end(), char(1)));
   result.faceLeaf.resize(result.triangles.size());

@@ -1,5 +1,6 @@
 #include "MeshPreparation.h"
 
+#include "EdgeTable.h"
 #include "PointBuckets.h"
 #include "UnionFind.h"
 
@@ -424,14 +425,9 @@ void LinkNearbyParts(PreparedMesh& mesh, double gap)
 
 std::vector<char> BorderPoints(const std::vector<Triangle>& triangles, size_t pointCount)
 {
-  std::map<std::pair<int, int>, int> uses;
-  for (const Triangle& t : triangles)
-    for (int k = 0; k < 3; ++k)
-      ++uses[{ std::min(t[k], t[(k + 1) % 3]), std::max(t[k], t[(k + 1) % 3]) }];
   std::vector<char> border(pointCount, 0);
-  for (const auto& e : uses)
-    if (e.second == 1)
-      border[e.first.first] = border[e.first.second] = 1;
+  for (const Edge& e : OpenEdges(triangles))
+    border[e.first] = border[e.second] = 1;
   return border;
 }
 }
