@@ -3,6 +3,7 @@
 #include "Core/FoldingSegmentation.h"
 #include "Core/FoldingTreeBuilder.h"
 #include "vtkFoldingArrays.h"
+#include "vtkFoldingDebugTrace.h"
 #include "vtkFoldingMeshesParallel.h"
 #include "vtkFoldingTreeIO.h"
 #include "vtkParameterChecks.h"
@@ -48,6 +49,7 @@ foldingmeshes::FoldingTreeOptions FoldingTreeOptionsOf(vtkFoldingTreeBuilder* se
     ? foldingmeshes::KeepSide::FewerFaces
     : foldingmeshes::KeepSide::MoreFaces;
   options.connectNearbyParts = self->GetConnectNearbyParts();
+  options.trace = foldingmeshes::DebugTrace(self);
   options.progress = [self](double p)
   {
     self->UpdateProgress(0.95 * p);

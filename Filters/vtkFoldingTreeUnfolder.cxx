@@ -6,6 +6,7 @@
 #include "Core/FoldingTreeUnfolder.h"
 #include "Core/SurfaceDistance.h"
 #include "vtkFoldingArrays.h"
+#include "vtkFoldingDebugTrace.h"
 #include "vtkFoldingMeshesParallel.h"
 #include "vtkFoldingTreeIO.h"
 #include "vtkParameterChecks.h"
@@ -72,6 +73,7 @@ foldingmeshes::UnfoldOptions UnfoldOptionsOf(vtkFoldingTreeUnfolder* self)
   options.closeHoles = self->GetCloseHoles();
   options.holeToleranceScale = self->GetHoleToleranceScale();
   options.maximumHoleEdges = self->GetMaximumHoleEdges();
+  options.trace = foldingmeshes::DebugTrace(self);
   options.progress = [self](double p)
   {
     self->UpdateProgress(0.9 * p);

@@ -3,6 +3,7 @@
 #include "Core/MeshPreparation.h"
 #include "Core/SymmetryDetection.h"
 #include "vtkFoldingArrays.h"
+#include "vtkFoldingDebugTrace.h"
 #include "vtkFoldingMeshesParallel.h"
 #include "vtkParameterChecks.h"
 #include "vtkTriangleMeshAdapter.h"
@@ -139,6 +140,7 @@ foldingmeshes::SymmetryOptions SymmetryOptionsOf(vtkSymmetryPlaneDetector* self,
   options.compatibilityAngle = self->GetCompatibilityAngle();
   options.minimumSymmetricAreaFraction = self->GetMinimumSymmetricAreaFraction();
   options.seed = static_cast<unsigned>(self->GetRandomSeed());
+  options.trace = foldingmeshes::DebugTrace(self);
   options.progress = [self](double p)
   {
     self->UpdateProgress(p);

@@ -209,6 +209,7 @@ int Builder::Build(WorkMesh w, int parent, int depth, double eps, int folds, uin
   const double base = this->Fraction(this->DoneFaces);
   const double span = 0.5 * this->Fraction(nf);
   so.progress = [&](double p) { return this->Report(base + p * span); };
+  so.trace = O.trace;
   const auto detectionStart = std::chrono::steady_clock::now();
   // One face tree of the region for detection, the trim's face bound and the runner-up
   // planes of ChooseSymmetricRegion; released before the recursion below.

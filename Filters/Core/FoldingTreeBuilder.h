@@ -25,6 +25,7 @@
 #define foldingmeshes_FoldingTreeBuilder_h
 
 #include "FoldingTree.h"
+#include "Trace.h"
 #include "SymmetryDetection.h"
 
 #include <functional>
@@ -150,6 +151,9 @@ struct FoldingTreeOptions
   /// Called with overall progress in [0,1]; return false to abort (the tree built so far is
   /// returned with `aborted` set; unfinished regions become Aborted leaves).
   std::function<bool(double)> progress;
+  /// Diagnostics (Trace.h; empty: none): each fold's errors and budgets, and the detection's
+  /// runs (passed on to `symmetry.trace` for every node).
+  TraceSink trace;
 };
 
 /**

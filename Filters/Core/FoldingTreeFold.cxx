@@ -1,5 +1,6 @@
 // Builder::Fold: projection/sliding onto the plane, error-budget charging, tear flags.
 #include "FoldingTreeBuilderInternal.h"
+#include "Trace.h"
 
 #include "CandidatePlanes.h"
 #include "MeshPreparation.h"
@@ -431,16 +432,16 @@ void Builder::Fold(int index,
   for (int v = 0; v < w.NumberOfPoints(); ++v)
     if (used[v])
       childBudget = std::min(childBudget, w.budget[v]);
-  if (std::getenv("FOLDINGMESHES_DEBUG"))
-    std::fprintf(stderr,
-      "[fold] node %d depth %d eps %.3g: mirror error %.3g, projection "
-      "error %.3g, least child budget %.3g\n",
-      index,
-      depth,
-      eps,
-      mirrorError,
-      projectionError,
-      childBudget);
+  if (this->Options.trace)
+    this->Options.trace(
+      FormatTrace("[fold] node %d depth %d eps %.3g: mirror error %.3g, projection "
+                  "error %.3g, least child budget %.3g",
+        index,
+        depth,
+        eps,
+        mirrorError,
+        projectionError,
+        childBudget));
 
   this->FlagMirroredFoldLines(w, keep, plane, depth, pathFolds);
 

@@ -4,6 +4,7 @@
 #define foldingmeshes_FoldingTreeUnfolder_h
 
 #include "FoldingTree.h"
+#include "Trace.h"
 
 #include <Eigen/Core>
 
@@ -140,14 +141,17 @@ struct UnfoldOptions
    * face lie within holeToleranceScale * root epsilon of the loop, or the loop is small and
    * flat, and it has at most maximumHoleEdges edges. A gap that opens into the input's border
    * is closed by a chord between two border vertices (within 2 * that tolerance). Loops left
-   * open are reported. FOLDINGMESHES_REPAIR_DEBUG set in the environment prints where the
-   * open, non-manifold and misoriented edges are before and after (stderr).
+   * open are reported; `trace` receives where the open, non-manifold and misoriented edges
+   * are before and after.
    */
   bool closeHoles = true;
   double holeToleranceScale = 1.0;
   int maximumHoleEdges = 400;
   /// Called with progress in [0,1]; return false to abort.
   std::function<bool(double)> progress;
+  /// Diagnostics (Trace.h; empty: none): the repair's edge classes and loops, the removal of
+  /// projected points and the thinning of mirrored copies, one line per step.
+  TraceSink trace;
 };
 
 /**

@@ -4,6 +4,7 @@
 // image would double that half's density. See UnfoldOptions::matchDiscardedDensity.
 #include "FoldingTreeUnfolderInternal.h"
 #include "FoldingTreeUnfolderVertexRemoval.h"
+#include "Trace.h"
 
 #include <algorithm>
 #include <cmath>
@@ -64,11 +65,12 @@ int Unfolder::MatchDiscardedDensity(const FoldingNode& node,
   int excess = finalPass && this->Options.removeProjectedPoints
     ? piece.NumberOfFaces() - node.numberOfFaces
     : FoldExcessFaces(node, piece);
-  const bool debug = std::getenv("FOLDINGMESHES_DENSITY_DEBUG") != nullptr;
-  if (debug)
-    std::fprintf(stderr,
-      "[density] fold at depth %d: S %d faces (%d discarded), result %d faces, %d "
-      "above S (pending projected points apart)",
+  // Diagnostics: one line per call, finished where the thinning stops.
+  const TraceSink& trace = this->Options.trace;
+  std::string line;
+  if (trace)
+    line = FormatTrace("[density] fold at depth %d: S %d faces (%d discarded), result %d faces, %d "
+                       "above S (pending projected points apart)",
       node.depth,
       node.numberOfFaces,
       node.discardedFaces,
@@ -76,8 +78,8 @@ int Unfolder::MatchDiscardedDensity(const FoldingNode& node,
       excess);
   if (excess < 2)
   {
-    if (debug)
-      std::fprintf(stderr, "\n");
+    if (trace)
+      trace(line);
     return 0;
   }
   const uint64_t bit = uint64_t(1) << node.depth;
@@ -144,8 +146,8 @@ int Unfolder::MatchDiscardedDensity(const FoldingNode& node,
     }
   if (counted == 0 || meanArea <= 0.0)
   {
-    if (debug)
-      std::fprintf(stderr, ": no candidate\n");
+    if (trace)
+      trace(line + ": no candidate");
     return 0;
   }
   meanArea /= counted;
@@ -205,8 +207,9 @@ int Unfolder::MatchDiscardedDensity(const FoldingNode& node,
       if (candidate[a])
         queue.push({ StarArea(piece, remover, a) / meanArea, a, ++version[a] });
   }
-  if (debug)
-    std::fprintf(stderr, ": removed %d points, %d faces above S left\n", remover.Count(), excess);
+  if (trace)
+    trace(
+      line + FormatTrace(": removed %d points, %d faces above S left", remover.Count(), excess));
   // Bit 0: the budget was unknown; bit 1: the point is flagged in `added`.
   std::vector<char> flags(n, 0);
   for (int v = 0; v < n; ++v)

@@ -2,6 +2,7 @@
 // classification (the input's own border or a gap), minimal-area triangulation, the error
 // bound check.
 #include "FoldingTreeUnfolderRepairInternal.h"
+#include "Trace.h"
 
 #include <Eigen/Dense>
 
@@ -558,7 +559,7 @@ int Unfolder::FillLoops(Piece& piece, RepairReport& report, bool apply)
     }
     if (border || unknown)
     {
-      if (!apply && std::getenv("FOLDINGMESHES_REPAIR_DEBUG"))
+      if (!apply && this->Options.trace)
       {
         int be = 0, bv = 0;
         for (int i = 0; i < n; ++i)
@@ -566,12 +567,12 @@ int Unfolder::FillLoops(Piece& piece, RepairReport& report, bool apply)
           be += this->IsInputBorderEdge(piece, loop[i], loop[(i + 1) % n]);
           bv += piece.border[loop[i]] == 1;
         }
-        std::fprintf(stderr,
-          "  border loop: %d edges (%d border edges, %d border vertices), length %.4g\n",
-          n,
-          be,
-          bv,
-          length);
+        this->Options.trace(
+          FormatTrace("  border loop: %d edges (%d border edges, %d border vertices), length %.4g",
+            n,
+            be,
+            bv,
+            length));
       }
       if (!apply)
       {
@@ -620,14 +621,13 @@ int Unfolder::FillLoops(Piece& piece, RepairReport& report, bool apply)
       RemoveLastPoint(piece);
     if (!ok || !apply)
     {
-      if (!apply && std::getenv("FOLDINGMESHES_REPAIR_DEBUG"))
-        std::fprintf(stderr,
-          "  open loop: %d edges, length %.4g, %s\n",
+      if (!apply && this->Options.trace)
+        this->Options.trace(FormatTrace("  open loop: %d edges, length %.4g, %s",
           n,
           length,
           !shortEnough ? "too long"
             : fan      ? "fan beyond tolerance"
-                       : "beyond tolerance");
+                       : "beyond tolerance"));
       if (!apply)
       {
         ++report.openLoops;

@@ -4,6 +4,7 @@
 // the input's tessellation. See UnfoldOptions::removeProjectedPoints.
 #include "FoldingTreeUnfolderInternal.h"
 #include "FoldingTreeUnfolderVertexRemoval.h"
+#include "Trace.h"
 
 #include <cstdio>
 #include <cstdlib>
@@ -26,7 +27,7 @@ int Unfolder::RemoveProjectedPoints(const FoldingNode* node, Piece& piece, std::
   // The limit without budgets (respectErrorBudget off, older trees): the node's epsilon;
   // after the traversal, that of the folds below the root.
   const double fallback = node ? node->epsilon : 0.5 * this->Tree.rootEpsilon;
-  const bool debug = std::getenv("FOLDINGMESHES_PROJECTED_DEBUG") != nullptr;
+  const bool debug = static_cast<bool>(this->Options.trace);
   std::map<std::string, int> reasons;
   RingRemoval removal;
   const char* why = "";
@@ -78,16 +79,15 @@ int Unfolder::RemoveProjectedPoints(const FoldingNode* node, Piece& piece, std::
   }
   if (debug)
   {
-    std::fprintf(stderr,
-      "[projected] %s %d: removed %d",
+    std::string line = FormatTrace("[projected] %s %d: removed %d",
       atFold   ? "fold at depth"
         : node ? "seams at depth"
                : "final pass, points",
       node ? node->depth : n,
       remover.Count());
     for (const auto& r : reasons)
-      std::fprintf(stderr, ", %s %d", r.first.c_str(), r.second);
-    std::fprintf(stderr, "\n");
+      line += FormatTrace(", %s %d", r.first.c_str(), r.second);
+    this->Options.trace(line);
   }
   return remover.Compact(added);
 }

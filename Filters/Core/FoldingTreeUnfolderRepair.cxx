@@ -2,6 +2,7 @@
 // non-manifold are dropped, the orientation is made consistent per connected component, then
 // the boundary loops are filled (FoldingTreeUnfolderHoles.cxx).
 #include "FoldingTreeUnfolderRepairInternal.h"
+#include "Trace.h"
 
 #include <algorithm>
 #include <cstddef>
@@ -267,9 +268,11 @@ int Unfolder::OrientComponents(Piece& piece, int& dropped)
   return count;
 }
 
-/// Diagnostics (FOLDINGMESHES_REPAIR_DEBUG set): where the bad edges are.
-static void PrintEdgeClasses(const Piece& piece, const char* when)
+/// Diagnostics (UnfoldOptions::trace): where the bad edges are.
+static void TraceEdgeClasses(const TraceSink& trace, const Piece& piece, const char* when)
 {
+  if (!trace)
+    return;
   int open[4] = { 0, 0, 0, 0 }, nonManifold[3] = { 0, 0, 0 }, misoriented[3] = { 0, 0, 0 };
   for (const auto& e : EdgeFaces(piece))
   {
@@ -300,9 +303,9 @@ static void PrintEdgeClasses(const Piece& piece, const char* when)
         Direction(piece.triangles[e.second[1]], a, b))
       ++misoriented[cls];
   }
-  std::fprintf(stderr,
+  trace(FormatTrace(
     "repair %s: open border %d foldline %d in-copy %d across-stitch %d | non-manifold filled %d "
-    "one-copy %d copies %d | misoriented filled %d one-copy %d copies %d\n",
+    "one-copy %d copies %d | misoriented filled %d one-copy %d copies %d",
     when,
     open[0],
     open[1],
@@ -313,15 +316,14 @@ static void PrintEdgeClasses(const Piece& piece, const char* when)
     nonManifold[2],
     misoriented[0],
     misoriented[1],
-    misoriented[2]);
+    misoriented[2]));
 }
 
 /// The final repair (UnfoldOptions::closeHoles), see RepairReport.
 void Unfolder::Repair(Piece& piece, RepairReport& report)
 {
-  const bool debug = std::getenv("FOLDINGMESHES_REPAIR_DEBUG") != nullptr;
-  if (debug)
-    PrintEdgeClasses(piece, "before");
+  const TraceSink& trace = this->Options.trace;
+  TraceEdgeClasses(trace, piece, "before");
   {
     // Degenerate faces (a repeated vertex) first.
     std::vector<char> drop(piece.triangles.size(), 0);
@@ -334,16 +336,13 @@ void Unfolder::Repair(Piece& piece, RepairReport& report)
     KeepFaces(piece, drop);
   }
   report.droppedFaces += this->DropNonManifoldFaces(piece);
-  if (debug)
-    PrintEdgeClasses(piece, "after drop");
+  TraceEdgeClasses(trace, piece, "after drop");
   report.flippedFaces = this->OrientComponents(piece, report.droppedFaces);
-  if (debug)
-    PrintEdgeClasses(piece, "after orient");
+  TraceEdgeClasses(trace, piece, "after orient");
   for (int pass = 0; pass < 3; ++pass)
   {
     const int filledNow = this->FillLoops(piece, report, true);
-    if (debug)
-      PrintEdgeClasses(piece, "after fill");
+    TraceEdgeClasses(trace, piece, "after fill");
     if (filledNow == 0)
       break;
     // Fills of loops that share a pinch vertex may meet at an edge: clean up.
@@ -351,12 +350,12 @@ void Unfolder::Repair(Piece& piece, RepairReport& report)
     report.flippedFaces += this->OrientComponents(piece, report.droppedFaces);
   }
   this->FillLoops(piece, report, false);
-  if (debug)
+  if (trace)
   {
-    PrintEdgeClasses(piece, "after");
-    std::fprintf(stderr,
+    TraceEdgeClasses(trace, piece, "after");
+    trace(FormatTrace(
       "repair: dropped %d flipped %d filled %d loops %d faces; border %d loops %d edges; open "
-      "%d loops %d edges %.4g length; unknown %d loops\n",
+      "%d loops %d edges %.4g length; unknown %d loops",
       report.droppedFaces,
       report.flippedFaces,
       report.filledLoops,
@@ -366,7 +365,7 @@ void Unfolder::Repair(Piece& piece, RepairReport& report)
       report.openLoops,
       report.openEdges,
       report.openLength,
-      report.unknownLoops);
+      report.unknownLoops));
   }
 }
 } // namespace unfolder_detail

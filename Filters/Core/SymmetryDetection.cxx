@@ -1,4 +1,5 @@
 #include "SymmetryDetection.h"
+#include "Trace.h"
 
 #include "CandidatePlanes.h"
 #include "ClusteredMesh.h"
@@ -143,7 +144,7 @@ public:
         area += Mesh.vertexAreas[v];
       }
     run.rms = area > 0.0 ? std::sqrt(sum / area) : std::numeric_limits<double>::infinity();
-    if (std::getenv("FOLDINGMESHES_DEBUG"))
+    if (this->Options.trace)
     {
       std::vector<double> values;
       for (int v = 0; v < Mesh.NumberOfPoints(); ++v)
@@ -151,11 +152,10 @@ public:
           values.push_back(run.distance[v] / eps);
       std::sort(values.begin(), values.end());
       if (!values.empty())
-        std::fprintf(stderr,
-          "  region stats: median %.3f p75 %.3f p90 %.3f\n",
+        this->Options.trace(FormatTrace("  region stats: median %.3f p75 %.3f p90 %.3f",
           values[values.size() / 2],
           values[values.size() * 3 / 4],
-          values[values.size() * 9 / 10]);
+          values[values.size() * 9 / 10]));
     }
   }
 
@@ -511,21 +511,20 @@ SymmetryResult DetectOn(const PreparedMesh& mesh,
   const PreparedMesh& target = targetFaces.Surface();
   SymmetryResult result;
   auto report = [&](double p) { return !options.progress || options.progress(p); };
-  const bool debug = std::getenv("FOLDINGMESHES_DEBUG") != nullptr;
   auto trace = [&](const char* what, size_t k, const Run& run)
   {
-    if (debug)
-      std::fprintf(stderr,
-        "%s %zu: iterations %d/%d region %.3f rms/eps %.3f n=(%.3f %.3f %.3f)\n",
-        what,
-        k,
-        run.coarseIterations,
-        run.fineIterations,
-        run.regionArea / mesh.totalArea,
-        run.rms / options.epsilon,
-        run.plane.normal.x(),
-        run.plane.normal.y(),
-        run.plane.normal.z());
+    if (options.trace)
+      options.trace(
+        FormatTrace("%s %zu: iterations %d/%d region %.3f rms/eps %.3f n=(%.3f %.3f %.3f)",
+          what,
+          k,
+          run.coarseIterations,
+          run.fineIterations,
+          run.regionArea / mesh.totalArea,
+          run.rms / options.epsilon,
+          run.plane.normal.x(),
+          run.plane.normal.y(),
+          run.plane.normal.z()));
   };
   Refiner refiner(mesh, targetFaces, options);
   std::vector<Run> runs;

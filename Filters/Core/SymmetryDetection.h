@@ -3,6 +3,7 @@
 #define foldingmeshes_SymmetryDetection_h
 
 #include "FaceTree.h"
+#include "Trace.h"
 #include "Plane.h"
 
 #include <functional>
@@ -42,6 +43,9 @@ struct SymmetryOptions
   bool distancesUpTo3Sigma = true;
   /// Called with progress in [0,1]; return false to abort.
   std::function<bool(double)> progress;
+  /// Diagnostics: every run (start, iterations, region, RMS/epsilon, plane) and region
+  /// statistics, one line each (Trace.h; empty: none).
+  TraceSink trace;
 };
 
 struct SymmetryResult
@@ -86,8 +90,8 @@ SymmetryResult DetectSymmetry(const PreparedMesh& mesh,
 // first one settles it, else all of them are, and the best wins.
 // The probes after the first and the finals run in parallel (vtkSMPTools), so an abort
 // requested through `progress` takes effect after a batch of probes or the finals.
-// Setting the environment variable FOLDINGMESHES_DEBUG prints every run (start, iterations,
-// region, RMS/epsilon, plane) and region statistics to stderr.
+// SymmetryOptions::trace receives every run (start, iterations, region, RMS/epsilon, plane)
+// and region statistics.
 
 /// The "symmetry found" residual rule: area-weighted RMS of d over S <= this * epsilon.
 constexpr double FoundResidualRatio = 0.35;
