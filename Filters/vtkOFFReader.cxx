@@ -11,6 +11,7 @@
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
+#include "vtkSmartPointer.h"
 #include "vtkUnsignedCharArray.h"
 
 #include <algorithm>
@@ -165,6 +166,203 @@ struct OFFParser
     return true;
   }
 };
+/// The header after the [C][N]OFF keyword: what each vertex line holds and the counts.
+struct OFFHeader
+{
+  bool colors = false;
+  bool normals = false;
+  long nv = 0;
+  long nf = 0;
+  long ne = 0;
+};
+
+/// Reads the keyword and "nv nf [ne]" (on the same or a later line) of a file of `size`
+/// bytes; vtkErrorCode::NoError, or the error code with the message in ps.Error.
+unsigned long ReadHeader(OFFParser& ps, std::streamoff size, OFFHeader& h)
+{
+  if (!ps.ReadKeyword(h.colors, h.normals))
+    return vtkErrorCode::UnrecognizedFileTypeError;
+  if (ps.AtEndOfLine() && !ps.NextDataLine())
+  {
+    ps.Error = "missing vertex and face counts";
+    return vtkErrorCode::PrematureEndOfFileError;
+  }
+  if (!ps.ReadLong(h.nv, "vertex count") || !ps.ReadLong(h.nf, "face count") ||
+    (!ps.AtEndOfLine() && !ps.ReadLong(h.ne, "edge count")))
+    return vtkErrorCode::FileFormatError;
+  // Every vertex line takes at least 6 bytes ("0 0 0\n"), every face line 4 ("1 0\n").
+  if (h.nv < 0 || h.nf < 0 || h.nv > size / 5 || h.nf > size / 3)
+  {
+    ps.Error = "invalid counts " + std::to_string(h.nv) + " " + std::to_string(h.nf) +
+      " (negative, or more than the file can hold)";
+    return vtkErrorCode::FileFormatError;
+  }
+  ps.SkipLine();
+  return vtkErrorCode::NoError;
+}
+
+/// The vertex lines: positions (float), normals (NOFF), colours (COFF: 4 values per vertex,
+/// NaN alpha where none is given; the first line sets 3 or 4 components).
+struct OFFVertices
+{
+  vtkNew<vtkPoints> points;
+  vtkNew<vtkFloatArray> normals;
+  std::vector<double> rgba;
+  int colorComps = 0;
+  double colorMax = 0.0;
+};
+
+unsigned long ReadVertices(OFFParser& ps,
+  const OFFHeader& h,
+  OFFVertices& out,
+  vtkAlgorithm* progress)
+{
+  const long nv = h.nv;
+  out.points->SetDataTypeToFloat();
+  out.points->SetNumberOfPoints(nv);
+  float* xyz = static_cast<vtkFloatArray*>(out.points->GetData())->GetPointer(0);
+  if (h.normals)
+  {
+    out.normals->SetName("Normals");
+    out.normals->SetNumberOfComponents(3);
+    out.normals->SetNumberOfTuples(nv);
+  }
+  out.rgba.assign(
+    h.colors ? 4 * static_cast<size_t>(nv) : 0, std::numeric_limits<double>::quiet_NaN());
+  const char* coordNames[3] = { "x coordinate", "y coordinate", "z coordinate" };
+  const char* normalNames[3] = { "normal x", "normal y", "normal z" };
+  const char* colorNames[3] = { "red value", "green value", "blue value" };
+  for (long i = 0; i < nv; ++i)
+  {
+    if (!ps.NextDataLine())
+    {
+      ps.Error = "unexpected end of file after " + std::to_string(i) + " of " + std::to_string(nv) +
+        " vertices";
+      return vtkErrorCode::PrematureEndOfFileError;
+    }
+    for (int k = 0; k < 3; ++k)
+    {
+      double v;
+      if (!ps.ReadDouble(v, coordNames[k]))
+        return vtkErrorCode::FileFormatError;
+      xyz[3 * i + k] = static_cast<float>(v);
+    }
+    for (int k = 0; h.normals && k < 3; ++k)
+    {
+      double v;
+      if (!ps.ReadDouble(v, normalNames[k]))
+        return vtkErrorCode::FileFormatError;
+      out.normals->SetTypedComponent(i, k, static_cast<float>(v));
+    }
+    if (h.colors)
+    {
+      double* c = &out.rgba[4 * i];
+      for (int k = 0; k < 3; ++k)
+        if (!ps.ReadDouble(c[k], colorNames[k]))
+          return vtkErrorCode::FileFormatError;
+      if (out.colorComps != 3 && !ps.AtEndOfLine() && !ps.ReadDouble(c[3], "alpha value"))
+        return vtkErrorCode::FileFormatError;
+      out.colorComps = out.colorComps ? out.colorComps : (std::isnan(c[3]) ? 3 : 4);
+      out.colorMax = std::max({ out.colorMax, c[0], c[1], c[2], std::isnan(c[3]) ? 0.0 : c[3] });
+    }
+    ps.SkipLine();
+    if ((i & 0xffff) == 0)
+      progress->UpdateProgress(0.5 * static_cast<double>(i) / static_cast<double>(nv));
+  }
+  return vtkErrorCode::NoError;
+}
+
+/// The face lines: polygons (n >= 3) as the output's polys, n = 1 and 2 as verts and lines.
+unsigned long ReadFaces(OFFParser& ps,
+  const OFFHeader& h,
+  vtkPolyData* output,
+  vtkAlgorithm* progress)
+{
+  const long nv = h.nv, nf = h.nf;
+  vtkNew<vtkIdTypeArray> offsets, connectivity;
+  offsets->Allocate(nf + 1);
+  offsets->InsertNextValue(0);
+  connectivity->Allocate(3 * static_cast<vtkIdType>(nf));
+  vtkNew<vtkCellArray> verts, lines;
+  std::vector<vtkIdType> ids;
+  for (long f = 0; f < nf; ++f)
+  {
+    long n = 0;
+    if (!ps.NextDataLine())
+    {
+      ps.Error = "unexpected end of file after " + std::to_string(f) + " of " + std::to_string(nf) +
+        " faces";
+      return vtkErrorCode::PrematureEndOfFileError;
+    }
+    if (!ps.ReadLong(n, "face size"))
+      return vtkErrorCode::FileFormatError;
+    if (n < 1)
+    {
+      ps.Error = "invalid face size " + std::to_string(n);
+      return vtkErrorCode::FileFormatError;
+    }
+    ids.clear();
+    for (long k = 0; k < n; ++k)
+    {
+      long id = 0;
+      if (!ps.ReadLong(id, "vertex index"))
+      {
+        ps.Error += " (face " + std::to_string(f) + " has " + std::to_string(k) + " of " +
+          std::to_string(n) + " indices)";
+        return vtkErrorCode::FileFormatError;
+      }
+      if (id < 0 || id >= nv)
+      {
+        ps.Error =
+          "vertex index " + std::to_string(id) + " out of range [0, " + std::to_string(nv) + ")";
+        return vtkErrorCode::FileFormatError;
+      }
+      if (n >= 3)
+        connectivity->InsertNextValue(id);
+      else
+        ids.push_back(id);
+    }
+    if (n >= 3)
+      offsets->InsertNextValue(connectivity->GetNumberOfValues());
+    else
+    {
+      vtkCellArray* cells = n == 1 ? verts.Get() : lines.Get();
+      cells->InsertNextCell(static_cast<vtkIdType>(n), ids.data());
+    }
+    ps.SkipLine();
+    if ((f & 0xffff) == 0)
+      progress->UpdateProgress(0.5 + 0.5 * static_cast<double>(f) / static_cast<double>(nf));
+  }
+  vtkNew<vtkCellArray> polys;
+  polys->SetData(offsets, connectivity);
+  output->SetPolys(polys);
+  if (verts->GetNumberOfCells() > 0)
+    output->SetVerts(verts);
+  if (lines->GetNumberOfCells() > 0)
+    output->SetLines(lines);
+  return vtkErrorCode::NoError;
+}
+
+/// The COFF colours as unsigned chars: floats in [0,1] unless some value exceeds 1, then
+/// integers in 0..255; a missing alpha is opaque.
+vtkSmartPointer<vtkUnsignedCharArray> ColorArray(const OFFVertices& v, long nv)
+{
+  const double scale = v.colorMax <= 1.0 ? 255.0 : 1.0;
+  vtkNew<vtkUnsignedCharArray> colors;
+  colors->SetName("Colors");
+  colors->SetNumberOfComponents(v.colorComps);
+  colors->SetNumberOfTuples(nv);
+  unsigned char* out = colors->GetPointer(0);
+  for (long i = 0; i < nv; ++i)
+    for (int k = 0; k < v.colorComps; ++k)
+    {
+      const double c = v.rgba[4 * i + k];
+      out[v.colorComps * i + k] = std::isnan(c)
+        ? 255
+        : static_cast<unsigned char>(std::min(255.0, std::max(0.0, std::round(c * scale))));
+    }
+  return colors;
+}
 }
 
 vtkStandardNewMacro(vtkOFFReader);
@@ -238,212 +436,25 @@ int vtkOFFReader::RequestData(vtkInformation*, vtkInformationVector**, vtkInform
   in.close();
 
   OFFParser ps(buffer.data(), buffer.data() + size);
-  auto fail = [&](unsigned long code)
+  OFFHeader header;
+  OFFVertices vertices;
+  unsigned long code = ReadHeader(ps, size, header);
+  if (code == vtkErrorCode::NoError)
+    code = ReadVertices(ps, header, vertices, this);
+  if (code == vtkErrorCode::NoError)
+    code = ReadFaces(ps, header, output, this);
+  if (code != vtkErrorCode::NoError)
   {
+    output->Initialize();
     vtkErrorMacro(<< fname << ":" << ps.Line << ": " << ps.Error);
     this->SetErrorCode(code);
     return 0;
-  };
-
-  // Header: keyword, then "nv nf [ne]" on the same or a later line.
-  bool hasColors = false, hasNormals = false;
-  long nv = 0, nf = 0, ne = 0;
-  if (!ps.ReadKeyword(hasColors, hasNormals))
-  {
-    return fail(vtkErrorCode::UnrecognizedFileTypeError);
   }
-  if (ps.AtEndOfLine() && !ps.NextDataLine())
-  {
-    ps.Error = "missing vertex and face counts";
-    return fail(vtkErrorCode::PrematureEndOfFileError);
-  }
-  if (!ps.ReadLong(nv, "vertex count") || !ps.ReadLong(nf, "face count") ||
-    (!ps.AtEndOfLine() && !ps.ReadLong(ne, "edge count")))
-  {
-    return fail(vtkErrorCode::FileFormatError);
-  }
-  // Every vertex line takes at least 6 bytes ("0 0 0\n"), every face line 4 ("1 0\n").
-  if (nv < 0 || nf < 0 || nv > size / 5 || nf > size / 3)
-  {
-    ps.Error = "invalid counts " + std::to_string(nv) + " " + std::to_string(nf) +
-      " (negative, or more than the file can hold)";
-    return fail(vtkErrorCode::FileFormatError);
-  }
-  ps.SkipLine();
-
-  // Vertices.
-  vtkNew<vtkPoints> points;
-  points->SetDataTypeToFloat();
-  points->SetNumberOfPoints(nv);
-  float* xyz = static_cast<vtkFloatArray*>(points->GetData())->GetPointer(0);
-  vtkNew<vtkFloatArray> normals;
-  if (hasNormals)
-  {
-    normals->SetName("Normals");
-    normals->SetNumberOfComponents(3);
-    normals->SetNumberOfTuples(nv);
-  }
-  // Colours: 4 values per vertex (NaN alpha: none given, opaque); the first line sets 3 or 4.
-  std::vector<double> rgba(
-    hasColors ? 4 * static_cast<size_t>(nv) : 0, std::numeric_limits<double>::quiet_NaN());
-  int colorComps = 0;
-  double colorMax = 0.0;
-  const char* coordNames[3] = { "x coordinate", "y coordinate", "z coordinate" };
-  const char* normalNames[3] = { "normal x", "normal y", "normal z" };
-  const char* colorNames[3] = { "red value", "green value", "blue value" };
-  for (long i = 0; i < nv; ++i)
-  {
-    if (!ps.NextDataLine())
-    {
-      ps.Error = "unexpected end of file after " + std::to_string(i) + " of " + std::to_string(nv) +
-        " vertices";
-      return fail(vtkErrorCode::PrematureEndOfFileError);
-    }
-    for (int k = 0; k < 3; ++k)
-    {
-      double v;
-      if (!ps.ReadDouble(v, coordNames[k]))
-      {
-        return fail(vtkErrorCode::FileFormatError);
-      }
-      xyz[3 * i + k] = static_cast<float>(v);
-    }
-    for (int k = 0; hasNormals && k < 3; ++k)
-    {
-      double v;
-      if (!ps.ReadDouble(v, normalNames[k]))
-      {
-        return fail(vtkErrorCode::FileFormatError);
-      }
-      normals->SetTypedComponent(i, k, static_cast<float>(v));
-    }
-    if (hasColors)
-    {
-      double* c = &rgba[4 * i];
-      for (int k = 0; k < 3; ++k)
-      {
-        if (!ps.ReadDouble(c[k], colorNames[k]))
-        {
-          return fail(vtkErrorCode::FileFormatError);
-        }
-      }
-      if (colorComps != 3 && !ps.AtEndOfLine() && !ps.ReadDouble(c[3], "alpha value"))
-      {
-        return fail(vtkErrorCode::FileFormatError);
-      }
-      colorComps = colorComps ? colorComps : (std::isnan(c[3]) ? 3 : 4);
-      colorMax = std::max({ colorMax, c[0], c[1], c[2], std::isnan(c[3]) ? 0.0 : c[3] });
-    }
-    ps.SkipLine();
-    if ((i & 0xffff) == 0)
-    {
-      this->UpdateProgress(0.5 * static_cast<double>(i) / static_cast<double>(nv));
-    }
-  }
-
-  // Faces: polygons (n >= 3) as polys, n = 1 and 2 as verts and lines.
-  vtkNew<vtkIdTypeArray> offsets, connectivity;
-  offsets->Allocate(nf + 1);
-  offsets->InsertNextValue(0);
-  connectivity->Allocate(3 * static_cast<vtkIdType>(nf));
-  vtkNew<vtkCellArray> verts, lines;
-  std::vector<vtkIdType> ids;
-  for (long f = 0; f < nf; ++f)
-  {
-    long n = 0;
-    if (!ps.NextDataLine())
-    {
-      ps.Error = "unexpected end of file after " + std::to_string(f) + " of " + std::to_string(nf) +
-        " faces";
-      return fail(vtkErrorCode::PrematureEndOfFileError);
-    }
-    if (!ps.ReadLong(n, "face size"))
-    {
-      return fail(vtkErrorCode::FileFormatError);
-    }
-    if (n < 1)
-    {
-      ps.Error = "invalid face size " + std::to_string(n);
-      return fail(vtkErrorCode::FileFormatError);
-    }
-    ids.clear();
-    for (long k = 0; k < n; ++k)
-    {
-      long id = 0;
-      if (!ps.ReadLong(id, "vertex index"))
-      {
-        ps.Error += " (face " + std::to_string(f) + " has " + std::to_string(k) + " of " +
-          std::to_string(n) + " indices)";
-        return fail(vtkErrorCode::FileFormatError);
-      }
-      if (id < 0 || id >= nv)
-      {
-        ps.Error =
-          "vertex index " + std::to_string(id) + " out of range [0, " + std::to_string(nv) + ")";
-        return fail(vtkErrorCode::FileFormatError);
-      }
-      if (n >= 3)
-      {
-        connectivity->InsertNextValue(id);
-      }
-      else
-      {
-        ids.push_back(id);
-      }
-    }
-    if (n >= 3)
-    {
-      offsets->InsertNextValue(connectivity->GetNumberOfValues());
-    }
-    else
-    {
-      vtkCellArray* cells = n == 1 ? verts.Get() : lines.Get();
-      cells->InsertNextCell(static_cast<vtkIdType>(n), ids.data());
-    }
-    ps.SkipLine();
-    if ((f & 0xffff) == 0)
-    {
-      this->UpdateProgress(0.5 + 0.5 * static_cast<double>(f) / static_cast<double>(nf));
-    }
-  }
-  vtkNew<vtkCellArray> polys;
-  polys->SetData(offsets, connectivity);
-
-  output->SetPoints(points);
-  output->SetPolys(polys);
-  if (verts->GetNumberOfCells() > 0)
-  {
-    output->SetVerts(verts);
-  }
-  if (lines->GetNumberOfCells() > 0)
-  {
-    output->SetLines(lines);
-  }
-  if (hasNormals)
-  {
-    output->GetPointData()->SetNormals(normals);
-  }
-  if (hasColors && nv > 0)
-  {
-    // Floats in [0,1] unless some value exceeds 1, then integers in 0..255.
-    const double scale = colorMax <= 1.0 ? 255.0 : 1.0;
-    vtkNew<vtkUnsignedCharArray> colors;
-    colors->SetName("Colors");
-    colors->SetNumberOfComponents(colorComps);
-    colors->SetNumberOfTuples(nv);
-    unsigned char* out = colors->GetPointer(0);
-    for (long i = 0; i < nv; ++i)
-    {
-      for (int k = 0; k < colorComps; ++k)
-      {
-        const double c = rgba[4 * i + k];
-        out[colorComps * i + k] = std::isnan(c)
-          ? 255
-          : static_cast<unsigned char>(std::min(255.0, std::max(0.0, std::round(c * scale))));
-      }
-    }
-    output->GetPointData()->SetScalars(colors);
-  }
+  output->SetPoints(vertices.points);
+  if (header.normals)
+    output->GetPointData()->SetNormals(vertices.normals);
+  if (header.colors && header.nv > 0)
+    output->GetPointData()->SetScalars(ColorArray(vertices, header.nv));
   this->UpdateProgress(1.0);
   return 1;
 }
