@@ -1,0 +1,88 @@
+// Internal to the compact tree file (CompactTreeFormat.cxx): its tree section - the counts,
+// the nodes (kind, plane, epsilon), the leaves' headers and the palette of point data.
+#ifndef foldingmeshes_CompactTreeSection_h
+#define foldingmeshes_CompactTreeSection_h
+
+#include "CompactByteStream.h"
+#include "CompactLeafGeometry.h"
+#include "FoldingTree.h"
+
+#include <cstdint>
+#include <tuple>
+#include <vector>
+
+namespace foldingmeshes
+{
+namespace compact_detail
+{
+// Limits that keep a corrupt count from allocating without bound (a tree this large would
+// not fit in memory anyway).
+constexpr uint64_t MaximumCount = uint64_t(1) << 31;
+/// A leaf's error budget is stored in units of root epsilon / BudgetCodes (16 bits).
+constexpr double BudgetCodes = 65535.0;
+
+/// Everything a point carries besides its position and budget; the tree section lists the
+/// distinct ones (the palette), the geometry section gives each point its entry's index.
+struct PointData
+{
+  uint64_t tear = 0, plane = 0;
+  uint8_t projected = 0, boundary = 0;
+  std::vector<std::tuple<int, int, uint64_t>> mirrored; ///< (level, flag, mask) records
+  bool operator<(const PointData& o) const
+  {
+    return std::tie(tear, plane, projected, boundary, mirrored) <
+      std::tie(o.tear, o.plane, o.projected, o.boundary, o.mirrored);
+  }
+};
+
+/// The palette: distinct point data, the most frequent first (small indices code cheaply),
+/// and each point's index.
+struct Palette
+{
+  std::vector<PointData> entries;
+  std::vector<std::vector<uint32_t>> symbols; ///< per leaf, per point
+};
+
+enum LeafFlags : uint8_t
+{
+  LeafHasBudget = 1,
+  LeafHasInputBoundary = 2
+};
+
+/// What the tree section says of a leaf before its geometry is decoded.
+struct LeafHeader
+{
+  int node = -1;
+  uint8_t flags = 0;
+  size_t points = 0, triangles = 0;
+  double budget = 0.0; ///< the leaf's error budget (if flags & LeafHasBudget)
+};
+
+/// The palette of `tree`'s point data, the most frequent first.
+Palette MakePalette(const FoldingTree& tree);
+
+/// Writes the tree section: counts, nodes, leaf headers (with each leaf's stored error budget,
+/// less `quantizationError`) and the palette.
+void WriteTreeSection(const FoldingTree& tree,
+  const LeafGeometryCoding& coding,
+  double quantizationError,
+  const Palette& palette,
+  ByteWriter& w);
+
+/// Reads what WriteTreeSection wrote (throws CompactFormatError on malformed input).
+void ReadTreeSection(ByteReader& r,
+  FoldingTree& tree,
+  LeafGeometryCoding& coding,
+  std::vector<LeafHeader>& leaves,
+  std::vector<PointData>& palette);
+
+/// Moves the decoded leaves into the tree with their point data; their input ids become
+/// running numbers.
+void AttachLeaves(FoldingTree& tree,
+  std::vector<DecodedLeaf>& decoded,
+  const std::vector<LeafHeader>& leaves,
+  const std::vector<PointData>& palette);
+} // namespace compact_detail
+} // namespace foldingmeshes
+
+#endif
