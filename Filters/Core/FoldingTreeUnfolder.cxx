@@ -258,48 +258,12 @@ void CountEdgeDefects(UnfoldedMesh& result)
     result.misorientedEdges += uses == 2 && forward != 1;
   }
 }
-}
 
-bool UnfoldFoldingTree(const FoldingTree& tree,
-  const UnfoldOptions& options,
-  UnfoldedMesh& result,
-  std::string& error)
+/// The finished piece as the result: geometry, ids, copies, the edge and fill counts.
+void StoreResult(Piece& piece, UnfoldedMesh& result)
 {
-  result = UnfoldedMesh();
-  error = tree.Validate();
-  if (!error.empty())
-  {
-    error = "invalid folding tree: " + error;
-    return false;
-  }
-  Unfolder unfolder(tree, options, result);
-  Piece piece = unfolder.Unfold(0);
-  if (!unfolder.Aborted && options.stitch && options.weldBoundaries)
-  {
-    result.weld.node = -1;
-    unfolder.WeldBoundaries(piece, result.weld);
-  }
-  const int pointsBeforeRepair = piece.NumberOfPoints();
-  if (!unfolder.Aborted && options.stitch && options.closeHoles)
-    unfolder.Repair(piece, result.repair);
-  result.pointAdded.assign(piece.points.size(), 0);
-  for (int v = pointsBeforeRepair; v < piece.NumberOfPoints(); ++v)
-    result.pointAdded[v] = 1;
-  // Projected points whose rings were still open at their fold (fold-line cracks closed by
-  // the weld or the repair since, tear or fold-line flags of levels above).
-  if (!unfolder.Aborted && options.removeProjectedPoints)
-    result.removedProjectedPoints +=
-      unfolder.RemoveProjectedPoints(nullptr, piece, &result.pointAdded);
-  // A folding root's copy once more, towards the root's face count, which the seams and the
-  // repair's fills raise (and copy points on seam gaps that only the repair closed were on
-  // open edges at the fold); never below the input's point count.
-  if (!unfolder.Aborted && options.matchDiscardedDensity &&
-    tree.nodes[0].kind == FoldingNodeKind::Folding && tree.numberOfOriginalPoints > 0)
-    result.thinnedCopyPoints += unfolder.MatchDiscardedDensity(
-      tree.nodes[0], piece, &result.pointAdded, tree.numberOfOriginalPoints);
   result.projectedPoints = static_cast<int>(piece.projected.size()) -
     static_cast<int>(std::count(piece.projected.begin(), piece.projected.end(), char(0)));
-  result.aborted = unfolder.Aborted;
   result.points = std::move(piece.points);
   result.triangles = std::move(piece.triangles);
   result.pointOriginalIds = std::move(piece.pointOrig);
@@ -323,6 +287,66 @@ bool UnfoldFoldingTree(const FoldingTree& tree,
     result.faceLeaf[f] = result.copies[result.faceCopy[f]].leaf;
     result.faceMirrored[f] = result.copies[result.faceCopy[f]].mirrored;
   }
+}
+}
+
+/**
+ * The unfolder's stages, in order - the one place that says which runs when, and why there.
+ *
+ * 1. The traversal (Unfolder::Unfold, postorder; the paper's section 4.3). A leaf gives its
+ *    mesh. A folding node reflects its child's result (Reflect): the copy is mirrored and
+ *    reversed, the fold line merged with its image, then the points the builder projected onto
+ *    this plane are removed again (RemoveProjectedPoints) and the mirrored copy is thinned
+ *    towards the node's face count (MatchDiscardedDensity) - at the fold, because only there
+ *    are the plane and the copy known. A segmentation node stitches its children's seams
+ *    (Stitch -> StitchVertices: proposals, clusters, placement within the error budgets,
+ *    merge, zipper, gap filling, constrained Laplacian smoothing), then removes the projected
+ *    points whose rings the seams closed.
+ * 2. The weld (WeldBoundaries): open edges between copies of different subtrees meet only at
+ *    the root, so the last stitch runs over the whole mesh, within the budgets left.
+ * 3. The repair (Repair: degenerate and non-manifold faces dropped, orientation made
+ *    consistent, holes filled within the tolerance): after the weld, so that it only sees
+ *    what no stitch could close. Its new points are flagged (UnfoldedMesh::pointAdded).
+ * 4. Projected points once more: those whose rings were still open at their fold (cracks
+ *    closed by the weld or the repair since, tear or fold-line flags of levels above).
+ * 5. The root's copy thinned once more towards the root's face count, which the seams and
+ *    the repair's fills raise (never below the input's point count).
+ * 6. The result: geometry, ids, copies and the edge counts (StoreResult).
+ */
+bool UnfoldFoldingTree(const FoldingTree& tree,
+  const UnfoldOptions& options,
+  UnfoldedMesh& result,
+  std::string& error)
+{
+  result = UnfoldedMesh();
+  error = tree.Validate();
+  if (!error.empty())
+  {
+    error = "invalid folding tree: " + error;
+    return false;
+  }
+  Unfolder unfolder(tree, options, result);
+  Piece piece = unfolder.Unfold(0);                                  // 1
+  if (!unfolder.Aborted && options.stitch && options.weldBoundaries) // 2
+  {
+    result.weld.node = -1;
+    unfolder.WeldBoundaries(piece, result.weld);
+  }
+  const int pointsBeforeRepair = piece.NumberOfPoints();
+  if (!unfolder.Aborted && options.stitch && options.closeHoles) // 3
+    unfolder.Repair(piece, result.repair);
+  result.pointAdded.assign(piece.points.size(), 0);
+  for (int v = pointsBeforeRepair; v < piece.NumberOfPoints(); ++v)
+    result.pointAdded[v] = 1;
+  if (!unfolder.Aborted && options.removeProjectedPoints) // 4
+    result.removedProjectedPoints +=
+      unfolder.RemoveProjectedPoints(nullptr, piece, &result.pointAdded);
+  if (!unfolder.Aborted && options.matchDiscardedDensity && // 5
+    tree.nodes[0].kind == FoldingNodeKind::Folding && tree.numberOfOriginalPoints > 0)
+    result.thinnedCopyPoints += unfolder.MatchDiscardedDensity(
+      tree.nodes[0], piece, &result.pointAdded, tree.numberOfOriginalPoints);
+  result.aborted = unfolder.Aborted;
+  StoreResult(piece, result); // 6
   return true;
 }
 }

@@ -244,7 +244,9 @@ using EdgeSet = std::unordered_set<std::pair<int, int>, EdgeHash>;
 /// points in FoldingTreeUnfolderProjectedPoints.cxx, the thinning of mirrored copies in
 /// FoldingTreeUnfolderDensity.cxx, both with FoldingTreeUnfolderVertexRemoval.h); the seam
 /// repair in FoldingTreeUnfolderStitching.cxx (vertex pairing, clusters, smoothing, final
-/// weld) and FoldingTreeUnfolderSeamGaps.cxx (zipper, gap filling).
+/// weld) and FoldingTreeUnfolderSeamGaps.cxx (zipper, gap filling); the final repair in
+/// FoldingTreeUnfolderRepair.cxx, FoldingTreeUnfolderBoundaryLoops.cxx and
+/// FoldingTreeUnfolderHoles.cxx. The order of the stages: UnfoldFoldingTree.
 class Unfolder
 {
 public:
