@@ -56,8 +56,10 @@ void Unfolder::WeldBoundaries(Piece& piece, SeamReport& seam)
   // Two open vertices of one copy within a hundredth of the root epsilon are merged as well:
   // a fold whose plane passes that close to a row of vertices keeps them beside their
   // neighbours' projections (a sliver strip), and a seam that reaches the strip can close
-  // onto only one of its sides. (An input crack that narrow closes too. Such pairs chain:
-  // a run of open edges of one copy, each that short, collapses to one point.)
+  // onto only one of its sides. (An input crack that narrow closes too. Such pairs do not
+  // chain (ClusterStitches): a run of open edges of one copy, each that short - the rim of a
+  // finely tessellated open part - once collapsed to one point and took the part's faces with
+  // it, 0.12 of the diagonal away on an artist-like chair; issue 21.)
   const std::vector<int> copyOf = piece.pointCopy;
   this->StitchVertices(piece,
     open,
@@ -197,10 +199,16 @@ StitchClusters ClusterStitches(const std::vector<StitchProposal>& proposals,
       it = childrenOfRoot.emplace(root, std::vector<int>{ childOf[root] }).first;
     return it->second;
   };
+  // Clusters that hold a same-child pair take no further same-child pair: a run of short open
+  // edges of one copy would otherwise chain into one point, collapsing a finely tessellated
+  // open part (a rim of 1200 segments) and every face on it.
+  std::vector<char> hasSameChildPair(n, 0);
   for (const StitchProposal& pr : proposals)
   {
     const int ra = FindRoot(parent, pr.a), rb = FindRoot(parent, pr.b);
     if (ra == rb)
+      continue;
+    if (pr.sameChild && (hasSameChildPair[ra] || hasSameChildPair[rb]))
       continue;
     std::vector<int>& ca = childrenOf(ra);
     std::vector<int>& cb = childrenOf(rb);
@@ -214,6 +222,7 @@ StitchClusters ClusterStitches(const std::vector<StitchProposal>& proposals,
     std::merge(ca.begin(), ca.end(), cb.begin(), cb.end(), std::back_inserter(merged));
     merged.erase(std::unique(merged.begin(), merged.end()), merged.end());
     parent[other] = root;
+    hasSameChildPair[root] = hasSameChildPair[ra] || hasSameChildPair[rb] || pr.sameChild;
     childrenOfRoot[root] = std::move(merged);
     childrenOfRoot.erase(other);
   }

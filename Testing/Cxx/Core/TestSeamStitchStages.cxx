@@ -4,7 +4,8 @@
 //   tol (a tie goes to the lower id), never with one farther than tol; two candidates of one
 //   child only within sameChildDistance; the proposals come sorted by (distance, a, b);
 // - ClusterStitches never puts two vertices of one child in a cluster through proposals of
-//   different children, chains children A-B-C into one cluster, and merges same-child pairs;
+//   different children, chains children A-B-C into one cluster, and merges same-child pairs,
+//   but never chains them (a run of one child's short open edges stays pairs, issue 21);
 // - PlaceClusters moves a cluster to its mean when every member's budget allows it, to a
 //   member's position when only that fits, and dissolves it when nothing fits;
 // - ConstrainedLaplacianSmoothing (the paper's section 4.3) moves only rough vertices, each
@@ -13,6 +14,7 @@
 #include "CoreTestUtilities.h"
 #include "FoldingTreeUnfolderInternal.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -81,6 +83,17 @@ void TestClusters()
   p.push_back({ 0.4, 0, 3, true });
   c = ClusterStitches(p, child, 4);
   EXPECT(c.rep[3] == c.rep[0], "a same-child pair did not merge");
+  // Same-child pairs do not chain: a run 0-1-2-3-4 of one child (a finely tessellated open
+  // rim) becomes pairs, never one point.
+  const std::vector<int> one(5, 0);
+  std::vector<StitchProposal> run;
+  for (int i = 0; i < 4; ++i)
+    run.push_back({ 0.001, i, i + 1, true });
+  c = ClusterStitches(run, one, 5);
+  int largest = 0;
+  for (int v = 0; v < 5; ++v)
+    largest = std::max(largest, c.count[c.rep[v]]);
+  EXPECT(largest == 2, "a run of same-child pairs chained into a cluster of " << largest);
 }
 
 void TestPlacement()
