@@ -166,6 +166,24 @@ private:
   /// provenSide: +1 / -1, the side of `plane` whose faces the trim proved (their mirror
   /// images within the error budget: Trim), which the fold keeps; 0: none proved, the side
   /// is chosen by Options.keepSide.
+  double ChargeMirrorError(const WorkMesh& w,
+    const std::vector<char>& used,
+    const Plane& plane,
+    double eps,
+    const SurfaceDistanceQuery& toRegion,
+    std::vector<double>& charge,
+    std::vector<double>& limit) const;
+  template <typename BeyondBudget>
+  int ProjectOntoFoldPlane(WorkMesh& w,
+    const std::vector<char>& used,
+    const std::vector<int>& side,
+    const Plane& plane,
+    int depth,
+    double eps,
+    uint64_t pathFolds,
+    const std::vector<Vec3>& slide,
+    const std::vector<char>& slides,
+    BeyondBudget beyondBudget);
   void Fold(int index,
     WorkMesh w,
     Plane plane,

@@ -212,6 +212,218 @@ void Builder::FlagMirroredFoldLines(WorkMesh& w,
   }
 }
 
+namespace
+{
+/// Per discarded-side vertex of a kept face, the point where one of its edges to a kept-side
+/// vertex crosses the plane, nearest to its orthogonal projection (on the input surface):
+/// slide[v], with slides[v] = 1 where there is one.
+void SlideTargets(const WorkMesh& w,
+  const std::vector<char>& keep,
+  const std::vector<int>& side,
+  const Plane& plane,
+  std::vector<Vec3>& slide,
+  std::vector<char>& slides)
+{
+  const int nf = w.NumberOfFaces();
+
+  std::vector<double> slideMove(w.points.size(), std::numeric_limits<double>::infinity());
+  for (int f = 0; f < nf; ++f)
+    if (keep[f])
+      for (int k = 0; k < 3; ++k)
+        for (int j = 1; j <= 2; ++j)
+        {
+          const int v = w.triangles[f][k], a = w.triangles[f][(k + j) % 3];
+          if (side[v] >= 0 || side[a] <= 0)
+            continue;
+          const double sv = plane.SignedDistance(w.points[v]);
+          const double sa = plane.SignedDistance(w.points[a]);
+          const Vec3 q = w.points[v] + (sv / (sv - sa)) * (w.points[a] - w.points[v]);
+          const double move = (q - plane.Project(w.points[v])).norm();
+          if (move < slideMove[v])
+          {
+            slideMove[v] = move;
+            slide[v] = plane.Project(q); // exactly on the plane
+            slides[v] = 1;
+          }
+        }
+}
+
+/// The largest distance of a point projected (or snapped) onto the fold plane(s), or of the
+/// centroid of a kept face one moved, to the region as it was; each point's budget becomes
+/// what is left of its limit after its mirror charge and that displacement.
+double SpendProjectionBudget(WorkMesh& w,
+  const std::vector<char>& used,
+  const std::vector<char>& keep,
+  const std::vector<int>& side,
+  const SurfaceDistanceQuery& toRegion,
+  const std::vector<double>& charge,
+  const std::vector<double>& limit)
+{
+  const int nf = w.NumberOfFaces();
+  double projectionError = 0.0;
+
+  std::vector<Vec3> moved;
+  std::vector<int> movedPoint, movedFace;
+  for (int v = 0; v < w.NumberOfPoints(); ++v)
+    if (used[v] && side[v] <= 0)
+    {
+      moved.push_back(w.points[v]);
+      movedPoint.push_back(v);
+    }
+  // Faces changed by a move: their centroids too (a slid vertex is on the surface, its
+  // faces need not be).
+  for (int f = 0; f < nf; ++f)
+  {
+    const Triangle& t = w.triangles[f];
+    if (keep[f] && (side[t[0]] < 0 || side[t[1]] < 0 || side[t[2]] < 0))
+    {
+      moved.push_back((w.points[t[0]] + w.points[t[1]] + w.points[t[2]]) / 3.0);
+      movedFace.push_back(f);
+    }
+  }
+  const std::vector<double> d = toRegion.Distances(moved);
+  std::vector<double> displacement(w.points.size(), 0.0);
+  for (size_t k = 0; k < movedPoint.size(); ++k)
+    displacement[movedPoint[k]] = std::max(displacement[movedPoint[k]], d[k]);
+  for (size_t k = 0; k < movedFace.size(); ++k)
+    for (int v : w.triangles[movedFace[k]])
+      displacement[v] = std::max(displacement[v], d[movedPoint.size() + k]);
+  for (int v = 0; v < w.NumberOfPoints(); ++v)
+  {
+    projectionError = std::max(projectionError, displacement[v]);
+    w.budget[v] = std::max(0.0, limit[v] - charge[v] - displacement[v]);
+  }
+  return projectionError;
+}
+
+}
+
+/**
+ * What the copies made by a fold add at each kept point (see Fold): a kept point's mirror copy
+ * must lie near the input (error: its distance to the input); a discarded point must be
+ * reproduced by the mirror copy of the kept half (error: the distance of its mirror image to
+ * the region), charged to the kept point nearest to that image. Fills charge and limit (the
+ * least budget of the points a charge lands on); returns the largest error.
+ */
+double Builder::ChargeMirrorError(const WorkMesh& w,
+  const std::vector<char>& used,
+  const Plane& plane,
+  double eps,
+  const SurfaceDistanceQuery& toRegion,
+  std::vector<double>& charge,
+  std::vector<double>& limit) const
+{
+  double mirrorError = 0.0;
+
+  std::vector<Vec3> mirrored(w.points.size());
+  for (int v = 0; v < w.NumberOfPoints(); ++v)
+    mirrored[v] = plane.Reflect(w.points[v]);
+  const std::vector<double> toS = toRegion.Distances(mirrored);
+  const std::vector<double> toM = this->ToInput->Distances(mirrored);
+  PointBuckets all, kept;
+  all.cell = kept.cell = std::max(eps, 1e-12 * this->Tree.diagonal);
+  double least = std::numeric_limits<double>::infinity();
+  for (int v = 0; v < w.NumberOfPoints(); ++v)
+  {
+    all.Add(w.points[v], v);
+    if (used[v])
+      kept.Add(w.points[v], v);
+    least = std::min(least, w.budget[v]);
+  }
+  for (int v = 0; v < w.NumberOfPoints(); ++v)
+  {
+    const double e = used[v] ? toM[v] : toS[v];
+    mirrorError = std::max(mirrorError, e);
+    const int k = used[v] ? v : kept.Nearest(w.points, mirrored[v], eps);
+    if (k < 0)
+      continue; // no kept point there: its copy reproduces nothing of v
+    const int p = all.Nearest(w.points, mirrored[v], eps);
+    charge[k] = std::max(charge[k], e);
+    limit[k] = std::min({ limit[k], w.budget[v], p >= 0 ? w.budget[p] : least });
+  }
+  for (int v = 0; v < w.NumberOfPoints(); ++v)
+    limit[v] = std::min(limit[v], w.budget[v]);
+  return mirrorError;
+}
+
+/**
+ * Moves the kept points on or behind the fold plane onto it (the paper's fold rule: faces
+ * straddling the plane keep their far vertices, projected): orthogonally by default, onto the
+ * intersection with the ancestors' planes the point lies on when that is within eps of the
+ * orthogonal projection, or slid along an edge (SlideTargets) when slideOntoPlane asks for it
+ * or when beyondBudget(v) says the projection would leave the budget. Flags the points on the
+ * plane; returns how many were projected from behind it.
+ */
+template <typename BeyondBudget>
+int Builder::ProjectOntoFoldPlane(WorkMesh& w,
+  const std::vector<char>& used,
+  const std::vector<int>& side,
+  const Plane& plane,
+  int depth,
+  double eps,
+  uint64_t pathFolds,
+  const std::vector<Vec3>& slide,
+  const std::vector<char>& slides,
+  BeyondBudget beyondBudget)
+{
+  const uint64_t bit = uint64_t(1) << depth;
+  int projected = 0;
+  for (int v = 0; v < w.NumberOfPoints(); ++v)
+  {
+    if (!used[v] || side[v] > 0)
+      continue;
+    bool onAncestorPlane = false;
+    for (int d = 0; d < depth; ++d)
+      onAncestorPlane = onAncestorPlane ||
+        ((w.onPlane[v] & (uint64_t(1) << d)) && (pathFolds & (uint64_t(1) << d)));
+    // Projecting is the default; sliding when asked for, or when the projected point
+    // would be farther from the region than the error budget left there.
+    bool slideIt = slides[v] && !onAncestorPlane && side[v] < 0;
+    if (slideIt && !this->Options.slideOntoPlane)
+      slideIt = beyondBudget(v);
+    if (slideIt)
+    {
+      w.points[v] = slide[v];
+      w.onPlane[v] |= bit;
+      w.projected[v] = 1;
+      ++projected;
+      continue;
+    }
+    std::vector<Plane> constraints{ plane };
+    for (int d = 0; d < depth; ++d)
+      if ((w.onPlane[v] & (uint64_t(1) << d)) && (pathFolds & (uint64_t(1) << d)))
+        constraints.push_back(this->PlaneAtDepth[d]);
+    const double tolerance = 1e-9 * this->Tree.diagonal;
+    // The intersection of the planes keeps the ancestors' fold lines closed, but only where
+    // it is close to the orthogonal projection: a vertex that merely touches an ancestor's
+    // plane at a corner of its faces (the plane does not run along them) would be dragged
+    // along the new plane, up to the whole face away (a face of a folded square collapsed
+    // onto a point and was lost). Farther than epsilon, it is projected orthogonally and
+    // leaves the ancestors' planes.
+    const Vec3 orthogonal = plane.Project(w.points[v]);
+    Vec3 target = w.points[v];
+    bool onAll = ProjectOntoPlanes(target, constraints, tolerance);
+    if (onAll && constraints.size() > 1 && (target - orthogonal).norm() > eps)
+    {
+      target = orthogonal;
+      onAll = false;
+    }
+    w.points[v] = target;
+    if (!onAll)
+      for (int d = 0; d < depth; ++d)
+        if ((w.onPlane[v] & (uint64_t(1) << d)) &&
+          std::abs(this->PlaneAtDepth[d].SignedDistance(w.points[v])) > tolerance)
+          w.onPlane[v] &= ~(uint64_t(1) << d);
+    w.onPlane[v] |= bit;
+    if (side[v] < 0)
+    {
+      w.projected[v] = 1;
+      ++projected;
+    }
+  }
+  return projected;
+}
+
 void Builder::Fold(int index,
   WorkMesh w,
   Plane plane,
@@ -276,38 +488,8 @@ void Builder::Fold(int index,
     limit(w.points.size(), std::numeric_limits<double>::infinity());
   double mirrorError = 0.0;
   if (O.errorBudget)
-  {
-    std::vector<Vec3> mirrored(w.points.size());
-    for (int v = 0; v < w.NumberOfPoints(); ++v)
-      mirrored[v] = plane.Reflect(w.points[v]);
-    const std::vector<double> toS = toRegion.Distances(mirrored);
-    const std::vector<double> toM = this->ToInput->Distances(mirrored);
-    PointBuckets all, kept;
-    all.cell = kept.cell = std::max(eps, 1e-12 * this->Tree.diagonal);
-    double least = std::numeric_limits<double>::infinity();
-    for (int v = 0; v < w.NumberOfPoints(); ++v)
-    {
-      all.Add(w.points[v], v);
-      if (used[v])
-        kept.Add(w.points[v], v);
-      least = std::min(least, w.budget[v]);
-    }
-    for (int v = 0; v < w.NumberOfPoints(); ++v)
-    {
-      const double e = used[v] ? toM[v] : toS[v];
-      mirrorError = std::max(mirrorError, e);
-      const int k = used[v] ? v : kept.Nearest(w.points, mirrored[v], eps);
-      if (k < 0)
-        continue; // no kept point there: its copy reproduces nothing of v
-      const int p = all.Nearest(w.points, mirrored[v], eps);
-      charge[k] = std::max(charge[k], e);
-      limit[k] = std::min({ limit[k], w.budget[v], p >= 0 ? w.budget[p] : least });
-    }
-    for (int v = 0; v < w.NumberOfPoints(); ++v)
-      limit[v] = std::min(limit[v], w.budget[v]);
-  }
+    mirrorError = this->ChargeMirrorError(w, used, plane, eps, toRegion, charge, limit);
   this->TransferDiscardedTears(w, used, plane, depth, eps);
-  int projected = 0;
   const uint64_t bit = uint64_t(1) << depth;
   // Sliding (see FoldingTreeOptions::slideOntoPlane): per discarded-side vertex, the point
   // where one of its edges to a kept-side vertex of a kept face crosses the plane, nearest
@@ -315,119 +497,23 @@ void Builder::Fold(int index,
   std::vector<Vec3> slide(w.points.size());
   std::vector<char> slides(w.points.size(), 0);
   if (O.slideOntoPlane || O.errorBudget)
-  {
-    std::vector<double> slideMove(w.points.size(), std::numeric_limits<double>::infinity());
-    for (int f = 0; f < nf; ++f)
-      if (keep[f])
-        for (int k = 0; k < 3; ++k)
-          for (int j = 1; j <= 2; ++j)
-          {
-            const int v = w.triangles[f][k], a = w.triangles[f][(k + j) % 3];
-            if (side[v] >= 0 || side[a] <= 0)
-              continue;
-            const double sv = plane.SignedDistance(w.points[v]);
-            const double sa = plane.SignedDistance(w.points[a]);
-            const Vec3 q = w.points[v] + (sv / (sv - sa)) * (w.points[a] - w.points[v]);
-            const double move = (q - plane.Project(w.points[v])).norm();
-            if (move < slideMove[v])
-            {
-              slideMove[v] = move;
-              slide[v] = plane.Project(q); // exactly on the plane
-              slides[v] = 1;
-            }
-          }
-  }
-  for (int v = 0; v < w.NumberOfPoints(); ++v)
-  {
-    if (!used[v] || side[v] > 0)
-      continue;
-    bool onAncestorPlane = false;
-    for (int d = 0; d < depth; ++d)
-      onAncestorPlane = onAncestorPlane ||
-        ((w.onPlane[v] & (uint64_t(1) << d)) && (pathFolds & (uint64_t(1) << d)));
-    // Projecting is the default; sliding when asked for, or when the projected point
-    // would be farther from the region than the error budget left there.
-    bool slideIt = slides[v] && !onAncestorPlane && side[v] < 0;
-    if (slideIt && !O.slideOntoPlane)
-      slideIt = charge[v] + toRegion.Distance(plane.Project(w.points[v])) > limit[v];
-    if (slideIt)
-    {
-      w.points[v] = slide[v];
-      w.onPlane[v] |= bit;
-      w.projected[v] = 1;
-      ++projected;
-      continue;
-    }
-    std::vector<Plane> constraints{ plane };
-    for (int d = 0; d < depth; ++d)
-      if ((w.onPlane[v] & (uint64_t(1) << d)) && (pathFolds & (uint64_t(1) << d)))
-        constraints.push_back(this->PlaneAtDepth[d]);
-    const double tolerance = 1e-9 * this->Tree.diagonal;
-    // The intersection of the planes keeps the ancestors' fold lines closed, but only where
-    // it is close to the orthogonal projection: a vertex that merely touches an ancestor's
-    // plane at a corner of its faces (the plane does not run along them) would be dragged
-    // along the new plane, up to the whole face away (a face of a folded square collapsed
-    // onto a point and was lost). Farther than epsilon, it is projected orthogonally and
-    // leaves the ancestors' planes.
-    const Vec3 orthogonal = plane.Project(w.points[v]);
-    Vec3 target = w.points[v];
-    bool onAll = ProjectOntoPlanes(target, constraints, tolerance);
-    if (onAll && constraints.size() > 1 && (target - orthogonal).norm() > eps)
-    {
-      target = orthogonal;
-      onAll = false;
-    }
-    w.points[v] = target;
-    if (!onAll)
-      for (int d = 0; d < depth; ++d)
-        if ((w.onPlane[v] & (uint64_t(1) << d)) &&
-          std::abs(this->PlaneAtDepth[d].SignedDistance(w.points[v])) > tolerance)
-          w.onPlane[v] &= ~(uint64_t(1) << d);
-    w.onPlane[v] |= bit;
-    if (side[v] < 0)
-    {
-      w.projected[v] = 1;
-      ++projected;
-    }
-  }
+    SlideTargets(w, keep, side, plane, slide, slides);
+  const int projected = this->ProjectOntoFoldPlane(w,
+    used,
+    side,
+    plane,
+    depth,
+    eps,
+    pathFolds,
+    slide,
+    slides,
+    [&](int v) { return charge[v] + toRegion.Distance(plane.Project(w.points[v])) > limit[v]; });
 
   // ... plus the largest distance of a point projected (or snapped) onto the plane(s) to
   // the region as it was.
   double projectionError = 0.0;
   if (O.errorBudget)
-  {
-    std::vector<Vec3> moved;
-    std::vector<int> movedPoint, movedFace;
-    for (int v = 0; v < w.NumberOfPoints(); ++v)
-      if (used[v] && side[v] <= 0)
-      {
-        moved.push_back(w.points[v]);
-        movedPoint.push_back(v);
-      }
-    // Faces changed by a move: their centroids too (a slid vertex is on the surface, its
-    // faces need not be).
-    for (int f = 0; f < nf; ++f)
-    {
-      const Triangle& t = w.triangles[f];
-      if (keep[f] && (side[t[0]] < 0 || side[t[1]] < 0 || side[t[2]] < 0))
-      {
-        moved.push_back((w.points[t[0]] + w.points[t[1]] + w.points[t[2]]) / 3.0);
-        movedFace.push_back(f);
-      }
-    }
-    const std::vector<double> d = toRegion.Distances(moved);
-    std::vector<double> displacement(w.points.size(), 0.0);
-    for (size_t k = 0; k < movedPoint.size(); ++k)
-      displacement[movedPoint[k]] = std::max(displacement[movedPoint[k]], d[k]);
-    for (size_t k = 0; k < movedFace.size(); ++k)
-      for (int v : w.triangles[movedFace[k]])
-        displacement[v] = std::max(displacement[v], d[movedPoint.size() + k]);
-    for (int v = 0; v < w.NumberOfPoints(); ++v)
-    {
-      projectionError = std::max(projectionError, displacement[v]);
-      w.budget[v] = std::max(0.0, limit[v] - charge[v] - displacement[v]);
-    }
-  }
+    projectionError = SpendProjectionBudget(w, used, keep, side, toRegion, charge, limit);
   double childBudget = eps;
   for (int v = 0; v < w.NumberOfPoints(); ++v)
     if (used[v])
