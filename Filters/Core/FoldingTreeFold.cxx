@@ -424,6 +424,14 @@ int Builder::ProjectOntoFoldPlane(WorkMesh& w,
   return projected;
 }
 
+/**
+ * The paper's fold (section 4.2) of region `w` at `plane`: keep the faces on the kept side and
+ * those straddling the plane, charge the mirror copies' error (ChargeMirrorError), move the
+ * kept points on or behind the plane onto it (SlideTargets, ProjectOntoFoldPlane), spend the
+ * budgets (SpendProjectionBudget), record the node and build the kept half one level down.
+ * (Over 100 lines because it is that sequence with the face classification and the node
+ * record inline; each step is named.)
+ */
 void Builder::Fold(int index,
   WorkMesh w,
   Plane plane,
