@@ -208,17 +208,11 @@ void ComputeBoundsAndAreas(PreparedMesh& mesh)
   }
 }
 
-bool PrepareMesh(const TriangleMesh& input,
-  const std::vector<Vec3>& inputNormals,
-  PreparedMesh& mesh,
-  std::string& error)
+namespace
 {
-  mesh = PreparedMesh();
-  if (input.points.empty() || input.triangles.empty())
-  {
-    error = "the mesh has no triangles";
-    return false;
-  }
+/// NaN-free points and triangles that refer to existing points; false with the reason.
+bool CheckTriangleMesh(const TriangleMesh& input, std::string& error)
+{
   for (const Vec3& p : input.points)
   {
     if (!p.allFinite())
@@ -239,37 +233,14 @@ bool PrepareMesh(const TriangleMesh& input,
       }
     }
   }
-  WeldPoints(input, mesh);
-  const int nf = static_cast<int>(input.triangles.size());
-  mesh.triangles.resize(nf);
-  for (int f = 0; f < nf; ++f)
-    for (int k = 0; k < 3; ++k)
-      mesh.triangles[f][k] = mesh.inputToWelded[input.triangles[f][k]];
+  return true;
+}
 
-  ComputeBoundsAndAreas(mesh);
-  if (!(mesh.totalArea > 0.0) || !(mesh.diagonal > 0.0))
-  {
-    error = "the mesh has zero area";
-    return false;
-  }
-
-  // Edge uses of faces with three distinct vertices.
-  std::vector<EdgeUse> uses;
-  uses.reserve(3 * static_cast<size_t>(nf));
-  for (int f = 0; f < nf; ++f)
-  {
-    const Triangle& t = mesh.triangles[f];
-    if (t[0] == t[1] || t[1] == t[2] || t[0] == t[2])
-      continue;
-    for (int k = 0; k < 3; ++k)
-    {
-      const int u = t[k], v = t[(k + 1) % 3];
-      uses.push_back({ std::min(u, v), std::max(u, v), f, u < v });
-    }
-  }
-  BucketSort(uses, mesh.NumberOfPoints(), [](const EdgeUse& u) { return u.a; });
-
-  // Parts, adjacency, edge statistics.
+/// Parts (faces connected through edges), face adjacency (CSR) and the boundary and
+/// non-manifold edge counts, from the edge uses sorted by edge.
+void ConnectFaces(PreparedMesh& mesh, const std::vector<EdgeUse>& uses)
+{
+  const int nf = mesh.NumberOfFaces();
   std::vector<int> parent(nf);
   std::iota(parent.begin(), parent.end(), 0);
   std::vector<std::pair<int, int>> adjacent;
@@ -305,8 +276,12 @@ bool PrepareMesh(const TriangleMesh& input,
       partOfRoot[r] = mesh.numberOfParts++;
     mesh.facePart[f] = partOfRoot[r];
   }
+}
 
-  // Orientation: consistent per part, then outward (closed) or majority (open).
+/// Orientation: consistent per part, then outward (closed parts) or the majority's (open).
+void OrientParts(PreparedMesh& mesh, const std::vector<EdgeUse>& uses)
+{
+  const int nf = mesh.NumberOfFaces();
   std::vector<char> flip = OrientFaces(mesh, uses);
   std::vector<char> partClosed(mesh.numberOfParts, 1);
   for (size_t k = 0; k < uses.size();)
@@ -343,8 +318,15 @@ bool PrepareMesh(const TriangleMesh& input,
       ++mesh.numberOfFlippedFaces;
     }
   }
+}
 
-  // Normals, centroids, vertex areas.
+/// Face normals and centroids, area-weighted vertex normals (the input's where it has valid
+/// ones, turned to the oriented surface's side), vertex areas and the vertex -> faces CSR.
+void ComputeNormalsAndIncidence(PreparedMesh& mesh,
+  const TriangleMesh& input,
+  const std::vector<Vec3>& inputNormals)
+{
+  const int nf = mesh.NumberOfFaces();
   const int nv = mesh.NumberOfPoints();
   mesh.faceNormals.assign(nf, Vec3::Zero());
   mesh.faceCentroids.assign(nf, Vec3::Zero());
@@ -390,6 +372,58 @@ bool PrepareMesh(const TriangleMesh& input,
   // The pairs come in increasing face order: BuildCsr's stable bucketing lists each
   // vertex's faces in increasing order, as sorting the pairs first would.
   BuildCsr(nv, incidence, mesh.vertexFaceOffsets, mesh.vertexFaces);
+}
+
+}
+
+bool PrepareMesh(const TriangleMesh& input,
+  const std::vector<Vec3>& inputNormals,
+  PreparedMesh& mesh,
+  std::string& error)
+{
+  mesh = PreparedMesh();
+  if (input.points.empty() || input.triangles.empty())
+  {
+    error = "the mesh has no triangles";
+    return false;
+  }
+  if (!CheckTriangleMesh(input, error))
+    return false;
+  WeldPoints(input, mesh);
+  const int nf = static_cast<int>(input.triangles.size());
+  mesh.triangles.resize(nf);
+  for (int f = 0; f < nf; ++f)
+    for (int k = 0; k < 3; ++k)
+      mesh.triangles[f][k] = mesh.inputToWelded[input.triangles[f][k]];
+
+  ComputeBoundsAndAreas(mesh);
+  if (!(mesh.totalArea > 0.0) || !(mesh.diagonal > 0.0))
+  {
+    error = "the mesh has zero area";
+    return false;
+  }
+
+  // Edge uses of faces with three distinct vertices.
+  std::vector<EdgeUse> uses;
+  uses.reserve(3 * static_cast<size_t>(nf));
+  for (int f = 0; f < nf; ++f)
+  {
+    const Triangle& t = mesh.triangles[f];
+    if (t[0] == t[1] || t[1] == t[2] || t[0] == t[2])
+      continue;
+    for (int k = 0; k < 3; ++k)
+    {
+      const int u = t[k], v = t[(k + 1) % 3];
+      uses.push_back({ std::min(u, v), std::max(u, v), f, u < v });
+    }
+  }
+  BucketSort(uses, mesh.NumberOfPoints(), [](const EdgeUse& u) { return u.a; });
+
+  ConnectFaces(mesh, uses);
+
+  OrientParts(mesh, uses);
+
+  ComputeNormalsAndIncidence(mesh, input, inputNormals);
   return true;
 }
 
