@@ -12,6 +12,8 @@
 // plane (origin, normal) of each. Not a test: the input of BenchmarkFoldingTable1 and
 // BenchmarkSymmetryDetection, e.g.
 //   build/bin/GenerateArtistMeshes /tmp/artist && build/bin/BenchmarkFoldingTable1 --threads 2 /tmp/artist
+#include "EdgeTable.h"
+
 #include <vtkCellArray.h>
 #include <vtkNew.h>
 #include <vtkPLYWriter.h>
@@ -23,7 +25,6 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
-#include <map>
 #include <random>
 #include <string>
 #include <utility>
@@ -32,7 +33,7 @@
 namespace
 {
 using Vec3 = Eigen::Vector3d;
-using Tri = std::array<int, 3>;
+using Tri = foldingmeshes::Triangle;
 
 /// A mesh under construction, counted in parts.
 struct Assembly
@@ -291,18 +292,6 @@ Eigen::Isometry3d RigidMotion(unsigned seed)
   return t;
 }
 
-int OpenEdges(const Assembly& a)
-{
-  std::map<std::pair<int, int>, int> uses;
-  for (const Tri& t : a.triangles)
-    for (int k = 0; k < 3; ++k)
-      ++uses[{ std::min(t[k], t[(k + 1) % 3]), std::max(t[k], t[(k + 1) % 3]) }];
-  int open = 0;
-  for (const auto& e : uses)
-    open += e.second == 1;
-  return open;
-}
-
 bool Write(const Assembly& a, const std::string& path)
 {
   vtkNew<vtkPoints> points;
@@ -360,8 +349,8 @@ int main(int argc, char* argv[])
         std::fprintf(stderr, "cannot write %s/%s.ply\n", dir.c_str(), name.c_str());
         return 1;
       }
-      std::printf("%-22s %7zu %6d %6d  (%.4f %.4f %.4f) / (%.4f %.4f %.4f)%s\n", name.c_str(),
-        a.triangles.size(), a.parts, OpenEdges(a), origin.x(), origin.y(), origin.z(), normal.x(),
+      std::printf("%-22s %7zu %6d %6zu  (%.4f %.4f %.4f) / (%.4f %.4f %.4f)%s\n", name.c_str(),
+        a.triangles.size(), a.parts, foldingmeshes::OpenEdges(a.triangles).size(), origin.x(), origin.y(), origin.z(), normal.x(),
         normal.y(), normal.z(), std::string(variant) == "deformed" ? " (one side deformed)" : "");
     }
   return 0;
