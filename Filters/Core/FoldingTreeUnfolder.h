@@ -137,8 +137,8 @@ struct UnfoldOptions
    * (FoldingLeafMesh::inputBoundary) whose input ids form an input border edge
    * (FoldingTree::inputBorderEdges); without flags (older tree files) nothing is filled - by a
    * minimal-area triangulation of its vertices (a fan around a new point at its centroid when
-   * every diagonal would repeat an edge), when the centroid and edge midpoints of every new
-   * face lie within holeToleranceScale * root epsilon of the loop, or the loop is small and
+   * every diagonal would repeat an edge), when every point of every new face lies within
+   * holeToleranceScale * root epsilon of the loop (proved, ProvedLoopDeviation), or the loop is small and
    * flat, and it has at most maximumHoleEdges edges. A gap that opens into the input's border
    * is closed by a chord between two border vertices (within 2 * that tolerance). Loops left
    * open are reported; `trace` receives where the open, non-manifold and misoriented edges

@@ -2,6 +2,7 @@
 // the boundary loops (the input's own border or a gap; the loops themselves are traced in
 // FoldingTreeUnfolderBoundaryLoops.cxx), minimal-area triangulation, the error bound check.
 #include "FoldingTreeUnfolderRepairInternal.h"
+#include "LoopFillDeviation.h"
 #include "Trace.h"
 
 #include <Eigen/Dense>
@@ -142,8 +143,8 @@ void Unfolder::RemoveLastPoint(Piece& piece)
 
 /**
  * Whether the fill of `loop` stays within the error bound: either every new face is close
- * to the loop itself (a narrow crack: its centroid and edge midpoints lie within the
- * tolerance of the loop's edges, which are parts of the surface), or the loop is small and
+ * to the loop itself (a narrow crack: every point of it within the tolerance of the loop's
+ * edges, which are parts of the surface; proved, ProvedLoopDeviation), or the loop is small and
  * flat: its vertices within half the tolerance of their best-fit plane, no two farther apart
  * than four times the tolerance or 2.5 mean loop edges (a missing face or two, on a coarse
  * mesh, re-tessellated like its neighbours; flat, so not across a crease).
@@ -154,23 +155,8 @@ bool FillWithinTolerance(const std::vector<Vec3>& points,
   double tolerance)
 {
   const int n = static_cast<int>(loop.size());
-  bool narrow = true;
-  for (size_t f = 0; f < fill.size() && narrow; ++f)
-  {
-    const Triangle& t = fill[f];
-    const Vec3 c = (points[t[0]] + points[t[1]] + points[t[2]]) / 3.0;
-    const Vec3 probes[4] = { c,
-      0.5 * (points[t[0]] + points[t[1]]),
-      0.5 * (points[t[1]] + points[t[2]]),
-      0.5 * (points[t[2]] + points[t[0]]) };
-    for (const Vec3& x : probes)
-    {
-      double d = std::numeric_limits<double>::infinity();
-      for (int i = 0; i < n && d > tolerance; ++i)
-        d = std::min(d, SegmentDistance(x, points[loop[i]], points[loop[(i + 1) % n]]));
-      narrow = narrow && d <= tolerance;
-    }
-  }
+  // Every point of the fill, not only sample points (a long sliver reaches far between them).
+  const bool narrow = ProvedLoopDeviation(points, fill, loop, tolerance) <= tolerance;
   if (narrow)
     return true;
   Vec3 mean = Vec3::Zero();

@@ -151,7 +151,7 @@ bool ClipShortestEars(const std::vector<Vec3>& points,
 /**
  * Whether the fill of a boundary loop (triangles over the loop's vertices, or a fan around a
  * new point) stays within `tolerance` of the surface (FoldingTreeUnfolderHoles.cxx): every
- * new face's centroid and edge midpoints within it of the loop's edges (a narrow crack), or
+ * point of every new face provably within it of the loop's edges (a narrow crack), or
  * the loop small and flat (see there).
  */
 bool FillWithinTolerance(const std::vector<Vec3>& points,
