@@ -73,6 +73,8 @@ original and stored faces, compression, tree height, folds, leaves and time.
   --seed N                 seed of the candidate sampling, as for detect (default 1)
   --tight-symmetry         fold only clear symmetries (RMS mirror distance <= 0.35 epsilon);
                            default: every epsilon-symmetric region of >= 10% area, as the paper
+  --no-verify-bound        skip the proof that unfold(tree) is within epsilon of MESH (and the
+                           rebuilds that keep the faces where it fails out of every fold)
   --sampled-search-above N regions with more than N faces search candidate planes on a sampled
                            copy (default 1000; 0: every region; a huge N: the full search)
   --keep-projected-points  (roundtrip only) as for unfold

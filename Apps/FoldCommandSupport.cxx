@@ -77,6 +77,8 @@ FoldSettings ParseFoldArguments(int argc, char* argv[])
       f.randomSeed = ParseInteger(arg, value("--seed"), -2147483647, 2147483647);
     else if (arg == "--tight-symmetry")
       f.tightSymmetry = true;
+    else if (arg == "--no-verify-bound")
+      f.noVerifyBound = true;
     else if (arg == "--separate-parts")
       f.separateParts = true;
     else if (arg == "--sampled-search-above")
@@ -171,6 +173,8 @@ void ConfigureBuilder(vtkFoldingTreeBuilder* builder, const FoldSettings& f)
     builder->SetSampledSearchAboveFaces(*f.sampledSearchAboveFaces);
   if (f.tightSymmetry)
     builder->RequireTightSymmetryOn();
+  if (f.noVerifyBound)
+    builder->VerifyBoundOff();
   if (f.separateParts)
     builder->ConnectNearbyPartsOff();
 }

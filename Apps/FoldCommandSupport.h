@@ -34,6 +34,7 @@ struct FoldSettings
   std::optional<int> randomSeed;
   std::optional<int> sampledSearchAboveFaces;
   bool tightSymmetry = false;       // --tight-symmetry: RequireTightSymmetry on
+  bool noVerifyBound = false;       // --no-verify-bound: VerifyBound off
   bool separateParts = false;       // --separate-parts: ConnectNearbyParts off
   int upAxis = -1;                  // the picture's up axis (--up; -1: auto)
   bool keepProjectedPoints = false; // roundtrip's unfolder: RemoveProjectedPoints off

@@ -72,11 +72,16 @@ int Fold(int argc, char* argv[])
   const int nodes = static_cast<int>(TreeValue(tree, "NumberOfNodes"));
   const double epsilon = TreeValue(tree, "RootEpsilon");
   const double buildSeconds = TreeValue(tree, "BuildSeconds");
+  const double verifiedBound = TreeValue(tree, "VerifiedBound", -1.0);
+  const int pinnedFaces = static_cast<int>(TreeValue(tree, "PinnedFaces"));
+  const int rounds = static_cast<int>(TreeValue(tree, "VerificationRounds"));
   if (f.json)
   {
     std::printf("{\n  \"mesh\": %s,\n  \"originalFaces\": %d,\n  \"storedFaces\": %d,\n"
                 "  \"compression\": %.6f,\n  \"treeHeight\": %d,\n  \"folds\": %d,\n"
                 "  \"leaves\": %d,\n  \"nodes\": %d,\n  \"rootEpsilon\": %.9g,\n"
+                "  \"verifiedBound\": %.9g,\n  \"pinnedFaces\": %d,\n"
+                "  \"verificationRounds\": %d,\n"
                 "  \"buildSeconds\": %.3f,\n  \"seconds\": %.3f,\n"
                 "  \"outputs\": {\"tree\": %s, \"segmentation\": %s, \"picture\": %s}\n}\n",
       JsonString(f.meshPath).c_str(),
@@ -88,6 +93,9 @@ int Fold(int argc, char* argv[])
       leaves,
       nodes,
       epsilon,
+      verifiedBound,
+      pinnedFaces,
+      rounds,
       buildSeconds,
       seconds,
       JsonString(treePath).c_str(),
@@ -106,6 +114,14 @@ int Fold(int argc, char* argv[])
       leaves,
       nodes);
     std::printf("root epsilon:            %.6g\n", epsilon);
+    if (verifiedBound >= 0.0)
+      std::printf("proved bound:            %.6g (unfold vs mesh; %d faces pinned in %d extra "
+                  "build(s))\n",
+        verifiedBound,
+        pinnedFaces,
+        rounds);
+    else
+      std::printf("proved bound:            not verified\n");
     std::printf("time:                    %.3f s (build %.3f s)\n", seconds, buildSeconds);
     std::printf("wrote:                   %s\n                         %s\n",
       treePath.c_str(),

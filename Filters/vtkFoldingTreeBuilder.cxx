@@ -45,6 +45,7 @@ foldingmeshes::FoldingTreeOptions FoldingTreeOptionsOf(vtkFoldingTreeBuilder* se
   options.maximumFolds = self->GetMaximumFolds();
   options.requireMeaningfulSymmetry = self->GetRequireMeaningfulSymmetry();
   options.requireTightSymmetry = self->GetRequireTightSymmetry();
+  options.verifyBound = self->GetVerifyBound();
   options.keepSide = self->GetKeepSide() == vtkFoldingTreeBuilder::FEWER_FACES
     ? foldingmeshes::KeepSide::FewerFaces
     : foldingmeshes::KeepSide::MoreFaces;
@@ -260,6 +261,7 @@ void vtkFoldingTreeBuilder::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "MaximumFolds: " << this->MaximumFolds << "\n";
   os << indent << "RequireMeaningfulSymmetry: " << this->RequireMeaningfulSymmetry << "\n";
   os << indent << "RequireTightSymmetry: " << this->RequireTightSymmetry << "\n";
+  os << indent << "VerifyBound: " << this->VerifyBound << "\n";
   os << indent << "ConnectNearbyParts: " << this->ConnectNearbyParts << "\n";
   os << indent << "Method: " << (this->Method == PAPER ? "Paper" : "Robust") << "\n";
   os << indent << "SampledSearchAboveFaces: " << this->SampledSearchAboveFaces << "\n";

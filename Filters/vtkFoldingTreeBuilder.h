@@ -204,6 +204,21 @@ public:
   ///@}
 
   ///@{
+  /**
+   * Prove the error bound after building (default on): unfold the tree with the unfolder's
+   * defaults and bound its Hausdorff distance to the input over every point of both surfaces;
+   * where a point is not proved within epsilon, keep the input faces there out of every fold
+   * and build again (at most four times, then the input is stored whole). The tree's
+   * "VerifiedBound" (the proved bound; -1 when off), "PinnedFaces" and "VerificationRounds"
+   * say what happened. Off: the tree the error budgets give, unverified, one unfold and proof
+   * faster (docs/builder.md).
+   */
+  vtkSetMacro(VerifyBound, bool);
+  vtkGetMacro(VerifyBound, bool);
+  vtkBooleanMacro(VerifyBound, bool);
+  ///@}
+
+  ///@{
   /** Let regions and components span parts that touch within epsilon (default on). */
   vtkSetMacro(ConnectNearbyParts, bool);
   vtkGetMacro(ConnectNearbyParts, bool);
@@ -275,6 +290,7 @@ protected:
   int MaximumFolds = 8;
   bool RequireMeaningfulSymmetry = true;
   bool RequireTightSymmetry = false;
+  bool VerifyBound = true;
   bool ConnectNearbyParts = true;
   int Method = ROBUST;
   int SampledSearchAboveFaces = 1000;

@@ -494,6 +494,17 @@ bool MultiBlockToFoldingTree(vtkMultiBlockDataSet* in,
       reader.Double(fd, "BuildSeconds", "Tree", &tree.buildSeconds);
     if (fd->GetAbstractArray("Aborted") && reader.Int(fd, "Aborted", "Tree", aborted))
       tree.aborted = aborted != 0;
+    // Optional (files written before the builder verified its bound): not verified.
+    if (fd->GetAbstractArray("VerifiedBound"))
+      reader.Double(fd, "VerifiedBound", "Tree", &tree.verifiedBound);
+    long long pinned = 0, rounds = 0;
+    if (fd->GetAbstractArray("PinnedFaces") && reader.Int(fd, "PinnedFaces", "Tree", pinned) &&
+      pinned >= 0 && pinned <= faces)
+      tree.pinnedFaces = static_cast<int>(pinned);
+    if (fd->GetAbstractArray("VerificationRounds") &&
+      reader.Int(fd, "VerificationRounds", "Tree", rounds) && rounds >= 0 &&
+      rounds <= std::numeric_limits<int>::max())
+      tree.verificationRounds = static_cast<int>(rounds);
     // Optional (older files): without it the repair keeps no non-manifold edge.
     if (vtkAbstractArray* a = fd->GetAbstractArray("InputNonManifoldEdges"))
     {

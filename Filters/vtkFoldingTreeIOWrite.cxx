@@ -514,6 +514,9 @@ bool FoldingTreeToMultiBlock(const FoldingTree& tree,
   AddDouble(fd, "RootEpsilon", &tree.rootEpsilon);
   AddDouble(fd, "Diagonal", &tree.diagonal);
   AddInt(fd, "Aborted", tree.aborted ? 1 : 0);
+  AddDouble(fd, "VerifiedBound", &tree.verifiedBound);
+  AddInt(fd, "PinnedFaces", tree.pinnedFaces);
+  AddInt(fd, "VerificationRounds", tree.verificationRounds);
   if (!tree.inputNonManifoldEdges.empty())
   {
     // FoldingTree::inputNonManifoldEdges: (input point id a, b, faces) per edge.

@@ -164,6 +164,14 @@ struct FoldingTree
   double rootEpsilon = 0.0;
   double buildSeconds = 0.0;
   bool aborted = false;
+  /// The proved bound on the Hausdorff distance between unfold(tree) (default UnfoldOptions)
+  /// and the input, when the builder verified it (FoldingTreeOptions::verifyBound); -1: not
+  /// verified (the option off, an abort, or a tree read from a file written without it).
+  double verifiedBound = -1.0;
+  /// Input faces the verification pinned (kept out of every symmetric region, stored as they
+  /// are) and the builds it added for that (0: the first tree was proved).
+  int pinnedFaces = 0;
+  int verificationRounds = 0;
   /// The input's own border: its edges used by one face (after the root's weld of coincident
   /// points), as sorted pairs of input point ids (FoldingLeafMesh::originalPointIds), sorted.
   /// With the leaves' inputBoundary flags the unfolder tells the input's border from gaps.

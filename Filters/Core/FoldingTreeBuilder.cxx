@@ -1,6 +1,7 @@
 // BuildFoldingTree: the recursion, stop criteria and segmentation (Builder::Build, paper 4.2).
 #include "FoldingTreeBuilder.h"
 #include "FoldingTreeBuilderInternal.h"
+#include "FoldingTreeVerification.h"
 
 #include "CandidatePlanes.h"
 #include "EdgeTable.h"
@@ -367,47 +368,86 @@ bool BuildFoldingTree(const TriangleMesh& input,
         return false;
       }
 
-  WorkMesh root;
-  root.points = input.points;
-  root.triangles = input.triangles;
-  root.pointOrig.resize(np);
-  std::iota(root.pointOrig.begin(), root.pointOrig.end(), 0);
-  root.faceOrig.resize(input.triangles.size());
-  std::iota(root.faceOrig.begin(), root.faceOrig.end(), 0);
-  root.tear.assign(np, 0);
-  root.onPlane.assign(np, 0);
-  root.projected.assign(np, 0);
-  root.mirrorFlags.assign(np, {});
-  root.budget.assign(np, options.epsilon);
-
-  tree.numberOfOriginalFaces = static_cast<int>(input.triangles.size());
-  tree.numberOfOriginalPoints = np;
-  tree.rootEpsilon = options.epsilon;
+  // One build with the faces `pinned` kept out of every symmetric region.
+  auto build = [&](const FoldingTreeOptions& o, const std::vector<char>& pinned) -> bool
   {
-    Vec3 lo = Vec3::Constant(std::numeric_limits<double>::max());
-    Vec3 hi = -lo;
-    for (const Triangle& t : input.triangles)
-      for (int v : t)
-      {
-        lo = lo.cwiseMin(input.points[v]);
-        hi = hi.cwiseMax(input.points[v]);
-      }
-    tree.diagonal = (hi - lo).norm();
-    double area = 0.0;
-    for (const Triangle& t : input.triangles)
-      area += TriangleArea(root, t);
-    tree.originalArea = area;
-  }
-  if (!(tree.originalArea > 0.0))
+    tree = FoldingTree();
+    WorkMesh root;
+    root.points = input.points;
+    root.triangles = input.triangles;
+    root.pointOrig.resize(np);
+    std::iota(root.pointOrig.begin(), root.pointOrig.end(), 0);
+    root.faceOrig.resize(input.triangles.size());
+    std::iota(root.faceOrig.begin(), root.faceOrig.end(), 0);
+    root.tear.assign(np, 0);
+    root.onPlane.assign(np, 0);
+    root.projected.assign(np, 0);
+    root.mirrorFlags.assign(np, {});
+    root.budget.assign(np, o.epsilon);
+
+    tree.numberOfOriginalFaces = static_cast<int>(input.triangles.size());
+    tree.numberOfOriginalPoints = np;
+    tree.rootEpsilon = o.epsilon;
+    {
+      Vec3 lo = Vec3::Constant(std::numeric_limits<double>::max());
+      Vec3 hi = -lo;
+      for (const Triangle& t : input.triangles)
+        for (int v : t)
+        {
+          lo = lo.cwiseMin(input.points[v]);
+          hi = hi.cwiseMax(input.points[v]);
+        }
+      tree.diagonal = (hi - lo).norm();
+      double area = 0.0;
+      for (const Triangle& t : input.triangles)
+        area += TriangleArea(root, t);
+      tree.originalArea = area;
+    }
+    if (!(tree.originalArea > 0.0))
+      return false;
+    Builder builder(o, inputNormals, tree, pinned);
+    builder.Run(std::move(root));
+    tree.aborted = builder.Aborted;
+    return true;
+  };
+  if (!build(options, {}))
   {
     error = "the input mesh has zero area";
     tree = FoldingTree();
     return false;
   }
-
-  Builder builder(options, inputNormals, tree);
-  builder.Run(std::move(root));
-  tree.aborted = builder.Aborted;
+  // The bound, proved; where it is not, the faces there are pinned and the tree built again.
+  if (options.verifyBound && !tree.aborted)
+  {
+    FoldingTreeOptions again = options;
+    again.progress = nullptr; // the progress bar already reached the end once
+    std::vector<char> pinned(input.triangles.size(), 0);
+    for (int round = 0;; ++round)
+    {
+      const UnfoldedBoundCheck check = VerifyUnfoldedBound(input, tree);
+      if (options.trace)
+        options.trace(FormatTrace("[verify] round %d: proved bound %.6g of epsilon %.6g, %s",
+          round,
+          check.upper,
+          options.epsilon,
+          check.within ? "within" : "not within"));
+      if (check.within)
+      {
+        tree.verifiedBound = check.upper;
+        break;
+      }
+      if (round == MaximumVerificationRounds)
+        std::fill(pinned.begin(), pinned.end(), 1); // a single leaf: the input itself
+      else
+        for (int f : check.pin)
+          pinned[f] = 1;
+      build(again, pinned);
+      tree.verificationRounds = round + 1;
+      tree.pinnedFaces = static_cast<int>(std::count(pinned.begin(), pinned.end(), 1));
+      if (round > MaximumVerificationRounds)
+        break; // not expected: every face pinned is the input itself
+    }
+  }
   tree.buildSeconds =
     std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return true;

@@ -30,12 +30,16 @@ bool KeepsPositiveSide(const std::vector<Vec3>& points,
 class Builder
 {
 public:
+  /// pinned: per input face (or empty), 1 where the face may not be part of any symmetric
+  /// region S (BuildFoldingTree's verification keeps it stored as it is).
   Builder(const FoldingTreeOptions& options,
     const std::vector<Vec3>& inputNormals,
-    FoldingTree& tree)
+    FoldingTree& tree,
+    const std::vector<char>& pinned)
     : Options(options)
     , InputNormals(inputNormals)
     , Tree(tree)
+    , Pinned(pinned)
   {
     this->MaximumDepth = std::max(1, std::min(options.maximumDepth, MaximumFoldingTreeLevels - 1));
   }
@@ -196,6 +200,12 @@ private:
   const FoldingTreeOptions& Options;
   const std::vector<Vec3>& InputNormals;
   FoldingTree& Tree;
+  const std::vector<char>& Pinned;
+  /// Whether face f of region w is pinned (see the constructor).
+  bool IsPinned(const WorkMesh& w, int f) const
+  {
+    return !this->Pinned.empty() && this->Pinned[w.faceOrig[f]];
+  }
   std::unique_ptr<SurfaceDistanceQuery> ToInput; ///< distances to the input surface
   std::vector<Plane> PlaneAtDepth;
   std::vector<double> EpsilonAtDepth;

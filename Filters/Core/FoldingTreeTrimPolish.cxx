@@ -123,7 +123,11 @@ std::vector<char> Builder::ChooseSymmetricRegion(const WorkMesh& w,
   best = this->TrimAndPolish(w, pm, region, std::move(best), eps, plane, provenSide);
   double bestArea = RegionArea(pm, best);
   if (!this->Options.trimToMirrorConsistent)
+  {
+    for (int f = 0; f < nf; ++f)
+      best[f] = best[f] && !this->IsPinned(w, f);
     return best;
+  }
   std::unique_ptr<MirrorDistance> distances;
   std::vector<double> d;
   for (size_t k = 1; k < result.finalists.size() && k < RegionCandidatePlanes; ++k)
@@ -249,7 +253,7 @@ std::vector<char> Builder::Trim(const WorkMesh& w,
     bool changed = false;
     for (size_t k = 0; k < faceOf.size(); ++k)
       // Degenerate faces have no distance of their own: judged with their neighbours.
-      if (!ok[k] && !spm.faceDegenerate[k])
+      if ((!ok[k] && !spm.faceDegenerate[k]) || this->IsPinned(w, faceOf[k]))
       {
         next[faceOf[k]] = 0;
         changed = true;

@@ -23,6 +23,7 @@ struct Piece
   std::array<Vec3, 3> corner;
   double bound;    ///< dist(centroid) + largest corner distance to the centroid
   long long order; ///< creation number: ties in the heap are taken oldest first
+  int face;        ///< the triangle of `from` it is part of
 };
 
 struct ByBound
@@ -223,8 +224,13 @@ HausdorffBounds DirectedHausdorffBounds(const TriangleMesh& from,
   const SurfaceDistanceQuery& to,
   double tolerance,
   long long maxEvaluations,
-  double floor)
+  double floor,
+  std::vector<int>* unproved)
 {
+  // Faces with a piece whose final bound is above floor + tolerance.
+  std::vector<char> beyond(unproved ? from.triangles.size() : 0, 0);
+  if (unproved)
+    unproved->clear();
   HausdorffBounds result;
   if (from.triangles.empty())
     return result;
@@ -253,13 +259,20 @@ HausdorffBounds DirectedHausdorffBounds(const TriangleMesh& from,
     if (piece.bound > stopLevel())
       heap.push(piece);
     else
+    {
       settled = std::max(settled, piece.bound);
+      if (unproved && piece.bound > floor + tolerance)
+        beyond[piece.face] = 1;
+    }
   };
   const size_t firstCentroid = samples.size() - from.triangles.size();
   for (size_t f = 0; f < from.triangles.size(); ++f)
   {
     const Triangle& t = from.triangles[f];
-    Piece piece{ { from.points[t[0]], from.points[t[1]], from.points[t[2]] }, 0.0, created++ };
+    Piece piece{ { from.points[t[0]], from.points[t[1]], from.points[t[2]] },
+      0.0,
+      created++,
+      static_cast<int>(f) };
     piece.bound = Bound(piece.corner,
       samples[firstCentroid + f],
       d[firstCentroid + f],
@@ -315,10 +328,20 @@ HausdorffBounds DirectedHausdorffBounds(const TriangleMesh& from,
         }
       });
     for (size_t c = 0; c < children.size(); ++c)
-      keep(Piece{ children[c], bounds[c], created++ });
+      keep(Piece{ children[c], bounds[c], created++, split[c / 4].face });
   }
   result.converged = !open();
   result.upper = std::max({ result.lower, settled, heap.empty() ? 0.0 : heap.top().bound });
+  if (unproved)
+  {
+    for (; !heap.empty(); heap.pop())
+      if (heap.top().bound > floor + tolerance)
+        beyond[heap.top().face] = 1;
+    unproved->clear();
+    for (size_t f = 0; f < beyond.size(); ++f)
+      if (beyond[f])
+        unproved->push_back(static_cast<int>(f));
+  }
   return result;
 }
 

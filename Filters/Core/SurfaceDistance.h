@@ -111,12 +111,17 @@ constexpr long long DefaultMaximumEvaluations = 50000000;
  * looser, and `converged` false). Memory: the pieces still above the stop level, fewer than
  * maxEvaluations / 2. An empty `from` gives 0; an empty `to` infinity. Deterministic, for
  * any thread count.
+ * With `unproved`: filled with the triangles of `from` (sorted ids) that hold a point not
+ * proved within floor + tolerance of `to` (a piece whose final bound is above it) - where the
+ * distance exceeds floor, or may (the evaluation budget ran out); empty when upper <= floor +
+ * tolerance.
  */
 HausdorffBounds DirectedHausdorffBounds(const TriangleMesh& from,
   const SurfaceDistanceQuery& to,
   double tolerance,
   long long maxEvaluations = DefaultMaximumEvaluations,
-  double floor = 0.0);
+  double floor = 0.0,
+  std::vector<int>* unproved = nullptr);
 
 /**
  * Both ways: lower = max of the two lowers, upper = max of the two uppers (the symmetric

@@ -84,6 +84,39 @@ inline foldingmeshes::PreparedMesh Prepare(const foldingmeshes::TriangleMesh& so
   return mesh;
 }
 
+/// A tree made of one leaf holding `m` (no flags, no budgets), of the given root epsilon and
+/// input diagonal.
+inline foldingmeshes::FoldingTree LeafTree(const foldingmeshes::TriangleMesh& m,
+  double rootEpsilon,
+  double diagonal)
+{
+  using namespace foldingmeshes;
+  FoldingTree t;
+  FoldingNode leaf;
+  leaf.kind = FoldingNodeKind::Leaf;
+  leaf.leafReason = LeafReason::MinimumFaces;
+  leaf.epsilon = rootEpsilon;
+  leaf.numberOfFaces = static_cast<int>(m.triangles.size());
+  FoldingLeafMesh& l = leaf.mesh;
+  l.points = m.points;
+  l.triangles = m.triangles;
+  const int np = static_cast<int>(m.points.size());
+  for (int v = 0; v < np; ++v)
+    l.originalPointIds.push_back(v);
+  for (int f = 0; f < static_cast<int>(m.triangles.size()); ++f)
+    l.originalFaceIds.push_back(f);
+  l.tearMask.assign(np, 0);
+  l.planeMask.assign(np, 0);
+  l.projected.assign(np, 0);
+  l.inputBoundary.assign(np, 0);
+  t.nodes.push_back(leaf);
+  t.numberOfOriginalFaces = leaf.numberOfFaces;
+  t.numberOfOriginalPoints = np;
+  t.diagonal = diagonal;
+  t.rootEpsilon = rootEpsilon;
+  return t;
+}
+
 inline double Seconds(std::chrono::steady_clock::time_point since)
 {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - since).count();

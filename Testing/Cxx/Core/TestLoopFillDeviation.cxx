@@ -96,9 +96,8 @@ void TestSoundOnBentLoops()
     for (int k = 0; k < 6; ++k)
     {
       const double a = 2.0 * M_PI * k / 6.0;
-      p.emplace_back(std::cos(a) + 0.2 * jitter(random),
-        std::sin(a) + 0.2 * jitter(random),
-        jitter(random));
+      p.emplace_back(
+        std::cos(a) + 0.2 * jitter(random), std::sin(a) + 0.2 * jitter(random), jitter(random));
     }
     const std::vector<int> loop{ 0, 1, 2, 3, 4, 5 };
     std::vector<Triangle> fill;

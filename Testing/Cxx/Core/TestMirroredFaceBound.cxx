@@ -159,9 +159,11 @@ int main(int argc, char* argv[])
       for (vtkIdType i = 0; i < n->GetNumberOfTuples(); ++i)
         normals.emplace_back(n->GetComponent(i, 0), n->GetComponent(i, 1), n->GetComponent(i, 2));
     REQUIRE(normals.size() == bunny.points.size(), "bunny: the file has no point normals");
+    // The budgets alone, without the verification that would repair a break afterwards.
     auto proved = [&](FoldingTreeOptions options)
     {
       options.epsilon = eps;
+      options.verifyBound = false;
       FoldingTree tree;
       REQUIRE(BuildFoldingTree(bunny, normals, options, tree, error), "bunny: " << error);
       const UnfoldedMesh u = coretest::Unfold(tree);

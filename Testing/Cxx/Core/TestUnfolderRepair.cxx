@@ -33,33 +33,11 @@ namespace pm = foldingmeshes::testing;
 namespace
 {
 
-/// A tree made of one leaf holding `m` (no flags, no budgets).
-FoldingTree LeafTree(const TriangleMesh& m, double rootEpsilon)
+
+/// A one-leaf tree of the unit sphere's mesh `m` (diagonal 2 sqrt 3).
+FoldingTree UnitSphereTree(const TriangleMesh& m, double rootEpsilon)
 {
-  FoldingTree t;
-  FoldingNode leaf;
-  leaf.kind = FoldingNodeKind::Leaf;
-  leaf.leafReason = LeafReason::MinimumFaces;
-  leaf.epsilon = rootEpsilon;
-  leaf.numberOfFaces = static_cast<int>(m.triangles.size());
-  FoldingLeafMesh& l = leaf.mesh;
-  l.points = m.points;
-  l.triangles = m.triangles;
-  const int np = static_cast<int>(m.points.size());
-  for (int v = 0; v < np; ++v)
-    l.originalPointIds.push_back(v);
-  for (int f = 0; f < static_cast<int>(m.triangles.size()); ++f)
-    l.originalFaceIds.push_back(f);
-  l.tearMask.assign(np, 0);
-  l.planeMask.assign(np, 0);
-  l.projected.assign(np, 0);
-  l.inputBoundary.assign(np, 0);
-  t.nodes.push_back(leaf);
-  t.numberOfOriginalFaces = leaf.numberOfFaces;
-  t.numberOfOriginalPoints = np;
-  t.diagonal = 2.0 * std::sqrt(3.0); // unit sphere
-  t.rootEpsilon = rootEpsilon;
-  return t;
+  return coretest::LeafTree(m, rootEpsilon, 2.0 * std::sqrt(3.0));
 }
 
 /// The sphere without the faces around vertex `center`; `loop` gets the hole's vertices.
@@ -90,7 +68,7 @@ void TestHoles(const TriangleMesh& sphere)
   const int n = static_cast<int>(loop.size());
 
   // Filled (root epsilon 0.2: the fill lies within 0.1 of the loop).
-  const FoldingTree tree = LeafTree(holed, 0.2);
+  const FoldingTree tree = UnitSphereTree(holed, 0.2);
   const UnfoldedMesh u = coretest::Unfold(tree);
   const coretest::EdgeStats s = coretest::CountEdges(u.triangles);
   std::printf("hole of %d edges: filled %d loops, %d faces; open %d non-manifold %d "
@@ -175,7 +153,7 @@ void TestHoles(const TriangleMesh& sphere)
     "unknown border: filled or not reported");
 
   // Beyond the tolerance: left open and reported.
-  const FoldingTree tight = LeafTree(holed, 1e-4);
+  const FoldingTree tight = UnitSphereTree(holed, 1e-4);
   const UnfoldedMesh r = coretest::Unfold(tight);
   EXPECT(coretest::CountEdges(r.triangles).open == n && r.repair.openLoops == 1 &&
       r.repair.openEdges == n && r.repair.openLength > 0.0 && r.repair.filledLoops == 0,
@@ -202,7 +180,7 @@ void TestOrientationAndNonManifold(const TriangleMesh& sphere)
       ++count;
       break;
     }
-  const FoldingTree tree = LeafTree(flipped, 0.04);
+  const FoldingTree tree = UnitSphereTree(flipped, 0.04);
   UnfoldOptions off;
   off.closeHoles = false;
   const coretest::EdgeStats before = coretest::CountEdges(coretest::Unfold(tree, off).triangles);
@@ -231,7 +209,7 @@ void TestOrientationAndNonManifold(const TriangleMesh& sphere)
       (sphere.points[far] - sphere.points[t0[0]]).norm())
       far = v;
   fin.triangles.push_back({ t0[0], t0[1], far });
-  FoldingTree finTree = LeafTree(fin, 0.04);
+  FoldingTree finTree = UnitSphereTree(fin, 0.04);
   EXPECT(coretest::CountEdges(coretest::Unfold(finTree, off).triangles).nonManifold == 1,
     "fin: not non-manifold");
   // (Another input non-manifold edge listed, not this one: the fin is still dropped.)
@@ -269,7 +247,7 @@ std::vector<InputNonManifoldEdge> NonManifoldEdges(const TriangleMesh& m)
 /// edges listed) and checks that every face comes back, none dropped, flipped or added.
 void ExpectAllFacesKept(const char* name, const TriangleMesh& m, bool closed)
 {
-  FoldingTree tree = LeafTree(m, 0.04);
+  FoldingTree tree = UnitSphereTree(m, 0.04);
   if (!closed)
     tree.nodes[0].mesh.inputBoundary.assign(m.points.size(), 1);
   tree.inputNonManifoldEdges = NonManifoldEdges(m);
@@ -317,7 +295,7 @@ void TestInputNonManifold(const TriangleMesh& sphere)
 
   // Without the list (a tree file written before it existed): the old repair, two kept.
   {
-    FoldingTree old = LeafTree(fan, 0.04);
+    FoldingTree old = UnitSphereTree(fan, 0.04);
     old.nodes[0].mesh.inputBoundary.assign(fan.points.size(), 1);
     const UnfoldedMesh u = coretest::Unfold(old);
     EXPECT(u.NumberOfFaces() == 2 && u.repair.droppedFaces == 8,
@@ -330,7 +308,7 @@ void TestInputNonManifold(const TriangleMesh& sphere)
     TriangleMesh more = fan;
     more.points.push_back(fan.points[5] + Vec3(0.0, 0.0, 0.01));
     more.triangles.push_back({ 0, 1, 12 });
-    FoldingTree tree = LeafTree(more, 0.04);
+    FoldingTree tree = UnitSphereTree(more, 0.04);
     tree.nodes[0].mesh.inputBoundary.assign(more.points.size(), 1);
     tree.inputNonManifoldEdges = NonManifoldEdges(fan); // 10 faces
     const UnfoldedMesh u = coretest::Unfold(tree);

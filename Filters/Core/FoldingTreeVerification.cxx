@@ -1,0 +1,92 @@
+// The builder's proof that unfold(tree) stays within the root epsilon of the input (see
+// FoldingTreeVerification.h).
+#include "FoldingTreeVerification.h"
+
+#include "FoldingTreeUnfolder.h"
+#include "SurfaceDistance.h"
+
+#include <algorithm>
+#include <limits>
+#include <string>
+
+namespace foldingmeshes
+{
+namespace
+{
+/// Rings of faces sharing a vertex with `faces`, `rings` times (input vertex ids).
+std::vector<int> GrowByRings(const TriangleMesh& mesh, std::vector<char> mark, int rings)
+{
+  std::vector<std::vector<int>> facesOf(mesh.points.size());
+  for (size_t f = 0; f < mesh.triangles.size(); ++f)
+    for (int v : mesh.triangles[f])
+      facesOf[v].push_back(static_cast<int>(f));
+  for (int r = 0; r < rings; ++r)
+  {
+    std::vector<char> next = mark;
+    for (size_t f = 0; f < mesh.triangles.size(); ++f)
+      if (mark[f])
+        for (int v : mesh.triangles[f])
+          for (int g : facesOf[v])
+            next[g] = 1;
+    mark = std::move(next);
+  }
+  std::vector<int> out;
+  for (size_t f = 0; f < mark.size(); ++f)
+    if (mark[f])
+      out.push_back(static_cast<int>(f));
+  return out;
+}
+}
+
+UnfoldedBoundCheck VerifyUnfoldedBound(const TriangleMesh& input, const FoldingTree& tree)
+{
+  UnfoldedBoundCheck check;
+  UnfoldedMesh unfolded;
+  std::string error;
+  if (!UnfoldFoldingTree(tree, UnfoldOptions(), unfolded, error))
+  {
+    // Not expected for a tree the builder made; nothing to pin but everything.
+    check.upper = std::numeric_limits<double>::infinity();
+    check.pin.resize(input.triangles.size());
+    for (size_t f = 0; f < check.pin.size(); ++f)
+      check.pin[f] = static_cast<int>(f);
+    return check;
+  }
+  TriangleMesh out;
+  out.points = unfolded.points;
+  out.triangles = unfolded.triangles;
+  const double epsilon = tree.rootEpsilon;
+  const double tolerance = 1e-7 * tree.diagonal;
+  const SurfaceDistanceQuery toInput(input), toOut(out);
+  std::vector<int> outBeyond, inputBeyond;
+  const HausdorffBounds there = DirectedHausdorffBounds(
+    out, toInput, tolerance, DefaultMaximumEvaluations, epsilon, &outBeyond);
+  const HausdorffBounds back = DirectedHausdorffBounds(
+    input, toOut, tolerance, DefaultMaximumEvaluations, epsilon, &inputBeyond);
+  check.upper = std::max(there.upper, back.upper);
+  check.within = check.upper <= epsilon + tolerance;
+  if (check.within)
+    return check;
+  std::vector<char> mark(input.triangles.size(), 0);
+  for (int f : inputBeyond)
+    mark[f] = 1;
+  // The input faces under the unfolded faces beyond epsilon: nearest to their corners and
+  // centroids.
+  std::vector<Vec3> probes;
+  for (int f : outBeyond)
+  {
+    const Triangle& t = out.triangles[f];
+    for (int v : t)
+      probes.push_back(out.points[v]);
+    probes.push_back((out.points[t[0]] + out.points[t[1]] + out.points[t[2]]) / 3.0);
+  }
+  std::vector<double> d;
+  std::vector<int> nearest;
+  toInput.Closest(probes, d, nearest);
+  for (int f : nearest)
+    if (f >= 0)
+      mark[f] = 1;
+  check.pin = GrowByRings(input, std::move(mark), 2);
+  return check;
+}
+}

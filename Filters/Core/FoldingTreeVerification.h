@@ -1,0 +1,33 @@
+// The builder's proof that unfold(tree) stays within the root epsilon of the input, and where
+// it does not (BuildFoldingTree, FoldingTreeOptions::verifyBound).
+#ifndef foldingmeshes_FoldingTreeVerification_h
+#define foldingmeshes_FoldingTreeVerification_h
+
+#include "FoldingTree.h"
+#include "TriangleMesh.h"
+
+#include <vector>
+
+namespace foldingmeshes
+{
+/// What VerifyUnfoldedBound found.
+struct UnfoldedBoundCheck
+{
+  bool within = false; ///< every point of both surfaces proved within epsilon (+ tolerance)
+  double upper = 0.0;  ///< the proved Hausdorff bound between unfold(tree) and the input
+  /// Input faces to pin (sorted ids) where the bound is not proved: the input faces nearest
+  /// to the unfolded faces with a point beyond epsilon and the input faces with one, each
+  /// with the faces around it (two rings of shared vertices). Empty when `within`.
+  std::vector<int> pin;
+};
+
+/**
+ * Unfolds `tree` with the default UnfoldOptions and bounds the symmetric Hausdorff distance
+ * between the result and `input` over every point of both surfaces (DirectedHausdorffBounds
+ * both ways, deciding epsilon to 1e-7 of the diagonal, as `foldingmeshes roundtrip` does).
+ * Where a point is not proved within epsilon, lists the input faces to pin there.
+ */
+UnfoldedBoundCheck VerifyUnfoldedBound(const TriangleMesh& input, const FoldingTree& tree);
+}
+
+#endif
