@@ -137,38 +137,83 @@ bool Builder::IsAncestorPlane(const Plane& p, uint64_t pathFolds, const Vec3& at
   return false;
 }
 
+void Builder::RecordInputEdges(const WorkMesh& w)
+{
+  // The input's own border (edges of one face), by input point id: recorded in the
+  // leaves (FoldingLeafMesh::inputBoundary); does not change any folding decision.
+  const EdgeTable uses = EdgeFaces(w.triangles);
+  this->InputBoundary.assign(this->Tree.numberOfOriginalPoints, 0);
+  this->Tree.inputBorderEdges.clear();
+  for (const auto& e : uses)
+    if (e.second.size() == 1)
+    {
+      const int a = w.pointOrig[e.first.first], b = w.pointOrig[e.first.second];
+      this->Tree.inputBorderEdges.push_back({ std::min(a, b), std::max(a, b) });
+      for (int v : { a, b })
+        if (v >= 0 && v < this->Tree.numberOfOriginalPoints)
+          this->InputBoundary[v] = 1;
+    }
+  std::sort(this->Tree.inputBorderEdges.begin(), this->Tree.inputBorderEdges.end());
+  // And its non-manifold edges (more than two faces, duplicate faces included): the
+  // unfolder's repair keeps their faces (FoldingTree::inputNonManifoldEdges).
+  this->Tree.inputNonManifoldEdges.clear();
+  for (const auto& e : uses)
+    if (e.second.size() > 2)
+    {
+      const int a = w.pointOrig[e.first.first], b = w.pointOrig[e.first.second];
+      this->Tree.inputNonManifoldEdges.push_back(
+        { std::min(a, b), std::max(a, b), static_cast<int>(e.second.size()) });
+    }
+  std::sort(this->Tree.inputNonManifoldEdges.begin(), this->Tree.inputNonManifoldEdges.end());
+}
+
+namespace
+{
+/// Input-degenerate faces (never in S: detection ignores them) follow S when all their
+/// vertices are vertices of S.
+void AddDegenerateFaces(const WorkMesh& w, const PreparedMesh& pm, std::vector<char>& S)
+{
+  std::vector<char> inS(w.points.size(), 0);
+  for (int f = 0; f < w.NumberOfFaces(); ++f)
+    if (S[f])
+      for (int v : w.triangles[f])
+        inS[v] = 1;
+  for (int f = 0; f < w.NumberOfFaces(); ++f)
+    if (pm.faceDegenerate[f] && inS[w.triangles[f][0]] && inS[w.triangles[f][1]] &&
+      inS[w.triangles[f][2]])
+      S[f] = 1;
+}
+
+/// Tear vertices of the segmentation at `depth`: used by faces of two different children (S
+/// is child 0, remaining component c is child 1 + c, labels per face).
+void MarkTears(WorkMesh& w, const std::vector<char>& S, const std::vector<int>& labels, int depth)
+{
+  std::vector<int> firstChild(w.points.size(), -1);
+  std::vector<char> tear(w.points.size(), 0);
+  for (int f = 0; f < w.NumberOfFaces(); ++f)
+  {
+    const int child = S[f] ? 0 : 1 + labels[f];
+    for (int v : w.triangles[f])
+    {
+      if (firstChild[v] < 0)
+        firstChild[v] = child;
+      else if (firstChild[v] != child)
+        tear[v] = 1;
+    }
+  }
+  for (int v = 0; v < w.NumberOfPoints(); ++v)
+    if (tear[v])
+      w.tear[v] |= uint64_t(1) << depth;
+}
+}
+
 int Builder::Build(WorkMesh w, int parent, int depth, double eps, int folds, uint64_t pathFolds)
 {
   const std::vector<int> dropped = WeldAndDropCollapsed(w);
   if (parent < 0)
   {
     this->Tree.numberOfDroppedFaces = static_cast<int>(dropped.size());
-    // The input's own border (edges of one face), by input point id: recorded in the
-    // leaves (FoldingLeafMesh::inputBoundary); does not change any folding decision.
-    const EdgeTable uses = EdgeFaces(w.triangles);
-    this->InputBoundary.assign(this->Tree.numberOfOriginalPoints, 0);
-    this->Tree.inputBorderEdges.clear();
-    for (const auto& e : uses)
-      if (e.second.size() == 1)
-      {
-        const int a = w.pointOrig[e.first.first], b = w.pointOrig[e.first.second];
-        this->Tree.inputBorderEdges.push_back({ std::min(a, b), std::max(a, b) });
-        for (int v : { a, b })
-          if (v >= 0 && v < this->Tree.numberOfOriginalPoints)
-            this->InputBoundary[v] = 1;
-      }
-    std::sort(this->Tree.inputBorderEdges.begin(), this->Tree.inputBorderEdges.end());
-    // And its non-manifold edges (more than two faces, duplicate faces included): the
-    // unfolder's repair keeps their faces (FoldingTree::inputNonManifoldEdges).
-    this->Tree.inputNonManifoldEdges.clear();
-    for (const auto& e : uses)
-      if (e.second.size() > 2)
-      {
-        const int a = w.pointOrig[e.first.first], b = w.pointOrig[e.first.second];
-        this->Tree.inputNonManifoldEdges.push_back(
-          { std::min(a, b), std::max(a, b), static_cast<int>(e.second.size()) });
-      }
-    std::sort(this->Tree.inputNonManifoldEdges.begin(), this->Tree.inputNonManifoldEdges.end());
+    this->RecordInputEdges(w);
   }
   else if (!dropped.empty())
   {
@@ -232,19 +277,7 @@ int Builder::Build(WorkMesh w, int parent, int depth, double eps, int folds, uin
   std::vector<char> S =
     this->ChooseSymmetricRegion(w, pm, *regionFaces, result, eps, pathFolds, plane, provenSide);
   regionFaces.reset();
-  // Input-degenerate faces (never in S: detection ignores them) follow S when all their
-  // vertices are vertices of S.
-  {
-    std::vector<char> inS(w.points.size(), 0);
-    for (int f = 0; f < nf; ++f)
-      if (S[f])
-        for (int v : w.triangles[f])
-          inS[v] = 1;
-    for (int f = 0; f < nf; ++f)
-      if (pm.faceDegenerate[f] && inS[w.triangles[f][0]] && inS[w.triangles[f][1]] &&
-        inS[w.triangles[f][2]])
-        S[f] = 1;
-  }
+  AddDegenerateFaces(w, pm, S);
   const double sArea = RegionArea(pm, S);
   int sFaces = 0;
   for (char s : S)
@@ -274,25 +307,7 @@ int Builder::Build(WorkMesh w, int parent, int depth, double eps, int folds, uin
   }
 
   node.kind = FoldingNodeKind::Segmentation;
-  // Tear vertices: used by faces of two different children (S is child 0).
-  {
-    std::vector<int> firstChild(w.points.size(), -1);
-    std::vector<char> tear(w.points.size(), 0);
-    for (int f = 0; f < nf; ++f)
-    {
-      const int child = S[f] ? 0 : 1 + labels[f];
-      for (int v : w.triangles[f])
-      {
-        if (firstChild[v] < 0)
-          firstChild[v] = child;
-        else if (firstChild[v] != child)
-          tear[v] = 1;
-      }
-    }
-    for (int v = 0; v < w.NumberOfPoints(); ++v)
-      if (tear[v])
-        w.tear[v] |= uint64_t(1) << depth;
-  }
+  MarkTears(w, S, labels, depth);
   WorkMesh ws = Extract(w, S);
   std::vector<WorkMesh> regions(n);
   {
@@ -319,6 +334,35 @@ using treebuilder::Builder;
 using treebuilder::TriangleArea;
 using treebuilder::WorkMesh;
 
+namespace
+{
+/// Why BuildFoldingTree cannot build from these (empty: it can).
+std::string CheckBuildInput(const TriangleMesh& input,
+  const std::vector<Vec3>& inputNormals,
+  const FoldingTreeOptions& options)
+{
+  if (!(options.epsilon > 0.0) || !std::isfinite(options.epsilon))
+    return "the root epsilon must be a positive, finite length";
+  if (!(options.minimumAreaFraction >= 0.0 && options.minimumAreaFraction <= 1.0))
+    return "minimumAreaFraction must be within [0, 1]";
+  if (!(options.planeSnapFraction >= 0.0 && options.planeSnapFraction < 1.0))
+    return "planeSnapFraction must be within [0, 1)";
+  if (input.points.empty() || input.triangles.empty())
+    return "the input mesh is empty";
+  const int np = static_cast<int>(input.points.size());
+  if (!inputNormals.empty() && static_cast<int>(inputNormals.size()) != np)
+    return "inputNormals must be empty or have one normal per input point";
+  for (const Vec3& p : input.points)
+    if (!p.allFinite())
+      return "the input has non-finite point coordinates";
+  for (const Triangle& t : input.triangles)
+    for (int v : t)
+      if (v < 0 || v >= np)
+        return "a triangle refers to a point index out of range";
+  return std::string();
+}
+}
+
 bool BuildFoldingTree(const TriangleMesh& input,
   const std::vector<Vec3>& inputNormals,
   const FoldingTreeOptions& options,
@@ -327,46 +371,10 @@ bool BuildFoldingTree(const TriangleMesh& input,
 {
   const auto start = std::chrono::steady_clock::now();
   tree = FoldingTree();
-  error.clear();
-  if (!(options.epsilon > 0.0) || !std::isfinite(options.epsilon))
-  {
-    error = "the root epsilon must be a positive, finite length";
+  error = CheckBuildInput(input, inputNormals, options);
+  if (!error.empty())
     return false;
-  }
-  if (!(options.minimumAreaFraction >= 0.0 && options.minimumAreaFraction <= 1.0))
-  {
-    error = "minimumAreaFraction must be within [0, 1]";
-    return false;
-  }
-  if (!(options.planeSnapFraction >= 0.0 && options.planeSnapFraction < 1.0))
-  {
-    error = "planeSnapFraction must be within [0, 1)";
-    return false;
-  }
-  if (input.points.empty() || input.triangles.empty())
-  {
-    error = "the input mesh is empty";
-    return false;
-  }
   const int np = static_cast<int>(input.points.size());
-  if (!inputNormals.empty() && static_cast<int>(inputNormals.size()) != np)
-  {
-    error = "inputNormals must be empty or have one normal per input point";
-    return false;
-  }
-  for (const Vec3& p : input.points)
-    if (!p.allFinite())
-    {
-      error = "the input has non-finite point coordinates";
-      return false;
-    }
-  for (const Triangle& t : input.triangles)
-    for (int v : t)
-      if (v < 0 || v >= np)
-      {
-        error = "a triangle refers to a point index out of range";
-        return false;
-      }
 
   // One build with the faces `pinned` kept out of every symmetric region.
   auto build = [&](const FoldingTreeOptions& o, const std::vector<char>& pinned) -> bool

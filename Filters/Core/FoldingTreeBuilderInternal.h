@@ -45,6 +45,11 @@ public:
   }
 
   void Run(WorkMesh root);
+  /// The input's own border (edges of one face) and non-manifold edges (more than two faces,
+  /// duplicates included), by input point id, from the root's region after its weld:
+  /// FoldingTree::inputBorderEdges, inputNonManifoldEdges and InputBoundary. They change no
+  /// folding decision (the leaves and the unfolder's repair use them).
+  void RecordInputEdges(const WorkMesh& w);
 
   bool Aborted = false;
 
