@@ -18,7 +18,8 @@
  *   point (the centroid of the stored points, no cell) whose field data holds OriginalFaces,
  * OriginalPoints, DroppedFaces, StoredFaces, StoredPoints, Compression (1 - stored/original),
  * TreeHeight, NumberOfNodes, NumberOfLeaves, NumberOfFolds, MaximumFoldsOnPath, OriginalArea,
- * BuildSeconds, RootEpsilon, Diagonal, Aborted, InputNonManifoldEdges (vtkIdType, 3
+ * BuildSeconds, RootEpsilon, Diagonal, Aborted, VerifiedBound, PinnedFaces and
+ * VerificationRounds (see VerifyBound; optional on reading), InputNonManifoldEdges (vtkIdType, 3
  * components per edge of the input used by more than two faces: its input point ids a < b and
  * the number of faces; only when there are any; optional on reading: the tree's
  * inputNonManifoldEdges, whose faces the unfolder's repair keeps), and what the unfolder
