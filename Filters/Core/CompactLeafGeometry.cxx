@@ -54,8 +54,9 @@ std::unique_ptr<draco::Mesh> BuildMesh(const std::vector<LeafToEncode>& leaves,
     *mesh, draco::GeometryAttribute::POSITION, draco::DT_FLOAT32, 3, PositionId);
   const int leafAttribute =
     AddAttribute<uint32_t>(*mesh, draco::GeometryAttribute::GENERIC, draco::DT_UINT32, 1, LeafId);
-  const int symbol =
-    AddAttribute<uint32_t>(*mesh, draco::GeometryAttribute::GENERIC, draco::DT_UINT32, 1, SymbolId);
+  const int symbol = coding.symbolAttribute
+    ? AddAttribute<uint32_t>(*mesh, draco::GeometryAttribute::GENERIC, draco::DT_UINT32, 1, SymbolId)
+    : -1;
 
   uint32_t base = 0;
   for (size_t l = 0; l < leaves.size(); ++l)
@@ -71,7 +72,8 @@ std::unique_ptr<draco::Mesh> BuildMesh(const std::vector<LeafToEncode>& leaves,
       mesh->attribute(position)->SetAttributeValue(at, xyz.data());
       const uint32_t leafIndex = static_cast<uint32_t>(l);
       mesh->attribute(leafAttribute)->SetAttributeValue(at, &leafIndex);
-      mesh->attribute(symbol)->SetAttributeValue(at, &leaves[l].symbols[v]);
+      if (symbol >= 0)
+        mesh->attribute(symbol)->SetAttributeValue(at, &leaves[l].symbols[v]);
     }
     for (const Triangle& t : m.triangles)
     {
@@ -138,6 +140,7 @@ bool EncodeLeafGeometry(const std::vector<LeafToEncode>& leaves,
   const LeafGeometryCoding& coding,
   int dracoSpeed,
   std::string& out,
+  std::vector<DecodedLeaf>& decoded,
   std::string& error)
 {
   const std::unique_ptr<draco::Mesh> mesh = BuildMesh(leaves, coding);
@@ -182,6 +185,7 @@ bool EncodeLeafGeometry(const std::vector<LeafToEncode>& leaves,
     if (same)
     {
       out.assign(buffer.data(), buffer.size());
+      decoded = std::move(check);
       return true;
     }
   }
@@ -202,15 +206,17 @@ bool DecodeLeafGeometry(const char* data,
     return false;
   const draco::PointAttribute* position = Attribute(*mesh, PositionId, draco::DT_FLOAT32, 3, error);
   const draco::PointAttribute* leafAttribute = Attribute(*mesh, LeafId, draco::DT_UINT32, 1, error);
-  const draco::PointAttribute* symbol = Attribute(*mesh, SymbolId, draco::DT_UINT32, 1, error);
-  if (!position || !leafAttribute || !symbol)
+  const draco::PointAttribute* symbol = coding.symbolAttribute
+    ? Attribute(*mesh, SymbolId, draco::DT_UINT32, 1, error)
+    : nullptr;
+  if (!position || !leafAttribute || (coding.symbolAttribute && !symbol))
     return false;
 
   leaves.assign(static_cast<size_t>(numberOfLeaves), DecodedLeaf());
   const uint32_t points = mesh->num_points();
   // Every point's values must exist (Draco's buffers are not bounds-checked when read).
   for (const draco::PointAttribute* a : { position, leafAttribute, symbol })
-    for (uint32_t p = 0; p < points; ++p)
+    for (uint32_t p = 0; a && p < points; ++p)
       if (a->mapped_index(draco::PointIndex(p)).value() >= a->size())
       {
         error = "geometry section: a point without attribute values";
@@ -231,7 +237,8 @@ bool DecodeLeafGeometry(const char* data,
     local[p] = static_cast<int>(leaf.points.size());
     const auto xyz = Value<float, 3>(position, p);
     leaf.points.push_back(coding.origin + Vec3(xyz[0], xyz[1], xyz[2]));
-    leaf.symbols.push_back(Value<uint32_t, 1>(symbol, p)[0]);
+    if (symbol)
+      leaf.symbols.push_back(Value<uint32_t, 1>(symbol, p)[0]);
   }
   for (draco::FaceIndex f(0); f < mesh->num_faces(); ++f)
   {

@@ -20,6 +20,9 @@ struct LeafGeometryCoding
   /// Keep every leaf's point and triangle order (Draco's sequential coding, larger): needed
   /// when per-point / per-triangle data is stored beside the geometry in that order.
   bool keepOrder = false;
+  /// Each point's palette symbol is a Draco attribute; else the symbols are coded beside the
+  /// mesh (CompactPointSymbols.h) and DecodedLeaf::symbols comes back empty.
+  bool symbolAttribute = true;
 
   /// The largest distance between a point and its decoded position (grid half-step in 3D plus
   /// single-precision rounding).
@@ -44,12 +47,14 @@ struct DecodedLeaf
 /**
  * Encodes the leaves as one Draco mesh (edgebreaker; sequential coding when edgebreaker would
  * drop or add faces, checked by decoding; sequential only with coding.keepOrder, checked to
- * give back every triangle in order). False with `error` when Draco fails.
+ * give back every triangle in order). `decoded` receives the leaves as a decoder sees them.
+ * False with `error` when Draco fails.
  */
 bool EncodeLeafGeometry(const std::vector<LeafToEncode>& leaves,
   const LeafGeometryCoding& coding,
   int dracoSpeed,
   std::string& out,
+  std::vector<DecodedLeaf>& decoded,
   std::string& error);
 
 /// Decodes `numberOfLeaves` leaves; false with `error` for data Draco rejects or that does not

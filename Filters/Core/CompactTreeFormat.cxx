@@ -3,6 +3,7 @@
 
 #include "CompactByteStream.h"
 #include "CompactLeafGeometry.h"
+#include "CompactPointSymbols.h"
 #include "CompactTreeArrays.h"
 #include "CompactTreeSection.h"
 
@@ -113,19 +114,56 @@ bool EncodeCompactTree(const FoldingTree& tree,
     leaves.push_back(std::move(leaf));
   }
 
-  std::string geometry;
-  if (!EncodeLeafGeometry(leaves, coding, options.dracoSpeed, geometry, error))
-    return false;
-  ByteWriter section;
-  WriteTreeSection(tree, coding, quantizationError, palette, section);
-  const std::string packed = Deflate(section.Bytes);
-  if (packed.empty())
+  size_t rawSectionSize = 0;
+  // Every Draco speed setting, the symbols beside the Draco mesh where Draco gives back the
+  // same leaves without them (else in it): the smallest file is kept.
+  std::string bestGeometry, bestSection;
+  LeafGeometryCoding best = coding;
+  for (const int speed : options.dracoSpeeds)
   {
-    error = "zlib cannot compress the tree section";
-    return false;
+    LeafGeometryCoding withAttribute = coding, beside = coding;
+    beside.symbolAttribute = false;
+    std::string geometry, besideGeometry, speedError;
+    std::vector<DecodedLeaf> decoded, besideDecoded;
+    if (!EncodeLeafGeometry(leaves, withAttribute, speed, geometry, decoded, speedError))
+    {
+      error = speedError;
+      continue;
+    }
+    LeafGeometryCoding used = withAttribute;
+    if (options.symbolsBesideGeometry &&
+      EncodeLeafGeometry(leaves, beside, speed, besideGeometry, besideDecoded, speedError) &&
+      TransferSymbols(decoded, besideDecoded))
+    {
+      used = beside;
+      geometry = std::move(besideGeometry);
+    }
+    ByteWriter section;
+    WriteTreeSection(tree, used, quantizationError, palette, section);
+    if (!used.symbolAttribute)
+      WritePointSymbols(besideDecoded, section);
+    const std::string packed = Deflate(section.Bytes);
+    if (packed.empty())
+    {
+      error = "zlib cannot compress the tree section";
+      return false;
+    }
+    if (bestGeometry.empty() ||
+      packed.size() + geometry.size() < bestSection.size() + bestGeometry.size())
+    {
+      best = used;
+      bestGeometry = std::move(geometry);
+      bestSection = packed;
+      rawSectionSize = section.Bytes.size();
+    }
   }
+  if (bestGeometry.empty())
+    return false; // error says why Draco failed
+  error.clear();
+  const std::string& packed = bestSection;
+  const std::string& geometry = bestGeometry;
 
-  if (packed.size() > 0xffffffffu || section.Bytes.size() > 0xffffffffu ||
+  if (packed.size() > 0xffffffffu || rawSectionSize > 0xffffffffu ||
     geometry.size() > 0xffffffffu)
   {
     error = "the tree is too large for the compact format (a section over 4 GB)";
@@ -135,10 +173,10 @@ bool EncodeCompactTree(const FoldingTree& tree,
   file.Raw(std::string(Magic, 4));
   file.U8(static_cast<uint8_t>(CompactTreeFormatVersion & 0xff));
   file.U8(static_cast<uint8_t>(CompactTreeFormatVersion >> 8));
-  file.U8(withArrays ? 1 : 0); // flags: bit 0 = arrays section
+  file.U8(static_cast<uint8_t>((withArrays ? 1 : 0) | (best.symbolAttribute ? 0 : 2)));
   file.U8(0);
   file.U32(static_cast<uint32_t>(packed.size()));
-  file.U32(static_cast<uint32_t>(section.Bytes.size()));
+  file.U32(static_cast<uint32_t>(rawSectionSize));
   file.Raw(packed);
   file.U32(static_cast<uint32_t>(geometry.size()));
   file.Raw(geometry);
@@ -196,7 +234,7 @@ bool DecodeCompactTree(const std::string& bytes,
         ")");
     const uint8_t flags = header.U8();
     header.Take(1);
-    if (flags & ~1)
+    if (flags & ~3)
       throw CompactFormatError("unknown flags in the header");
     if (bytes.size() < HeaderBytes + 8)
       throw CompactFormatError("truncated");
@@ -224,11 +262,16 @@ bool DecodeCompactTree(const std::string& bytes,
     LeafGeometryCoding coding;
     std::vector<LeafHeader> leaves;
     std::vector<PointData> palette;
+    coding.symbolAttribute = !(flags & 2);
     ReadTreeSection(section, tree, coding, leaves, palette);
     std::vector<DecodedLeaf> decoded;
     if (!DecodeLeafGeometry(
           geometry, geometrySize, coding, static_cast<int>(leaves.size()), decoded, error))
       throw CompactFormatError(error);
+    if (!coding.symbolAttribute)
+      ReadPointSymbols(section, palette.size(), decoded);
+    if (section.Remaining() != 0)
+      throw CompactFormatError("tree section: unexpected bytes after its end");
     AttachLeaves(tree, decoded, leaves, palette);
     if (flags & 1)
     {

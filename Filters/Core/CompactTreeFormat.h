@@ -3,14 +3,17 @@
 //
 //   offset 0   4 bytes  magic "FMZ" 0x1a
 //          4   u16      format version (CompactTreeFormatVersion); readers reject others
-//          6   u16      flags: bit 0 = an arrays section follows the geometry section
+//          6   u16      flags: bit 0 = an arrays section follows the geometry section; bit 1 =
+//                       the points' palette symbols end the tree section (in the order of
+//                       CompactPointSymbols.h) instead of being a Draco attribute
 //          8   u32      size T of the zlib-compressed tree section, u32 its raw size
 //         16   T bytes  tree section (zlib): counts, lengths, quantisation, nodes in preorder
 //                       (kind, leaf reason, children, epsilon / root epsilon, fold planes),
-//                       leaves' point / triangle counts, mirrored-flag records
+//                       leaves' point / triangle counts, the palette of point data, and
+//                       (flag bit 1) each point's palette symbol, leaf by leaf, border first
 //     16 + T   u32      size D of the Draco section, then D bytes: one Draco mesh of every
-//                       leaf (positions; per point: leaf, flags, tear / plane masks, error
-//                       budget, mirrored-flag group), faces of each leaf oriented as stored
+//                       leaf (positions; per point: its leaf and, without flag bit 1, its
+//                       palette symbol), faces of each leaf oriented as stored
 //   16+T+4+D            with flag bit 0: u32 size A of the zlib-compressed arrays section, u32
 //                       its raw size, A bytes: user arrays of the leaves (CompactArray), each
 //                       as raw values in the leaves' point / triangle order (the geometry is
@@ -45,8 +48,13 @@ struct CompactTreeOptions
   /// most half of the smallest error budget of a stored point (1% of the root epsilon when the
   /// tree has no budgets), at most 24.
   int quantizationBits = 0;
-  /// Draco's speed setting (0 = slowest, smallest ... 10 = fastest); 3 is draco_encoder's -cl 7.
-  int dracoSpeed = 3;
+  /// Draco's speed settings to try (0 = slowest ... 10 = fastest; 3 is draco_encoder's -cl 7,
+  /// 0 its -cl 10); the smallest result is kept (neither is smallest on every tree).
+  std::vector<int> dracoSpeeds{ 3, 0 };
+  /// Code the points' palette symbols beside the Draco mesh where Draco gives the leaves back
+  /// the same without them (smaller: they are written border by border); false: always as a
+  /// Draco attribute (the layout of the first files; tests read both).
+  bool symbolsBesideGeometry = true;
 };
 
 /**

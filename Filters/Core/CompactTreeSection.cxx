@@ -286,8 +286,6 @@ void ReadTreeSection(ByteReader& r,
     }
     palette.push_back(std::move(d));
   }
-  if (r.Remaining() != 0)
-    throw CompactFormatError("tree section: unexpected bytes after its end");
 }
 
 void AttachLeaves(FoldingTree& tree,

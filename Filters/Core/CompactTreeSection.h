@@ -69,7 +69,8 @@ void WriteTreeSection(const FoldingTree& tree,
   const Palette& palette,
   ByteWriter& w);
 
-/// Reads what WriteTreeSection wrote (throws CompactFormatError on malformed input).
+/// Reads what WriteTreeSection wrote (throws CompactFormatError on malformed input); the
+/// point symbols may follow (the caller checks the section's end).
 void ReadTreeSection(ByteReader& r,
   FoldingTree& tree,
   LeafGeometryCoding& coding,

@@ -37,10 +37,14 @@ namespace pm = foldingmeshes::testing;
 
 namespace
 {
-std::string Encode(const FoldingTree& tree, int bits, CompactTreeStats* stats = nullptr)
+std::string Encode(const FoldingTree& tree,
+  int bits,
+  CompactTreeStats* stats = nullptr,
+  bool symbolsBeside = true)
 {
   CompactTreeOptions options;
   options.quantizationBits = bits;
+  options.symbolsBesideGeometry = symbolsBeside;
   std::string bytes, error;
   const bool ok = EncodeCompactTree(tree, options, bytes, stats, error);
   REQUIRE(ok, "EncodeCompactTree failed: " << error);
@@ -201,12 +205,20 @@ void CompareTrees(const FoldingTree& a, const FoldingTree& b, double quantizatio
     name << ": " << budgetsOff << " budgets above the original's minus quantisation");
 }
 
-/// Encodes, decodes, compares, unfolds and bounds the distance to the input.
-void RoundTrip(const TriangleMesh& input, const FoldingTree& tree, int bits, const char* name)
+/// Encodes, decodes, compares, unfolds and bounds the distance to the input; `symbolsBeside`
+/// false writes the points' symbols as a Draco attribute (the first files' layout).
+void RoundTrip(const TriangleMesh& input,
+  const FoldingTree& tree,
+  int bits,
+  const char* name,
+  bool symbolsBeside = true)
 {
   CompactTreeStats stats;
-  const std::string bytes = Encode(tree, bits, &stats);
-  EXPECT(Encode(tree, bits) == bytes, name << ": the same bytes twice");
+  const std::string bytes = Encode(tree, bits, &stats, symbolsBeside);
+  EXPECT(Encode(tree, bits, nullptr, symbolsBeside) == bytes, name << ": the same bytes twice");
+  const bool beside = (bytes.size() > 6 && (bytes[6] & 2));
+  EXPECT(beside == symbolsBeside,
+    name << ": symbols " << (beside ? "beside" : "inside") << " the Draco mesh");
   FoldingTree decoded;
   std::string error;
   double quantization = -1;
@@ -345,6 +357,16 @@ void BadInput(const FoldingTree& tree)
   version[4] = 9;
   Reseal(version);
   Rejected(version, "format version 9");
+  // The symbols' layout flag switched: Draco's attribute is missing, or the tree section has
+  // bytes left over.
+  std::string layout = good;
+  layout[6] ^= 2;
+  Reseal(layout);
+  Rejected(layout, "the symbols' layout flag switched");
+  std::string unknown = good;
+  unknown[6] |= 4;
+  Reseal(unknown);
+  Rejected(unknown, "an unknown flag");
   std::string magic = good;
   magic[0] = 'X';
   Rejected(magic, "another magic number");
@@ -406,6 +428,9 @@ int main()
     EXPECT(tree.NumberOfFolds() >= 1, c.name << ": folded");
     RoundTrip(input, tree, 0, c.name);
     RoundTrip(input, tree, 8, c.name);
+    RoundTrip(input, tree, 0, c.name, false);
+    EXPECT(Encode(tree, 0).size() < Encode(tree, 0, nullptr, false).size(),
+      c.name << ": symbols beside the Draco mesh take fewer bytes");
     EXPECT(Encode(tree, 8).size() < Encode(tree, 16).size(), c.name << ": fewer bits, fewer bytes");
     if (first.Empty())
       first = tree;
