@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <map>
 #include <memory>
 
 namespace foldingmeshes
@@ -42,16 +43,68 @@ int AddAttribute(draco::Mesh& mesh,
   return id;
 }
 
+/// The Draco position of every point of the leaves (in leaf order): its own, or with
+/// coding.weldPositions the first one at exactly its coordinates from another leaf.
+std::vector<uint32_t> PositionIndices(const std::vector<LeafToEncode>& leaves,
+  const LeafGeometryCoding& coding,
+  std::vector<Vec3>& positions)
+{
+  std::vector<uint32_t> indices;
+  std::map<std::array<double, 3>, uint32_t> first; // coordinates -> position
+  std::vector<size_t> lastLeaf;                    // per position: the last leaf using it
+  for (size_t l = 0; l < leaves.size(); ++l)
+    for (const Vec3& p : leaves[l].mesh->points)
+    {
+      const std::array<double, 3> key{ p.x(), p.y(), p.z() };
+      const auto found = coding.weldPositions && !coding.keepOrder ? first.find(key) : first.end();
+      // Never two points of one leaf on one position: that would make degenerate faces.
+      if (found != first.end() && lastLeaf[found->second] != l)
+      {
+        lastLeaf[found->second] = l;
+        indices.push_back(found->second);
+        continue;
+      }
+      const uint32_t index = static_cast<uint32_t>(positions.size());
+      positions.push_back(p);
+      lastLeaf.push_back(l);
+      if (coding.weldPositions)
+        first.emplace(key, index);
+      indices.push_back(index);
+    }
+  return indices;
+}
+
 std::unique_ptr<draco::Mesh> BuildMesh(const std::vector<LeafToEncode>& leaves,
   const LeafGeometryCoding& coding)
 {
   auto mesh = std::make_unique<draco::Mesh>();
-  uint32_t points = 0;
-  for (const LeafToEncode& leaf : leaves)
-    points += static_cast<uint32_t>(leaf.mesh->NumberOfPoints());
+  std::vector<Vec3> positions;
+  const std::vector<uint32_t> positionOf = PositionIndices(leaves, coding, positions);
+  const uint32_t points = static_cast<uint32_t>(positionOf.size());
   mesh->set_num_points(points);
-  const int position = AddAttribute<float>(
-    *mesh, draco::GeometryAttribute::POSITION, draco::DT_FLOAT32, 3, PositionId);
+  draco::GeometryAttribute ga;
+  ga.Init(draco::GeometryAttribute::POSITION,
+    nullptr,
+    3,
+    draco::DT_FLOAT32,
+    false,
+    static_cast<int64_t>(sizeof(float)) * 3,
+    0);
+  const int position = mesh->AddAttribute(ga, false, static_cast<uint32_t>(positions.size()));
+  mesh->attribute(position)->set_unique_id(PositionId);
+  for (size_t i = 0; i < positions.size(); ++i)
+  {
+    const Vec3 offset = positions[i] - coding.origin;
+    const std::array<float, 3> xyz{ static_cast<float>(offset.x()),
+      static_cast<float>(offset.y()),
+      static_cast<float>(offset.z()) };
+    mesh->attribute(position)->SetAttributeValue(
+      draco::AttributeValueIndex(static_cast<uint32_t>(i)), xyz.data());
+  }
+  mesh->attribute(position)->SetExplicitMapping(points);
+  for (uint32_t p = 0; p < points; ++p)
+    mesh->attribute(position)->SetPointMapEntry(
+      draco::PointIndex(p), draco::AttributeValueIndex(positionOf[p]));
   const int leafAttribute =
     AddAttribute<uint32_t>(*mesh, draco::GeometryAttribute::GENERIC, draco::DT_UINT32, 1, LeafId);
   const int symbol = coding.symbolAttribute
@@ -65,11 +118,6 @@ std::unique_ptr<draco::Mesh> BuildMesh(const std::vector<LeafToEncode>& leaves,
     for (int v = 0; v < m.NumberOfPoints(); ++v)
     {
       const draco::AttributeValueIndex at(base + static_cast<uint32_t>(v));
-      const Vec3 offset = m.points[v] - coding.origin;
-      const std::array<float, 3> xyz{ static_cast<float>(offset.x()),
-        static_cast<float>(offset.y()),
-        static_cast<float>(offset.z()) };
-      mesh->attribute(position)->SetAttributeValue(at, xyz.data());
       const uint32_t leafIndex = static_cast<uint32_t>(l);
       mesh->attribute(leafAttribute)->SetAttributeValue(at, &leafIndex);
       if (symbol >= 0)

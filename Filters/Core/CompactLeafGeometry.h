@@ -23,6 +23,11 @@ struct LeafGeometryCoding
   /// Each point's palette symbol is a Draco attribute; else the symbols are coded beside the
   /// mesh (CompactPointSymbols.h) and DecodedLeaf::symbols comes back empty.
   bool symbolAttribute = true;
+  /// Encoder only: points of different leaves at exactly the same position share one Draco
+  /// position (the leaf and symbol attributes then have a seam there), so that leaves that
+  /// meet along a tear are coded as one surface; the decoder sees one point per leaf as
+  /// before. Not with keepOrder.
+  bool weldPositions = false;
 
   /// The largest distance between a point and its decoded position (grid half-step in 3D plus
   /// single-precision rounding).

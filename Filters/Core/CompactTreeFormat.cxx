@@ -115,13 +115,21 @@ bool EncodeCompactTree(const FoldingTree& tree,
   }
 
   size_t rawSectionSize = 0;
-  // Every Draco speed setting, the symbols beside the Draco mesh where Draco gives back the
-  // same leaves without them (else in it): the smallest file is kept.
+  // Every Draco speed setting, with and without welding the leaves' common points, the
+  // symbols beside the Draco mesh where Draco gives back the same leaves without them (else in
+  // it): the smallest file is kept.
   std::string bestGeometry, bestSection;
   LeafGeometryCoding best = coding;
-  for (const int speed : options.dracoSpeeds)
+  std::vector<std::pair<int, bool>> variants; // (speed, weld)
+  for (const bool weld : { true, false })
+    for (const int speed : options.dracoSpeeds)
+      if (!weld || (options.weldLeaves && !coding.keepOrder))
+        variants.emplace_back(speed, weld);
+  for (const auto& [speed, weld] : variants)
   {
-    LeafGeometryCoding withAttribute = coding, beside = coding;
+    LeafGeometryCoding withAttribute = coding;
+    withAttribute.weldPositions = weld;
+    LeafGeometryCoding beside = withAttribute;
     beside.symbolAttribute = false;
     std::string geometry, besideGeometry, speedError;
     std::vector<DecodedLeaf> decoded, besideDecoded;

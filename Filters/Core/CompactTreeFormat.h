@@ -55,6 +55,10 @@ struct CompactTreeOptions
   /// the same without them (smaller: they are written border by border); false: always as a
   /// Draco attribute (the layout of the first files; tests read both).
   bool symbolsBesideGeometry = true;
+  /// Also try the leaves with their common points welded (LeafGeometryCoding::weldPositions:
+  /// leaves that meet along a tear coded as one surface), keeping it where it is smaller;
+  /// false: never (tests compare both).
+  bool weldLeaves = true;
 };
 
 /**

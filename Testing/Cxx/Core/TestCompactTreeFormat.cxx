@@ -40,11 +40,13 @@ namespace
 std::string Encode(const FoldingTree& tree,
   int bits,
   CompactTreeStats* stats = nullptr,
-  bool symbolsBeside = true)
+  bool symbolsBeside = true,
+  bool weld = true)
 {
   CompactTreeOptions options;
   options.quantizationBits = bits;
   options.symbolsBesideGeometry = symbolsBeside;
+  options.weldLeaves = weld;
   std::string bytes, error;
   const bool ok = EncodeCompactTree(tree, options, bytes, stats, error);
   REQUIRE(ok, "EncodeCompactTree failed: " << error);
@@ -206,16 +208,19 @@ void CompareTrees(const FoldingTree& a, const FoldingTree& b, double quantizatio
 }
 
 /// Encodes, decodes, compares, unfolds and bounds the distance to the input; `symbolsBeside`
-/// false writes the points' symbols as a Draco attribute (the first files' layout).
+/// false writes the points' symbols as a Draco attribute (the first files' layout), `weld`
+/// false never welds the leaves' common points.
 void RoundTrip(const TriangleMesh& input,
   const FoldingTree& tree,
   int bits,
   const char* name,
-  bool symbolsBeside = true)
+  bool symbolsBeside = true,
+  bool weld = true)
 {
   CompactTreeStats stats;
-  const std::string bytes = Encode(tree, bits, &stats, symbolsBeside);
-  EXPECT(Encode(tree, bits, nullptr, symbolsBeside) == bytes, name << ": the same bytes twice");
+  const std::string bytes = Encode(tree, bits, &stats, symbolsBeside, weld);
+  EXPECT(Encode(tree, bits, nullptr, symbolsBeside, weld) == bytes,
+    name << ": the same bytes twice");
   const bool beside = (bytes.size() > 6 && (bytes[6] & 2));
   EXPECT(beside == symbolsBeside,
     name << ": symbols " << (beside ? "beside" : "inside") << " the Draco mesh");
@@ -429,6 +434,18 @@ int main()
     RoundTrip(input, tree, 0, c.name);
     RoundTrip(input, tree, 8, c.name);
     RoundTrip(input, tree, 0, c.name, false);
+    RoundTrip(input, tree, 0, c.name, true, false);
+    const size_t welded = Encode(tree, 0).size();
+    const size_t separate = Encode(tree, 0, nullptr, true, false).size();
+    std::printf("%s: %zu bytes with the leaves' common points welded, %zu without\n",
+      c.name,
+      welded,
+      separate);
+    int leaves = 0;
+    for (const FoldingNode& node : tree.nodes)
+      leaves += node.kind == FoldingNodeKind::Leaf;
+    EXPECT(leaves > 1 ? welded < separate : welded == separate,
+      c.name << ": " << leaves << " leaves, welded " << welded << " bytes, separate " << separate);
     EXPECT(Encode(tree, 0).size() < Encode(tree, 0, nullptr, false).size(),
       c.name << ": symbols beside the Draco mesh take fewer bytes");
     EXPECT(Encode(tree, 8).size() < Encode(tree, 16).size(), c.name << ": fewer bits, fewer bytes");
