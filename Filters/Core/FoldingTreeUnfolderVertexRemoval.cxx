@@ -182,226 +182,269 @@ bool VertexRemover::Interior(int v) const
   return star.size() >= 3 && ClosedRing(this->Mesh.triangles, star, v, ring, ringFace);
 }
 
-bool VertexRemover::Try(int v,
-  double limit,
-  const RingRules& rules,
-  RingRemoval& removal,
-  const char*& why) const
+namespace
 {
-  const Piece& piece = this->Mesh;
-  const std::vector<std::vector<int>>& facesOf = this->VertexFaces;
-  const std::vector<char>& alive = this->FaceAlive;
-  std::vector<int>& ring = removal.ring;
-  std::vector<int>& ringFace = removal.ringFace;
-  std::vector<Triangle>& created = removal.created;
-  double& moved = removal.moved;
-  removal.vertex = v;
-  removal.limit = limit;
-  created.clear();
-  moved = 0.0;
-  std::vector<int> star;
-  for (int f : facesOf[v])
-    if (alive[f])
-      star.push_back(f);
-  why = "open ring";
-  if (star.size() < 3 || !ClosedRing(piece.triangles, star, v, ring, ringFace))
-    return false;
-  const std::vector<Vec3>& x = piece.points;
-  std::vector<Triangle> old;
-  for (int f : star)
-    old.push_back(piece.triangles[f]);
-  EdgeSet diagonals;
-  auto hasEdge = [&](int a, int c)
+/**
+ * One attempt of VertexRemover::Try: the star of v (closed ring), the faces that may replace
+ * it and the checks they must pass - ear clipping in the plane of the star, else a collapse
+ * of v into its ring, then the sampled deviation from the old star.
+ */
+class RingRetriangulation
+{
+public:
+  RingRetriangulation(const Piece& piece,
+    const std::vector<std::vector<int>>& facesOf,
+    const std::vector<char>& alive,
+    int v,
+    const std::vector<int>& star,
+    const std::vector<int>& ring,
+    const RingRules& rules)
+    : Piece_(piece)
+    , FacesOf(facesOf)
+    , Alive(alive)
+    , X(piece.points)
+    , V(v)
+    , Star(star)
+    , Ring(ring)
+    , Rules(rules)
+    , M(static_cast<int>(ring.size()))
   {
-    if (diagonals.count({ std::min(a, c), std::max(a, c) }))
+    for (int f : star)
+      this->Old.push_back(piece.triangles[f]);
+    this->Sharpest = rules.minimumAngle;
+    if (this->Sharpest > 0.0)
+      for (const Triangle& t : this->Old)
+        this->Sharpest = std::min(this->Sharpest, SmallestAngle(X[t[0]], X[t[1]], X[t[2]]));
+  }
+
+  /// Ear clipping in the plane perpendicular to the star's mean normal.
+  bool ClipEars(std::vector<Triangle>& created, const char*& why);
+  /// Where the star does not project one-to-one or no ear order works: v collapsed into a
+  /// ring vertex (see the definition). Keeps `why` when it fails.
+  bool CollapseIntoRing(double limit, std::vector<Triangle>& created, const char*& why);
+  /// Forgets the diagonals of a failed ear clipping.
+  void ClearDiagonals() { this->Diagonals.clear(); }
+  /// A face on the ring's three vertices already (a tetrahedron-like spot): a duplicate.
+  bool DuplicatesAFace() const;
+  /// The deviation between the old star and `created`, sampled (stops once over `limit`).
+  double Deviation(const std::vector<Triangle>& created, double limit) const;
+
+private:
+  bool HasEdge(int a, int c) const
+  {
+    if (this->Diagonals.count({ std::min(a, c), std::max(a, c) }))
       return true;
-    for (int f : facesOf[a])
-      if (alive[f])
+    for (int f : this->FacesOf[a])
+      if (this->Alive[f])
       {
-        const Triangle& t = piece.triangles[f];
+        const Triangle& t = this->Piece_.triangles[f];
         if (t[0] == c || t[1] == c || t[2] == c)
           return true;
       }
     return false;
-  };
-  // RingRules: a new edge between two fixed points, a new face sharper than allowed.
-  auto fixedEdge = [&](int a, int c) {
-    return rules.noNewEdgeBetween && (*rules.noNewEdgeBetween)[a] && (*rules.noNewEdgeBetween)[c];
-  };
-  double sharpest = rules.minimumAngle;
-  if (sharpest > 0.0)
-    for (const Triangle& t : old)
-      sharpest = std::min(sharpest, SmallestAngle(x[t[0]], x[t[1]], x[t[2]]));
-  // Not degenerate (and not sharper than the rules allow).
-  auto regular = [&](int a, int b, int c)
+  }
+  /// RingRules: a new edge between two fixed points.
+  bool FixedEdge(int a, int c) const
   {
+    const std::vector<char>* fixed = this->Rules.noNewEdgeBetween;
+    return fixed && (*fixed)[a] && (*fixed)[c];
+  }
+  /// Not degenerate (and not sharper than the rules allow).
+  bool Regular(int a, int b, int c) const
+  {
+    const std::vector<Vec3>& x = this->X;
     const double longest = std::max(
       { (x[a] - x[b]).squaredNorm(), (x[b] - x[c]).squaredNorm(), (x[c] - x[a]).squaredNorm() });
     return (x[b] - x[a]).cross(x[c] - x[a]).norm() > 1e-6 * longest &&
-      (sharpest <= 0.0 || SmallestAngle(x[a], x[b], x[c]) >= sharpest);
-  };
-  const int m = static_cast<int>(ring.size());
-  // Ear clipping in the plane perpendicular to the star's mean normal.
-  auto clipRing = [&]() -> bool
-  {
-    why = "not one-to-one";
-    Vec3 normal = Vec3::Zero();
-    std::vector<Vec3> faceNormal(m);
-    for (int i = 0; i < m; ++i)
-    {
-      faceNormal[i] = (x[ring[i]] - x[v]).cross(x[ring[(i + 1) % m]] - x[v]);
-      normal += faceNormal[i];
-    }
-    if (normal.norm() <= 0.0)
-      return false;
-    normal.normalize();
-    for (const Vec3& n : faceNormal)
-      if (n.dot(normal) <= 1e-3 * n.norm())
-        return false;
-    // The ring in the plane perpendicular to the mean normal, v at the origin.
-    const Vec3 u = normal.unitOrthogonal(), w = normal.cross(u);
-    std::map<int, Eigen::Vector2d> flat;
-    for (int a : ring)
-      flat[a] = Eigen::Vector2d((x[a] - x[v]).dot(u), (x[a] - x[v]).dot(w));
-    double turn = 0.0;
-    for (int i = 0; i < m; ++i)
-    {
-      const Eigen::Vector2d& p = flat[ring[i]];
-      const Eigen::Vector2d& q = flat[ring[(i + 1) % m]];
-      turn += std::atan2(p.x() * q.y() - p.y() * q.x(), p.dot(q));
-    }
-    if (std::abs(turn - 2.0 * M_PI) > 1e-6)
-      return false;
-
-    why = "no triangulation";
-    std::vector<int> poly = ring;
-    created.clear();
-    auto allowed = [&](int a, int c)
-    {
-      const int i = static_cast<int>(std::find(poly.begin(), poly.end(), a) - poly.begin());
-      const int b = poly[(i + 1) % poly.size()];
-      const Eigen::Vector2d &pa = flat[a], &pb = flat[b], &pc = flat[c];
-      const double area = Orientation(pa, pb, pc);
-      if (area <= 1e-9 * std::max((pa - pc).squaredNorm(), (pb - pa).squaredNorm()))
-        return false;
-      for (int q : poly)
-        if (q != a && q != b && q != c)
-        {
-          const Eigen::Vector2d& pq = flat[q];
-          if (Orientation(pa, pb, pq) >= 0.0 && Orientation(pb, pc, pq) >= 0.0 &&
-            Orientation(pc, pa, pq) >= 0.0)
-            return false;
-        }
-      return regular(a, b, c) && !fixedEdge(a, c) && !hasEdge(a, c);
-    };
-    auto cut = [&](int a, int b, int c)
-    {
-      created.push_back({ a, b, c });
-      diagonals.insert({ std::min(a, c), std::max(a, c) });
-    };
-    // The ear that departs least from the old star first (sampled at its centroid and the
-    // midpoint of its new diagonal), the shorter diagonal on (near) ties: on a crease, the
-    // diagonals follow the crease instead of cutting across it.
-    const double lengthWeight = 1e-3;
-    double spoke = 0.0;
-    for (int a : ring)
-      spoke += (x[a] - x[v]).norm() / m;
-    auto deviation = [&](int a, int b, int c)
-    {
-      double value = std::max(DistanceToTriangles((x[a] + x[b] + x[c]) / 3.0, x, old),
-                       DistanceToTriangles(0.5 * (x[a] + x[c]), x, old)) +
-        lengthWeight * (x[a] - x[c]).norm();
-      if (rules.shapeWeight > 0.0)
-        value += rules.shapeWeight * spoke * (1.0 - SmallestAngle(x[a], x[b], x[c]) / (M_PI / 3.0));
-      return value;
-    };
-    if (!ClipCheapestEars(poly, allowed, deviation, cut))
-      return false;
-    if (Orientation(flat[poly[0]], flat[poly[1]], flat[poly[2]]) <= 0.0 ||
-      !regular(poly[0], poly[1], poly[2]))
-      return false;
-    created.push_back({ poly[0], poly[1], poly[2] });
-    return true;
-  };
-  // Where the star does not project one-to-one (a sharp crease through v) or no ear order
-  // works: collapse v into the ring vertex u whose new faces depart least from the old star,
-  // by at most a tenth of the limit (a collapse follows the old star less closely than ears
-  // do; with the whole budget it cut the corners of a CAD mesh: bearing 0.0033 -> 0.0061).
-  // Each star face (v, a, b) becomes (u, a, b), the two faces on edge v-u vanish; accepted
-  // when no new edge exists already (the link condition), no new face is degenerate and none
-  // turns by 90 degrees or more against the face it replaces.
-  auto collapseIntoRing = [&]() -> bool
-  {
-    const char* reason = why;
-    double best = std::numeric_limits<double>::infinity();
-    std::vector<Triangle> bestFaces;
-    int bestU = -1;
-    for (int i = 0; i < m; ++i)
-    {
-      const int u = ring[i];
-      const int previous = ring[(i + m - 1) % m], next = ring[(i + 1) % m];
-      auto newEdgeFree = [&](int a)
-      { return a == previous || a == next || (!fixedEdge(u, a) && !hasEdge(u, a)); };
-      std::vector<Triangle> faces;
-      bool ok = true;
-      for (int j = 0; j < m && ok; ++j)
-      {
-        const int a = ring[j], b = ring[(j + 1) % m];
-        if (a == u || b == u)
-          continue;
-        const Vec3 before = (x[a] - x[v]).cross(x[b] - x[v]);
-        const Vec3 after = (x[a] - x[u]).cross(x[b] - x[u]);
-        ok = regular(u, a, b) && after.dot(before) > 0.0 && newEdgeFree(a) && newEdgeFree(b);
-        faces.push_back({ u, a, b });
-      }
-      if (!ok || faces.empty())
-        continue;
-      double worst = DistanceToTriangles(x[v], x, faces);
-      for (const Triangle& t : faces)
-        worst = std::max(worst, DistanceToTriangles((x[t[0]] + x[t[1]] + x[t[2]]) / 3.0, x, old));
-      if (worst <= CollapseShareOfLimit * limit && worst < best)
-      {
-        best = worst;
-        bestFaces = std::move(faces);
-        bestU = u;
-      }
-    }
-    if (bestFaces.empty())
-    {
-      why = reason;
-      return false;
-    }
-    // The new edges from u, sampled like an ear's diagonals by the budget check below.
-    for (const Triangle& t : bestFaces)
-      for (int k = 1; k < 3; ++k)
-        diagonals.insert({ std::min(bestU, t[k]), std::max(bestU, t[k]) });
-    created = std::move(bestFaces);
-    return true;
-  };
-  if (!clipRing())
-  {
-    created.clear();
-    diagonals.clear();
-    if (!collapseIntoRing())
-      return false;
+      (this->Sharpest <= 0.0 || SmallestAngle(x[a], x[b], x[c]) >= this->Sharpest);
   }
-  // A face on the ring's three vertices already (a tetrahedron-like spot): duplicate.
-  if (m == 3)
-    for (int f : facesOf[ring[0]])
-      if (alive[f] && std::find(star.begin(), star.end(), f) == star.end())
+
+  const Piece& Piece_;
+  const std::vector<std::vector<int>>& FacesOf;
+  const std::vector<char>& Alive;
+  const std::vector<Vec3>& X;
+  const int V;
+  const std::vector<int>& Star;
+  const std::vector<int>& Ring;
+  const RingRules& Rules;
+  const int M;
+  std::vector<Triangle> Old; ///< the star's faces
+  double Sharpest = 0.0;     ///< the smallest angle a new face may have (0: any)
+  EdgeSet Diagonals;         ///< the new edges (the budget check samples their midpoints)
+};
+
+bool RingRetriangulation::ClipEars(std::vector<Triangle>& created, const char*& why)
+{
+  const std::vector<Vec3>& x = this->X;
+  const std::vector<int>& ring = this->Ring;
+  const int v = this->V, m = this->M;
+  why = "not one-to-one";
+  Vec3 normal = Vec3::Zero();
+  std::vector<Vec3> faceNormal(m);
+  for (int i = 0; i < m; ++i)
+  {
+    faceNormal[i] = (x[ring[i]] - x[v]).cross(x[ring[(i + 1) % m]] - x[v]);
+    normal += faceNormal[i];
+  }
+  if (normal.norm() <= 0.0)
+    return false;
+  normal.normalize();
+  for (const Vec3& n : faceNormal)
+    if (n.dot(normal) <= 1e-3 * n.norm())
+      return false;
+  // The ring in the plane perpendicular to the mean normal, v at the origin.
+  const Vec3 u = normal.unitOrthogonal(), w = normal.cross(u);
+  std::map<int, Eigen::Vector2d> flat;
+  for (int a : ring)
+    flat[a] = Eigen::Vector2d((x[a] - x[v]).dot(u), (x[a] - x[v]).dot(w));
+  double turn = 0.0;
+  for (int i = 0; i < m; ++i)
+  {
+    const Eigen::Vector2d& p = flat[ring[i]];
+    const Eigen::Vector2d& q = flat[ring[(i + 1) % m]];
+    turn += std::atan2(p.x() * q.y() - p.y() * q.x(), p.dot(q));
+  }
+  if (std::abs(turn - 2.0 * M_PI) > 1e-6)
+    return false;
+
+  why = "no triangulation";
+  std::vector<int> poly = ring;
+  created.clear();
+  auto allowed = [&](int a, int c)
+  {
+    const int i = static_cast<int>(std::find(poly.begin(), poly.end(), a) - poly.begin());
+    const int b = poly[(i + 1) % poly.size()];
+    const Eigen::Vector2d &pa = flat[a], &pb = flat[b], &pc = flat[c];
+    const double area = Orientation(pa, pb, pc);
+    if (area <= 1e-9 * std::max((pa - pc).squaredNorm(), (pb - pa).squaredNorm()))
+      return false;
+    for (int q : poly)
+      if (q != a && q != b && q != c)
       {
-        Triangle t = piece.triangles[f], r = { ring[0], ring[1], ring[2] };
-        std::sort(t.begin(), t.end());
-        std::sort(r.begin(), r.end());
-        if (t == r)
+        const Eigen::Vector2d& pq = flat[q];
+        if (Orientation(pa, pb, pq) >= 0.0 && Orientation(pb, pc, pq) >= 0.0 &&
+          Orientation(pc, pa, pq) >= 0.0)
           return false;
       }
+    return this->Regular(a, b, c) && !this->FixedEdge(a, c) && !this->HasEdge(a, c);
+  };
+  auto cut = [&](int a, int b, int c)
+  {
+    created.push_back({ a, b, c });
+    this->Diagonals.insert({ std::min(a, c), std::max(a, c) });
+  };
+  // The ear that departs least from the old star first (sampled at its centroid and the
+  // midpoint of its new diagonal), the shorter diagonal on (near) ties: on a crease, the
+  // diagonals follow the crease instead of cutting across it.
+  const double lengthWeight = 1e-3;
+  double spoke = 0.0;
+  for (int a : ring)
+    spoke += (x[a] - x[v]).norm() / m;
+  auto deviation = [&](int a, int b, int c)
+  {
+    double value = std::max(DistanceToTriangles((x[a] + x[b] + x[c]) / 3.0, x, this->Old),
+                     DistanceToTriangles(0.5 * (x[a] + x[c]), x, this->Old)) +
+      lengthWeight * (x[a] - x[c]).norm();
+    if (this->Rules.shapeWeight > 0.0)
+      value += this->Rules.shapeWeight * spoke *
+        (1.0 - SmallestAngle(x[a], x[b], x[c]) / (M_PI / 3.0));
+    return value;
+  };
+  if (!ClipCheapestEars(poly, allowed, deviation, cut))
+    return false;
+  if (Orientation(flat[poly[0]], flat[poly[1]], flat[poly[2]]) <= 0.0 ||
+    !this->Regular(poly[0], poly[1], poly[2]))
+    return false;
+  created.push_back({ poly[0], poly[1], poly[2] });
+  return true;
+}
 
-  why = "budget";
-  // Deviation between the old star and the new faces, sampled: v, the star's face
-  // centroids and spoke midpoints against the new faces; the new faces' centroids and
-  // diagonal midpoints against the star (the ring edges belong to both).
-  moved = DistanceToTriangles(x[v], x, created);
+// Collapse v into the ring vertex u whose new faces depart least from the old star, by at
+// most a tenth of the limit (a collapse follows the old star less closely than ears do; with
+// the whole budget it cut the corners of a CAD mesh: bearing 0.0033 -> 0.0061). Each star
+// face (v, a, b) becomes (u, a, b), the two faces on edge v-u vanish; accepted when no new
+// edge exists already (the link condition), no new face is degenerate and none turns by 90
+// degrees or more against the face it replaces.
+bool RingRetriangulation::CollapseIntoRing(double limit,
+  std::vector<Triangle>& created,
+  const char*& why)
+{
+  const std::vector<Vec3>& x = this->X;
+  const std::vector<int>& ring = this->Ring;
+  const int v = this->V, m = this->M;
+  const char* reason = why;
+  double best = std::numeric_limits<double>::infinity();
+  std::vector<Triangle> bestFaces;
+  int bestU = -1;
+  for (int i = 0; i < m; ++i)
+  {
+    const int u = ring[i];
+    const int previous = ring[(i + m - 1) % m], next = ring[(i + 1) % m];
+    auto newEdgeFree = [&](int a)
+    { return a == previous || a == next || (!this->FixedEdge(u, a) && !this->HasEdge(u, a)); };
+    std::vector<Triangle> faces;
+    bool ok = true;
+    for (int j = 0; j < m && ok; ++j)
+    {
+      const int a = ring[j], b = ring[(j + 1) % m];
+      if (a == u || b == u)
+        continue;
+      const Vec3 before = (x[a] - x[v]).cross(x[b] - x[v]);
+      const Vec3 after = (x[a] - x[u]).cross(x[b] - x[u]);
+      ok = this->Regular(u, a, b) && after.dot(before) > 0.0 && newEdgeFree(a) && newEdgeFree(b);
+      faces.push_back({ u, a, b });
+    }
+    if (!ok || faces.empty())
+      continue;
+    double worst = DistanceToTriangles(x[v], x, faces);
+    for (const Triangle& t : faces)
+      worst =
+        std::max(worst, DistanceToTriangles((x[t[0]] + x[t[1]] + x[t[2]]) / 3.0, x, this->Old));
+    if (worst <= CollapseShareOfLimit * limit && worst < best)
+    {
+      best = worst;
+      bestFaces = std::move(faces);
+      bestU = u;
+    }
+  }
+  if (bestFaces.empty())
+  {
+    why = reason;
+    return false;
+  }
+  // The new edges from u, sampled like an ear's diagonals by the budget check.
+  for (const Triangle& t : bestFaces)
+    for (int k = 1; k < 3; ++k)
+      this->Diagonals.insert({ std::min(bestU, t[k]), std::max(bestU, t[k]) });
+  created = std::move(bestFaces);
+  return true;
+}
+
+bool RingRetriangulation::DuplicatesAFace() const
+{
+  if (this->M != 3)
+    return false;
+  const std::vector<int>& ring = this->Ring;
+  for (int f : this->FacesOf[ring[0]])
+    if (this->Alive[f] && std::find(this->Star.begin(), this->Star.end(), f) == this->Star.end())
+    {
+      Triangle t = this->Piece_.triangles[f], r = { ring[0], ring[1], ring[2] };
+      std::sort(t.begin(), t.end());
+      std::sort(r.begin(), r.end());
+      if (t == r)
+        return true;
+    }
+  return false;
+}
+
+// Sampled: v, the star's face centroids and spoke midpoints against the new faces; the new
+// faces' centroids and diagonal midpoints against the star (the ring edges belong to both).
+double RingRetriangulation::Deviation(const std::vector<Triangle>& created, double limit) const
+{
+  const std::vector<Vec3>& x = this->X;
+  const std::vector<int>& ring = this->Ring;
+  const int v = this->V, m = this->M;
+  double moved = DistanceToTriangles(x[v], x, created);
   for (int i = 0; i < m && moved <= limit; ++i)
   {
     const Vec3& a = x[ring[i]];
@@ -412,12 +455,50 @@ bool VertexRemover::Try(int v,
   for (size_t k = 0; k < created.size() && moved <= limit; ++k)
   {
     const Triangle& t = created[k];
-    moved = std::max(moved, DistanceToTriangles((x[t[0]] + x[t[1]] + x[t[2]]) / 3.0, x, old));
+    moved =
+      std::max(moved, DistanceToTriangles((x[t[0]] + x[t[1]] + x[t[2]]) / 3.0, x, this->Old));
     for (int j = 0; j < 3; ++j)
-      if (diagonals.count({ std::min(t[j], t[(j + 1) % 3]), std::max(t[j], t[(j + 1) % 3]) }))
-        moved = std::max(moved, DistanceToTriangles(0.5 * (x[t[j]] + x[t[(j + 1) % 3]]), x, old));
+      if (this->Diagonals.count(
+            { std::min(t[j], t[(j + 1) % 3]), std::max(t[j], t[(j + 1) % 3]) }))
+        moved = std::max(
+          moved, DistanceToTriangles(0.5 * (x[t[j]] + x[t[(j + 1) % 3]]), x, this->Old));
   }
-  return moved <= limit;
+  return moved;
+}
+} // namespace
+
+bool VertexRemover::Try(int v,
+  double limit,
+  const RingRules& rules,
+  RingRemoval& removal,
+  const char*& why) const
+{
+  removal.vertex = v;
+  removal.limit = limit;
+  removal.created.clear();
+  removal.moved = 0.0;
+  std::vector<int> star;
+  for (int f : this->VertexFaces[v])
+    if (this->FaceAlive[f])
+      star.push_back(f);
+  why = "open ring";
+  if (star.size() < 3 ||
+    !ClosedRing(this->Mesh.triangles, star, v, removal.ring, removal.ringFace))
+    return false;
+  RingRetriangulation candidate(
+    this->Mesh, this->VertexFaces, this->FaceAlive, v, star, removal.ring, rules);
+  if (!candidate.ClipEars(removal.created, why))
+  {
+    removal.created.clear();
+    candidate.ClearDiagonals();
+    if (!candidate.CollapseIntoRing(limit, removal.created, why))
+      return false;
+  }
+  if (candidate.DuplicatesAFace())
+    return false;
+  why = "budget";
+  removal.moved = candidate.Deviation(removal.created, limit);
+  return removal.moved <= limit;
 }
 
 void VertexRemover::Apply(const RingRemoval& removal)
