@@ -193,6 +193,234 @@ bool Unfolder::FillWithinTolerance(const Piece& piece,
     piece.points, loop, fill, this->Options.holeToleranceScale * this->Tree.rootEpsilon);
 }
 
+/// One pass of FillLoops: the mesh's edges as the fills grow, and what it reports.
+struct LoopFill
+{
+  RepairReport& report;
+  const bool apply; ///< false: nothing is added, the loops are only classified
+  EdgeSet existing;
+  std::unordered_map<Edge, int, EdgeHash> faceOfHalfEdge; ///< directed face half-edge -> face
+  EdgeSet openEdges; ///< with input non-manifold edges: the open edges (reported)
+
+  LoopFill(const Piece& piece, RepairReport& r, bool a, bool nonManifoldInput)
+    : report(r)
+    , apply(a)
+  {
+    this->existing.reserve(3 * piece.triangles.size());
+    this->faceOfHalfEdge.reserve(3 * piece.triangles.size());
+    for (int f = 0; f < piece.NumberOfFaces(); ++f)
+    {
+      const Triangle& t = piece.triangles[f];
+      for (int k = 0; k < 3; ++k)
+      {
+        this->existing.insert(Key(t[k], t[(k + 1) % 3]));
+        this->faceOfHalfEdge[{ t[k], t[(k + 1) % 3] }] = f;
+      }
+    }
+    // Loops closed by non-manifold edges (BoundaryLoops) report only their open edges.
+    if (nonManifoldInput)
+      for (const auto& e : EdgeFaces(piece))
+        if (e.second.size() == 1)
+          this->openEdges.insert(e.first);
+  }
+
+  /// Appends the fill of a loop whose first edge is a -> b, with the attributes (ids, copy)
+  /// of the face across that edge (hole a -> b: face b -> a).
+  void Append(Piece& piece, const std::vector<Triangle>& fill, int a, int b)
+  {
+    auto from = this->faceOfHalfEdge.find({ b, a });
+    const int source = from != this->faceOfHalfEdge.end() ? from->second : 0;
+    for (const Triangle& t : fill)
+    {
+      piece.triangles.push_back(t);
+      piece.faceOrig.push_back(piece.faceOrig[source]);
+      piece.faceCopy.push_back(piece.faceCopy[source]);
+      piece.faceFilled.push_back(1);
+      for (int k = 0; k < 3; ++k)
+        this->existing.insert(Key(t[k], t[(k + 1) % 3]));
+    }
+    this->report.filledFaces += static_cast<int>(fill.size());
+    ++this->report.filledLoops;
+  }
+
+  /// Counts an unfilled loop as open.
+  void CountOpen(const LoopShape& shape);
+};
+
+/// A boundary loop's edges: their length, those reported, and whether the loop runs along
+/// the input's border or points of unknown border flags.
+struct LoopShape
+{
+  int edges = 0;
+  double length = 0.0, reportedLength = 0.0;
+  int reported = 0;
+  bool border = false, unknown = false;
+};
+
+void LoopFill::CountOpen(const LoopShape& shape)
+{
+  ++this->report.openLoops;
+  this->report.openEdges += shape.reported;
+  this->report.openLength += shape.reportedLength;
+}
+
+LoopShape Unfolder::MeasureLoop(const Piece& piece,
+  const std::vector<int>& loop,
+  const LoopFill& pass) const
+{
+  LoopShape shape;
+  const int n = static_cast<int>(loop.size());
+  shape.edges = n;
+  for (int i = 0; i < n; ++i)
+  {
+    const int a = loop[i], b = loop[(i + 1) % n];
+    const double l = (piece.points[a] - piece.points[b]).norm();
+    shape.length += l;
+    if (this->Tree.inputNonManifoldEdges.empty() ||
+      (pass.openEdges.count(Key(a, b)) && (n > 2 || i == 0)))
+    {
+      ++shape.reported;
+      shape.reportedLength += l;
+    }
+    shape.border = shape.border || this->IsInputBorderEdge(piece, a, b);
+    shape.unknown = shape.unknown || piece.border[a] == 2 || piece.border[b] == 2;
+  }
+  return shape;
+}
+
+/**
+ * A gap that opens into the input's border: closes each run of non-border edges between two
+ * border vertices p, q by the chord q -> p (a new border edge), when the chord is short
+ * (within twice the tolerance) and the fill within the tolerance. Returns the runs closed.
+ */
+int Unfolder::CloseBorderGaps(Piece& piece, const std::vector<int>& loop, LoopFill& pass) const
+{
+  const int n = static_cast<int>(loop.size());
+  const double tolerance = this->Options.holeToleranceScale * this->Tree.rootEpsilon;
+  auto isBorderEdge = [&](int i)
+  { return this->IsInputBorderEdge(piece, loop[i], loop[(i + 1) % n]); };
+  int filled = 0;
+  int first = 0;
+  while (first < n && !isBorderEdge(first))
+    ++first;
+  for (int k = 0; k < n;)
+  {
+    const int i = (first + k) % n;
+    if (isBorderEdge(i))
+    {
+      ++k;
+      continue;
+    }
+    // Run of non-border edges from loop[i] (a border vertex) to the next border vertex.
+    std::vector<int> run{ loop[i] };
+    int m = 0;
+    while (k + m < n && !isBorderEdge((first + k + m) % n))
+    {
+      run.push_back(loop[(first + k + m + 1) % n]);
+      ++m;
+    }
+    k += m;
+    const int p = run.front(), q = run.back();
+    std::vector<Triangle> fill;
+    if (run.size() < 3 || p == q || piece.border[p] != 1 || piece.border[q] != 1 ||
+      pass.existing.count(Key(p, q)) ||
+      (piece.points[p] - piece.points[q]).norm() > 2.0 * tolerance ||
+      !TriangulateLoop(piece, run, pass.existing, fill) ||
+      !this->FillWithinTolerance(piece, run, fill))
+      continue;
+    pass.Append(piece, fill, run[0], run[1]);
+    ++filled;
+  }
+  return filled;
+}
+
+/// A loop along the input's border or points of unknown border flags: left alone, counted
+/// (and traced) when classifying.
+void Unfolder::CountBorderLoop(const Piece& piece,
+  const std::vector<int>& loop,
+  const LoopShape& shape,
+  LoopFill& pass) const
+{
+  if (pass.apply)
+    return;
+  const int n = shape.edges;
+  if (this->Options.trace)
+  {
+    int be = 0, bv = 0;
+    for (int i = 0; i < n; ++i)
+    {
+      be += this->IsInputBorderEdge(piece, loop[i], loop[(i + 1) % n]);
+      bv += piece.border[loop[i]] == 1;
+    }
+    this->Options.trace(
+      FormatTrace("  border loop: %d edges (%d border edges, %d border vertices), length %.4g",
+        n,
+        be,
+        bv,
+        shape.length));
+  }
+  RepairReport& report = pass.report;
+  int& count = shape.border ? report.borderLoops : report.unknownLoops;
+  ++count;
+  (shape.border ? report.borderEdges : report.unknownEdges) += shape.reported;
+  (shape.border ? report.borderLength : report.unknownLength) += shape.reportedLength;
+}
+
+/**
+ * An open loop: triangulated (or, when no triangulation of its own vertices exists, a fan
+ * around a new point) and filled when the fill stays within the tolerance. Returns 1 when it
+ * was filled (or, classifying, could be).
+ */
+int Unfolder::FillOpenLoop(Piece& piece,
+  const std::vector<int>& loop,
+  const LoopShape& shape,
+  LoopFill& pass) const
+{
+  const int n = shape.edges;
+  std::vector<Triangle> fill;
+  const bool shortEnough = n <= this->Options.maximumHoleEdges;
+  bool triangulated = shortEnough && TriangulateLoop(piece, loop, pass.existing, fill);
+  // No triangulation of the loop's own vertices (every diagonal would repeat an edge of
+  // the mesh, e.g. a pocket between stitched copies): a fan around a new vertex at the
+  // loop's centroid, with the point data of the nearest loop vertex.
+  bool fan = false;
+  if (shortEnough && !triangulated)
+  {
+    Vec3 c = Vec3::Zero();
+    for (int v : loop)
+      c += piece.points[v];
+    c /= n;
+    int nearest = loop[0];
+    for (int v : loop)
+      if ((piece.points[v] - c).norm() < (piece.points[nearest] - c).norm())
+        nearest = v;
+    AddPoint(piece, c, nearest);
+    const int centre = piece.NumberOfPoints() - 1;
+    for (int i = 0; i < n; ++i)
+      fill.push_back({ loop[i], loop[(i + 1) % n], centre });
+    triangulated = fan = true;
+  }
+  const bool ok = triangulated && this->FillWithinTolerance(piece, loop, fill);
+  if (fan && (!ok || !pass.apply))
+    RemoveLastPoint(piece);
+  if (!ok || !pass.apply)
+  {
+    if (!pass.apply && this->Options.trace)
+      this->Options.trace(FormatTrace("  open loop: %d edges, length %.4g, %s",
+        n,
+        shape.length,
+        !shortEnough ? "too long"
+          : fan      ? "fan beyond tolerance"
+                     : "beyond tolerance"));
+    if (!pass.apply)
+      pass.CountOpen(shape);
+    return ok ? 1 : 0;
+  }
+  pass.Append(piece, fill, loop[0], loop[1]);
+  pass.report.addedPoints += fan;
+  return 1;
+}
+
 /**
  * One pass over the boundary loops: the input's border (an edge whose two end points are
  * copies of input border points) and loops with unknown border flags are left alone; the
@@ -203,190 +431,26 @@ bool Unfolder::FillWithinTolerance(const Piece& piece,
 int Unfolder::FillLoops(Piece& piece, RepairReport& report, bool apply)
 {
   size_t reportOnly = 0;
-  const auto loops = BoundaryLoops(piece, !this->Tree.inputNonManifoldEdges.empty(), reportOnly);
-  EdgeSet existing;
-  std::unordered_map<Edge, int, EdgeHash> faceOfHalfEdge; // directed face half-edge -> face
-  existing.reserve(3 * piece.triangles.size());
-  faceOfHalfEdge.reserve(3 * piece.triangles.size());
-  for (int f = 0; f < piece.NumberOfFaces(); ++f)
-  {
-    const Triangle& t = piece.triangles[f];
-    for (int k = 0; k < 3; ++k)
-    {
-      existing.insert(Key(t[k], t[(k + 1) % 3]));
-      faceOfHalfEdge[{ t[k], t[(k + 1) % 3] }] = f;
-    }
-  }
-  // Appends the fill of a loop whose first edge is a -> b, with the attributes (ids, copy) of
-  // the face across that edge (hole a -> b: face b -> a).
-  auto appendFill = [&](const std::vector<Triangle>& fill, int a, int b)
-  {
-    auto from = faceOfHalfEdge.find({ b, a });
-    const int source = from != faceOfHalfEdge.end() ? from->second : 0;
-    for (const Triangle& t : fill)
-    {
-      piece.triangles.push_back(t);
-      piece.faceOrig.push_back(piece.faceOrig[source]);
-      piece.faceCopy.push_back(piece.faceCopy[source]);
-      piece.faceFilled.push_back(1);
-      for (int k = 0; k < 3; ++k)
-        existing.insert(Key(t[k], t[(k + 1) % 3]));
-    }
-    report.filledFaces += static_cast<int>(fill.size());
-    ++report.filledLoops;
-  };
-  // Loops closed by non-manifold edges (BoundaryLoops) report only their open edges.
-  EdgeSet openEdges;
-  if (!this->Tree.inputNonManifoldEdges.empty())
-    for (const auto& e : EdgeFaces(piece))
-      if (e.second.size() == 1)
-        openEdges.insert(e.first);
+  const bool nonManifoldInput = !this->Tree.inputNonManifoldEdges.empty();
+  const auto loops = BoundaryLoops(piece, nonManifoldInput, reportOnly);
+  LoopFill pass(piece, report, apply, nonManifoldInput);
   int filled = 0;
   for (size_t index = 0; index < loops.size(); ++index)
   {
     const std::vector<int>& loop = loops[index];
-    const int n = static_cast<int>(loop.size());
-    double length = 0.0, reportedLength = 0.0;
-    int reported = 0;
-    bool border = false, unknown = false;
-    for (int i = 0; i < n; ++i)
-    {
-      const int a = loop[i], b = loop[(i + 1) % n];
-      const double l = (piece.points[a] - piece.points[b]).norm();
-      length += l;
-      if (this->Tree.inputNonManifoldEdges.empty() ||
-        (openEdges.count(Key(a, b)) && (n > 2 || i == 0)))
-      {
-        ++reported;
-        reportedLength += l;
-      }
-      border = border || this->IsInputBorderEdge(piece, a, b);
-      unknown = unknown || piece.border[a] == 2 || piece.border[b] == 2;
-    }
-    if (border && !unknown && apply && n <= this->Options.maximumHoleEdges && index < reportOnly)
-    {
-      // A gap that opens into the input's border: close each run of non-border edges
-      // between two border vertices p, q by the chord q -> p (a new border edge), when the
-      // chord is short (within twice the tolerance) and the fill within the tolerance.
-      const double tolerance = this->Options.holeToleranceScale * this->Tree.rootEpsilon;
-      auto isBorderEdge = [&](int i)
-      { return this->IsInputBorderEdge(piece, loop[i], loop[(i + 1) % n]); };
-      int first = 0;
-      while (first < n && !isBorderEdge(first))
-        ++first;
-      for (int k = 0; k < n;)
-      {
-        const int i = (first + k) % n;
-        if (isBorderEdge(i))
-        {
-          ++k;
-          continue;
-        }
-        // Run of non-border edges from loop[i] (a border vertex) to the next border vertex.
-        std::vector<int> run{ loop[i] };
-        int m = 0;
-        while (k + m < n && !isBorderEdge((first + k + m) % n))
-        {
-          run.push_back(loop[(first + k + m + 1) % n]);
-          ++m;
-        }
-        k += m;
-        const int p = run.front(), q = run.back();
-        std::vector<Triangle> fill;
-        if (run.size() < 3 || p == q || piece.border[p] != 1 || piece.border[q] != 1 ||
-          existing.count(Key(p, q)) ||
-          (piece.points[p] - piece.points[q]).norm() > 2.0 * tolerance ||
-          !TriangulateLoop(piece, run, existing, fill) ||
-          !this->FillWithinTolerance(piece, run, fill))
-          continue;
-        appendFill(fill, run[0], run[1]);
-        ++filled;
-      }
-      continue;
-    }
-    if (border || unknown)
-    {
-      if (!apply && this->Options.trace)
-      {
-        int be = 0, bv = 0;
-        for (int i = 0; i < n; ++i)
-        {
-          be += this->IsInputBorderEdge(piece, loop[i], loop[(i + 1) % n]);
-          bv += piece.border[loop[i]] == 1;
-        }
-        this->Options.trace(
-          FormatTrace("  border loop: %d edges (%d border edges, %d border vertices), length %.4g",
-            n,
-            be,
-            bv,
-            length));
-      }
-      if (!apply)
-      {
-        int& count = border ? report.borderLoops : report.unknownLoops;
-        ++count;
-        (border ? report.borderEdges : report.unknownEdges) += reported;
-        (border ? report.borderLength : report.unknownLength) += reportedLength;
-      }
-      continue;
-    }
-    if (index >= reportOnly) // open edges BoundaryLoops could not close: reported only
+    const LoopShape shape = this->MeasureLoop(piece, loop, pass);
+    if (shape.border && !shape.unknown && apply && shape.edges <= this->Options.maximumHoleEdges &&
+      index < reportOnly)
+      filled += this->CloseBorderGaps(piece, loop, pass);
+    else if (shape.border || shape.unknown)
+      this->CountBorderLoop(piece, loop, shape, pass);
+    else if (index >= reportOnly) // open edges BoundaryLoops could not close: reported only
     {
       if (!apply)
-      {
-        ++report.openLoops;
-        report.openEdges += reported;
-        report.openLength += reportedLength;
-      }
-      continue;
+        pass.CountOpen(shape);
     }
-    std::vector<Triangle> fill;
-    const bool shortEnough = n <= this->Options.maximumHoleEdges;
-    bool triangulated = shortEnough && TriangulateLoop(piece, loop, existing, fill);
-    // No triangulation of the loop's own vertices (every diagonal would repeat an edge of
-    // the mesh, e.g. a pocket between stitched copies): a fan around a new vertex at the
-    // loop's centroid, with the point data of the nearest loop vertex.
-    bool fan = false;
-    if (shortEnough && !triangulated)
-    {
-      Vec3 c = Vec3::Zero();
-      for (int v : loop)
-        c += piece.points[v];
-      c /= n;
-      int nearest = loop[0];
-      for (int v : loop)
-        if ((piece.points[v] - c).norm() < (piece.points[nearest] - c).norm())
-          nearest = v;
-      AddPoint(piece, c, nearest);
-      const int centre = piece.NumberOfPoints() - 1;
-      for (int i = 0; i < n; ++i)
-        fill.push_back({ loop[i], loop[(i + 1) % n], centre });
-      triangulated = fan = true;
-    }
-    bool ok = triangulated && this->FillWithinTolerance(piece, loop, fill);
-    if (fan && (!ok || !apply))
-      RemoveLastPoint(piece);
-    if (!ok || !apply)
-    {
-      if (!apply && this->Options.trace)
-        this->Options.trace(FormatTrace("  open loop: %d edges, length %.4g, %s",
-          n,
-          length,
-          !shortEnough ? "too long"
-            : fan      ? "fan beyond tolerance"
-                       : "beyond tolerance"));
-      if (!apply)
-      {
-        ++report.openLoops;
-        report.openEdges += reported;
-        report.openLength += reportedLength;
-      }
-      filled += ok;
-      continue;
-    }
-    appendFill(fill, loop[0], loop[1]);
-    report.addedPoints += fan;
-    ++filled;
+    else
+      filled += this->FillOpenLoop(piece, loop, shape, pass);
   }
   return filled;
 }

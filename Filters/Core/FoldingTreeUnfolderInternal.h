@@ -247,6 +247,9 @@ using EdgeSet = std::unordered_set<std::pair<int, int>, EdgeHash>;
 /// weld) and FoldingTreeUnfolderSeamGaps.cxx (zipper, gap filling); the final repair in
 /// FoldingTreeUnfolderRepair.cxx, FoldingTreeUnfolderBoundaryLoops.cxx and
 /// FoldingTreeUnfolderHoles.cxx. The order of the stages: UnfoldFoldingTree.
+struct LoopFill;
+struct LoopShape;
+
 class Unfolder
 {
 public:
@@ -356,6 +359,20 @@ private:
     const EdgeSet& existing,
     std::vector<Triangle>& triangles);
   int FillLoops(Piece& piece, RepairReport& report, bool apply);
+  // FillLoops' steps (FoldingTreeUnfolderHoles.cxx: LoopFill is one pass's state, LoopShape
+  // what a loop's edges are).
+  LoopShape MeasureLoop(const Piece& piece,
+    const std::vector<int>& loop,
+    const LoopFill& pass) const;
+  int CloseBorderGaps(Piece& piece, const std::vector<int>& loop, LoopFill& pass) const;
+  void CountBorderLoop(const Piece& piece,
+    const std::vector<int>& loop,
+    const LoopShape& shape,
+    LoopFill& pass) const;
+  int FillOpenLoop(Piece& piece,
+    const std::vector<int>& loop,
+    const LoopShape& shape,
+    LoopFill& pass) const;
   bool FillWithinTolerance(const Piece& piece,
     const std::vector<int>& loop,
     const std::vector<Triangle>& fill) const;
