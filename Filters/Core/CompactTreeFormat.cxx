@@ -53,6 +53,77 @@ double PlaneError(const FoldingTree& tree)
   return folds * perFold;
 }
 
+/// The tree and geometry sections as they will be written.
+struct SectionsToWrite
+{
+  std::string packedTree; ///< zlib'd tree section
+  size_t rawTreeBytes = 0;
+  std::string geometry; ///< Draco section
+  bool symbolsBeside = false;
+};
+
+/**
+ * Codes the leaves every way the options allow - each Draco speed setting, with and without
+ * welding the leaves' common points, the symbols beside the Draco mesh where Draco gives back
+ * the same leaves without them (else in it) - and keeps the smallest tree + geometry sections.
+ */
+bool EncodeSmallestSections(const FoldingTree& tree,
+  const CompactTreeOptions& options,
+  const LeafGeometryCoding& coding,
+  double quantizationError,
+  const Palette& palette,
+  const std::vector<LeafToEncode>& leaves,
+  SectionsToWrite& best,
+  std::string& error)
+{
+  std::vector<std::pair<int, bool>> variants; // (speed, weld)
+  for (const bool weld : { true, false })
+    for (const int speed : options.dracoSpeeds)
+      if (!weld || (options.weldLeaves && !coding.keepOrder))
+        variants.emplace_back(speed, weld);
+  bool any = false;
+  for (const auto& [speed, weld] : variants)
+  {
+    LeafGeometryCoding withAttribute = coding;
+    withAttribute.weldPositions = weld;
+    LeafGeometryCoding beside = withAttribute;
+    beside.symbolAttribute = false;
+    SectionsToWrite candidate;
+    std::vector<DecodedLeaf> decoded, besideDecoded;
+    std::string besideGeometry, speedError;
+    if (!EncodeLeafGeometry(leaves, withAttribute, speed, candidate.geometry, decoded, speedError))
+    {
+      error = speedError;
+      continue;
+    }
+    candidate.symbolsBeside = options.symbolsBesideGeometry &&
+      EncodeLeafGeometry(leaves, beside, speed, besideGeometry, besideDecoded, speedError) &&
+      TransferSymbols(decoded, besideDecoded);
+    if (candidate.symbolsBeside)
+      candidate.geometry = std::move(besideGeometry);
+    ByteWriter section;
+    WriteTreeSection(
+      tree, candidate.symbolsBeside ? beside : withAttribute, quantizationError, palette, section);
+    if (candidate.symbolsBeside)
+      WritePointSymbols(besideDecoded, section);
+    candidate.packedTree = Deflate(section.Bytes);
+    candidate.rawTreeBytes = section.Bytes.size();
+    if (candidate.packedTree.empty())
+    {
+      error = "zlib cannot compress the tree section";
+      return false;
+    }
+    if (!any ||
+      candidate.packedTree.size() + candidate.geometry.size() <
+        best.packedTree.size() + best.geometry.size())
+      best = std::move(candidate);
+    any = true;
+  }
+  if (any)
+    error.clear();
+  return any; // else error says why Draco failed
+}
+
 }
 
 bool LooksLikeCompactTree(const std::string& bytes)
@@ -114,62 +185,12 @@ bool EncodeCompactTree(const FoldingTree& tree,
     leaves.push_back(std::move(leaf));
   }
 
-  size_t rawSectionSize = 0;
-  // Every Draco speed setting, with and without welding the leaves' common points, the
-  // symbols beside the Draco mesh where Draco gives back the same leaves without them (else in
-  // it): the smallest file is kept.
-  std::string bestGeometry, bestSection;
-  LeafGeometryCoding best = coding;
-  std::vector<std::pair<int, bool>> variants; // (speed, weld)
-  for (const bool weld : { true, false })
-    for (const int speed : options.dracoSpeeds)
-      if (!weld || (options.weldLeaves && !coding.keepOrder))
-        variants.emplace_back(speed, weld);
-  for (const auto& [speed, weld] : variants)
-  {
-    LeafGeometryCoding withAttribute = coding;
-    withAttribute.weldPositions = weld;
-    LeafGeometryCoding beside = withAttribute;
-    beside.symbolAttribute = false;
-    std::string geometry, besideGeometry, speedError;
-    std::vector<DecodedLeaf> decoded, besideDecoded;
-    if (!EncodeLeafGeometry(leaves, withAttribute, speed, geometry, decoded, speedError))
-    {
-      error = speedError;
-      continue;
-    }
-    LeafGeometryCoding used = withAttribute;
-    if (options.symbolsBesideGeometry &&
-      EncodeLeafGeometry(leaves, beside, speed, besideGeometry, besideDecoded, speedError) &&
-      TransferSymbols(decoded, besideDecoded))
-    {
-      used = beside;
-      geometry = std::move(besideGeometry);
-    }
-    ByteWriter section;
-    WriteTreeSection(tree, used, quantizationError, palette, section);
-    if (!used.symbolAttribute)
-      WritePointSymbols(besideDecoded, section);
-    const std::string packed = Deflate(section.Bytes);
-    if (packed.empty())
-    {
-      error = "zlib cannot compress the tree section";
-      return false;
-    }
-    if (bestGeometry.empty() ||
-      packed.size() + geometry.size() < bestSection.size() + bestGeometry.size())
-    {
-      best = used;
-      bestGeometry = std::move(geometry);
-      bestSection = packed;
-      rawSectionSize = section.Bytes.size();
-    }
-  }
-  if (bestGeometry.empty())
-    return false; // error says why Draco failed
-  error.clear();
-  const std::string& packed = bestSection;
-  const std::string& geometry = bestGeometry;
+  SectionsToWrite sections;
+  if (!EncodeSmallestSections(tree, options, coding, quantizationError, palette, leaves, sections, error))
+    return false;
+  const std::string& packed = sections.packedTree;
+  const std::string& geometry = sections.geometry;
+  const size_t rawSectionSize = sections.rawTreeBytes;
 
   if (packed.size() > 0xffffffffu || rawSectionSize > 0xffffffffu ||
     geometry.size() > 0xffffffffu)
@@ -181,7 +202,7 @@ bool EncodeCompactTree(const FoldingTree& tree,
   file.Raw(std::string(Magic, 4));
   file.U8(static_cast<uint8_t>(CompactTreeFormatVersion & 0xff));
   file.U8(static_cast<uint8_t>(CompactTreeFormatVersion >> 8));
-  file.U8(static_cast<uint8_t>((withArrays ? 1 : 0) | (best.symbolAttribute ? 0 : 2)));
+  file.U8(static_cast<uint8_t>((withArrays ? 1 : 0) | (sections.symbolsBeside ? 2 : 0)));
   file.U8(0);
   file.U32(static_cast<uint32_t>(packed.size()));
   file.U32(static_cast<uint32_t>(rawSectionSize));
