@@ -134,14 +134,17 @@ int Fold(int argc, char* argv[])
 
 namespace
 {
-/// unfold (decompress false) and decompress (true): they differ in the input they accept
-/// and in the names of their outputs.
-int UnfoldTree(int argc, char* argv[], bool decompress)
+/// What unfold / decompress were asked (the unfolder's options go straight to the filter).
+struct UnfoldArguments
 {
   std::string treePath, outdir = ".", originalPath;
   int upAxis = -1;
   bool json = false, quiet = false;
-  vtkNew<vtkFoldingTreeUnfolder> unfolder; // options not given keep the filter's defaults
+};
+
+UnfoldArguments ParseUnfoldArguments(int argc, char* argv[], vtkFoldingTreeUnfolder* unfolder)
+{
+  UnfoldArguments args;
   for (int i = 0; i < argc; ++i)
   {
     const std::string arg = argv[i];
@@ -154,13 +157,13 @@ int UnfoldTree(int argc, char* argv[], bool decompress)
     {
       if (i + 1 >= argc)
         throw std::runtime_error("missing value after --outdir");
-      outdir = argv[++i];
+      args.outdir = argv[++i];
     }
     else if (arg == "--up")
     {
       if (i + 1 >= argc)
         throw std::runtime_error("missing value after --up");
-      upAxis = ParseUpAxis(argv[++i]);
+      args.upAxis = ParseUpAxis(argv[++i]);
     }
     else if (arg == "--no-stitch")
       unfolder->StitchOff();
@@ -174,19 +177,171 @@ int UnfoldTree(int argc, char* argv[], bool decompress)
     {
       if (i + 1 >= argc)
         throw std::runtime_error("missing value after --original");
-      originalPath = argv[++i];
+      args.originalPath = argv[++i];
     }
     else if (arg == "--json")
-      json = true;
+      args.json = true;
     else if (arg == "--quiet")
-      quiet = true;
+      args.quiet = true;
     else if (!arg.empty() && arg[0] == '-')
       throw std::runtime_error("unknown option '" + arg + "'");
-    else if (treePath.empty())
-      treePath = arg;
+    else if (args.treePath.empty())
+      args.treePath = arg;
     else
       throw std::runtime_error("more than one tree given ('" + arg + "')");
   }
+  return args;
+}
+
+/// What unfold / decompress report, from the unfolded mesh's field data.
+struct UnfoldSummary
+{
+  std::string treePath, meshPath, picture;
+  long long inputBytes = 0, faces = 0, points = 0;
+  double quantizationError = 0.0, seconds = 0.0;
+  int openEdges = 0, nonManifold = 0, misoriented = 0;
+  int filledLoops = 0, borderLoops = 0, openLoops = 0;
+  double openLoopLength = 0.0;
+  int stitched = 0, removedProjected = 0, projectedLeft = 0, thinned = 0, foldExcess = 0;
+  int gaps = 0;
+  double gapLength = 0.0;
+  bool stitch = true, closeHoles = true, removeProjected = true, matchDensity = true;
+  bool original = false;
+  // With --original: the symmetric Hausdorff distance to it, absolute and / its diagonal.
+  double hausdorff = -1.0, hausdorffRelative = -1.0, meanRelative = -1.0, boundRelative = -1.0;
+};
+
+UnfoldSummary SummarizeUnfolding(vtkFoldingTreeUnfolder* unfolder, bool original)
+{
+  UnfoldSummary r;
+  vtkPolyData* mesh = unfolder->GetOutput();
+  r.faces = static_cast<long long>(mesh->GetNumberOfCells());
+  r.points = static_cast<long long>(mesh->GetNumberOfPoints());
+  r.openEdges = static_cast<int>(FieldValue(mesh, "OpenEdges"));
+  r.nonManifold = static_cast<int>(FieldValue(mesh, "NonManifoldEdges"));
+  r.misoriented = static_cast<int>(FieldValue(mesh, "MisorientedEdges"));
+  r.filledLoops = static_cast<int>(FieldValue(mesh, "FilledLoops"));
+  r.borderLoops = static_cast<int>(FieldValue(mesh, "BorderLoops"));
+  r.openLoops = static_cast<int>(FieldValue(mesh, "OpenLoops"));
+  r.openLoopLength = FieldValue(mesh, "OpenLoopLength");
+  r.stitched = static_cast<int>(FieldValue(mesh, "StitchedVertices"));
+  r.removedProjected = static_cast<int>(FieldValue(mesh, "RemovedProjectedPoints"));
+  r.projectedLeft = static_cast<int>(FieldValue(mesh, "ProjectedPoints"));
+  r.thinned = static_cast<int>(FieldValue(mesh, "ThinnedCopyPoints"));
+  r.foldExcess = static_cast<int>(FieldValue(mesh, "FoldExcessFaces"));
+  r.gaps = static_cast<int>(FieldValue(mesh, "OpenGapCount"));
+  r.gapLength = FieldValue(mesh, "OpenGapLength");
+  r.stitch = unfolder->GetStitch();
+  r.closeHoles = unfolder->GetCloseHoles();
+  r.removeProjected = unfolder->GetRemoveProjectedPoints();
+  r.matchDensity = unfolder->GetMatchDiscardedDensity();
+  r.original = original;
+  if (original)
+  {
+    r.hausdorff = FieldValue(mesh, "HausdorffToOriginal", -1.0);
+    r.hausdorffRelative = FieldValue(mesh, "HausdorffToOriginalRelative", -1.0);
+    r.meanRelative = FieldValue(mesh, "MeanDistanceToOriginalRelative", -1.0);
+    r.boundRelative = FieldValue(mesh, "HausdorffToOriginalBoundRelative", -1.0);
+  }
+  return r;
+}
+
+void PrintUnfoldJson(const UnfoldSummary& r)
+{
+  std::printf("{\n  \"tree\": %s,\n  \"bytes\": %lld,\n  \"quantizationError\": %.9g,\n"
+              "  \"output\": %s,\n  \"stitch\": %s,\n  \"faces\": %lld,\n"
+              "  \"points\": %lld,\n  \"removedProjectedPoints\": %d,\n"
+              "  \"projectedPoints\": %d,\n  \"thinnedCopyPoints\": %d,\n"
+              "  \"foldExcessFaces\": %d,\n  \"openEdges\": %d,\n  \"nonManifoldEdges\": %d,\n"
+              "  \"misorientedEdges\": %d,\n  \"closeHoles\": %s,\n  \"filledLoops\": %d,\n"
+              "  \"borderLoops\": %d,\n  \"openLoops\": %d,\n  \"openLoopLength\": %.9g,\n"
+              "  \"stitchedVertices\": %d,\n  \"openGapCount\": %d,\n"
+              "  \"openGapLength\": %.9g,\n  \"hausdorffToOriginal\": %.9g,\n"
+              "  \"hausdorffToOriginalRelative\": %.9g,\n"
+              "  \"hausdorffToOriginalBoundRelative\": %.9g,\n"
+              "  \"meanDistanceToOriginalRelative\": %.9g,\n  \"seconds\": %.3f,\n"
+              "  \"outputs\": {\"mesh\": %s, \"picture\": %s}\n}\n",
+    JsonString(r.treePath).c_str(),
+    r.inputBytes,
+    r.quantizationError,
+    JsonString(r.meshPath).c_str(),
+    r.stitch ? "true" : "false",
+    r.faces,
+    r.points,
+    r.removedProjected,
+    r.projectedLeft,
+    r.thinned,
+    r.foldExcess,
+    r.openEdges,
+    r.nonManifold,
+    r.misoriented,
+    r.closeHoles ? "true" : "false",
+    r.filledLoops,
+    r.borderLoops,
+    r.openLoops,
+    r.openLoopLength,
+    r.stitched,
+    r.gaps,
+    r.gapLength,
+    r.hausdorff,
+    r.hausdorffRelative,
+    r.boundRelative,
+    r.meanRelative,
+    r.seconds,
+    JsonString(r.meshPath).c_str(),
+    r.picture.empty() ? "null" : JsonString(r.picture).c_str());
+}
+
+void PrintUnfoldText(const UnfoldSummary& r)
+{
+  std::printf("tree:                    %s (%lld bytes)\n", r.treePath.c_str(), r.inputBytes);
+  if (r.quantizationError > 0)
+    std::printf("quantisation:            points moved up to %.6g (inside the bound)\n",
+      r.quantizationError);
+  std::printf("faces:                   %lld (%lld points)\n", r.faces, r.points);
+  std::printf("projected points:        %d removed, %d left%s\n",
+    r.removedProjected,
+    r.projectedLeft,
+    r.removeProjected ? "" : " (--keep-projected-points)");
+  std::printf("mirrored copies thinned: %d points removed, %d faces above the folds' regions "
+              "left%s\n",
+    r.thinned,
+    r.foldExcess,
+    r.matchDensity ? "" : " (--keep-copy-density)");
+  std::printf("open edges:              %d (non-manifold %d, misoriented %d)\n",
+    r.openEdges,
+    r.nonManifold,
+    r.misoriented);
+  std::printf("repair:                  %d loops filled, %d input border loops kept, %d gaps "
+              "left open (length %.6g)%s\n",
+    r.filledLoops,
+    r.borderLoops,
+    r.openLoops,
+    r.openLoopLength,
+    r.closeHoles && r.stitch ? "" : " (off)");
+  std::printf("stitched vertices:       %d%s\n", r.stitched, r.stitch ? "" : " (stitching off)");
+  std::printf(
+    "stitch gaps:             %d (length %.6g; before the final repair)\n", r.gaps, r.gapLength);
+  if (r.original)
+    std::printf("distance to original:    Hausdorff %.6g (%.4f of its diagonal; over whole "
+                "surfaces, proved: %.4f), mean %.5f\n",
+      r.hausdorff,
+      r.hausdorffRelative,
+      r.boundRelative,
+      r.meanRelative);
+  std::printf("time:                    %.3f s\n", r.seconds);
+  std::printf("wrote:                   %s\n", r.meshPath.c_str());
+  if (!r.picture.empty())
+    std::printf("                         %s\n", r.picture.c_str());
+}
+
+/// unfold (decompress false) and decompress (true): they differ in the input they accept
+/// and in the names of their outputs.
+int UnfoldTree(int argc, char* argv[], bool decompress)
+{
+  vtkNew<vtkFoldingTreeUnfolder> unfolder; // options not given keep the filter's defaults
+  const UnfoldArguments args = ParseUnfoldArguments(argc, argv, unfolder);
+  const std::string& treePath = args.treePath;
   if (treePath.empty())
     throw std::runtime_error(decompress ? "no .fmz file given" : "no tree given");
   if (decompress && !vtkFoldingTreeCompactReader::CanReadFile(treePath.c_str()))
@@ -206,9 +361,9 @@ int UnfoldTree(int argc, char* argv[], bool decompress)
   }
   unfolder->SetInputData(tree);
   vtkSmartPointer<vtkPolyData> original;
-  if (!originalPath.empty())
+  if (!args.originalPath.empty())
   {
-    original = foldingmeshes::ReadMesh(originalPath, error);
+    original = foldingmeshes::ReadMesh(args.originalPath, error);
     if (!original)
     {
       std::cerr << "foldingmeshes: " << error << "\n";
@@ -217,7 +372,7 @@ int UnfoldTree(int argc, char* argv[], bool decompress)
     unfolder->SetOriginalData(original);
   }
   const auto start = std::chrono::steady_clock::now();
-  if (!RunFilter(unfolder, "unfolding", quiet, error))
+  if (!RunFilter(unfolder, "unfolding", args.quiet, error))
   {
     std::cerr << "foldingmeshes: " << treePath << ": " << error << "\n";
     return 2;
@@ -227,134 +382,28 @@ int UnfoldTree(int argc, char* argv[], bool decompress)
   vtkPolyData* mesh = unfolder->GetOutput();
 
   const std::string stem = TreeStem(treePath);
-  const std::filesystem::path dir(outdir);
+  const std::filesystem::path dir(args.outdir);
   const std::string suffix = decompress ? "" : "_unfolded";
   const std::string meshPath = (dir / (stem + suffix + ".vtp")).string();
   std::string picture = (dir / (stem + suffix + ".png")).string();
-  if (!MakeOutdir(outdir, error) || !foldingmeshes::WriteMesh(mesh, meshPath, error) ||
-    !WriteCategoryPicture(mesh, "FoldingLeafId", upAxis, picture, error))
+  if (!MakeOutdir(args.outdir, error) || !foldingmeshes::WriteMesh(mesh, meshPath, error) ||
+    !WriteCategoryPicture(mesh, "FoldingLeafId", args.upAxis, picture, error))
   {
     std::cerr << "foldingmeshes: " << error << "\n";
     return 3;
   }
-  const long long faces = static_cast<long long>(mesh->GetNumberOfCells());
-  const int openEdges = static_cast<int>(FieldValue(mesh, "OpenEdges"));
-  const int nonManifold = static_cast<int>(FieldValue(mesh, "NonManifoldEdges"));
-  const int misoriented = static_cast<int>(FieldValue(mesh, "MisorientedEdges"));
-  const int filledLoops = static_cast<int>(FieldValue(mesh, "FilledLoops"));
-  const int borderLoops = static_cast<int>(FieldValue(mesh, "BorderLoops"));
-  const int openLoops = static_cast<int>(FieldValue(mesh, "OpenLoops"));
-  const double openLoopLength = FieldValue(mesh, "OpenLoopLength");
-  const int stitched = static_cast<int>(FieldValue(mesh, "StitchedVertices"));
-  const int removedProjected = static_cast<int>(FieldValue(mesh, "RemovedProjectedPoints"));
-  const int projectedLeft = static_cast<int>(FieldValue(mesh, "ProjectedPoints"));
-  const int thinned = static_cast<int>(FieldValue(mesh, "ThinnedCopyPoints"));
-  const int foldExcess = static_cast<int>(FieldValue(mesh, "FoldExcessFaces"));
-  const int gaps = static_cast<int>(FieldValue(mesh, "OpenGapCount"));
-  const double gapLength = FieldValue(mesh, "OpenGapLength");
-  const bool stitch = unfolder->GetStitch(), closeHoles = unfolder->GetCloseHoles();
-  const bool removeProjected = unfolder->GetRemoveProjectedPoints();
-  const bool matchDensity = unfolder->GetMatchDiscardedDensity();
-  // With --original: the symmetric Hausdorff distance to it, absolute and / its diagonal.
-  const double hausdorff = original ? FieldValue(mesh, "HausdorffToOriginal", -1.0) : -1.0;
-  const double hausdorffRelative =
-    original ? FieldValue(mesh, "HausdorffToOriginalRelative", -1.0) : -1.0;
-  const double meanRelative =
-    original ? FieldValue(mesh, "MeanDistanceToOriginalRelative", -1.0) : -1.0;
-  const double boundRelative =
-    original ? FieldValue(mesh, "HausdorffToOriginalBoundRelative", -1.0) : -1.0;
+  UnfoldSummary summary = SummarizeUnfolding(unfolder, original != nullptr);
+  summary.treePath = treePath;
+  summary.meshPath = meshPath;
+  summary.picture = picture;
+  summary.seconds = seconds;
   std::error_code ec;
-  const auto inputBytes = static_cast<long long>(std::filesystem::file_size(treePath, ec));
-  const double quantizationError = TreeValue(tree, "QuantizationError", 0.0);
-  if (json)
-  {
-    std::printf("{\n  \"tree\": %s,\n  \"bytes\": %lld,\n  \"quantizationError\": %.9g,\n"
-                "  \"output\": %s,\n  \"stitch\": %s,\n  \"faces\": %lld,\n"
-                "  \"points\": %lld,\n  \"removedProjectedPoints\": %d,\n"
-                "  \"projectedPoints\": %d,\n  \"thinnedCopyPoints\": %d,\n"
-                "  \"foldExcessFaces\": %d,\n  \"openEdges\": %d,\n  \"nonManifoldEdges\": %d,\n"
-                "  \"misorientedEdges\": %d,\n  \"closeHoles\": %s,\n  \"filledLoops\": %d,\n"
-                "  \"borderLoops\": %d,\n  \"openLoops\": %d,\n  \"openLoopLength\": %.9g,\n"
-                "  \"stitchedVertices\": %d,\n  \"openGapCount\": %d,\n"
-                "  \"openGapLength\": %.9g,\n  \"hausdorffToOriginal\": %.9g,\n"
-                "  \"hausdorffToOriginalRelative\": %.9g,\n"
-                "  \"hausdorffToOriginalBoundRelative\": %.9g,\n"
-                "  \"meanDistanceToOriginalRelative\": %.9g,\n  \"seconds\": %.3f,\n"
-                "  \"outputs\": {\"mesh\": %s, \"picture\": %s}\n}\n",
-      JsonString(treePath).c_str(),
-      inputBytes,
-      quantizationError,
-      JsonString(meshPath).c_str(),
-      stitch ? "true" : "false",
-      faces,
-      static_cast<long long>(mesh->GetNumberOfPoints()),
-      removedProjected,
-      projectedLeft,
-      thinned,
-      foldExcess,
-      openEdges,
-      nonManifold,
-      misoriented,
-      closeHoles ? "true" : "false",
-      filledLoops,
-      borderLoops,
-      openLoops,
-      openLoopLength,
-      stitched,
-      gaps,
-      gapLength,
-      hausdorff,
-      hausdorffRelative,
-      boundRelative,
-      meanRelative,
-      seconds,
-      JsonString(meshPath).c_str(),
-      picture.empty() ? "null" : JsonString(picture).c_str());
-  }
+  summary.inputBytes = static_cast<long long>(std::filesystem::file_size(treePath, ec));
+  summary.quantizationError = TreeValue(tree, "QuantizationError", 0.0);
+  if (args.json)
+    PrintUnfoldJson(summary);
   else
-  {
-    std::printf("tree:                    %s (%lld bytes)\n", treePath.c_str(), inputBytes);
-    if (quantizationError > 0)
-      std::printf("quantisation:            points moved up to %.6g (inside the bound)\n",
-        quantizationError);
-    std::printf("faces:                   %lld (%lld points)\n",
-      faces,
-      static_cast<long long>(mesh->GetNumberOfPoints()));
-    std::printf("projected points:        %d removed, %d left%s\n",
-      removedProjected,
-      projectedLeft,
-      removeProjected ? "" : " (--keep-projected-points)");
-    std::printf("mirrored copies thinned: %d points removed, %d faces above the folds' regions "
-                "left%s\n",
-      thinned,
-      foldExcess,
-      matchDensity ? "" : " (--keep-copy-density)");
-    std::printf("open edges:              %d (non-manifold %d, misoriented %d)\n",
-      openEdges,
-      nonManifold,
-      misoriented);
-    std::printf("repair:                  %d loops filled, %d input border loops kept, %d gaps "
-                "left open (length %.6g)%s\n",
-      filledLoops,
-      borderLoops,
-      openLoops,
-      openLoopLength,
-      closeHoles && stitch ? "" : " (off)");
-    std::printf("stitched vertices:       %d%s\n", stitched, stitch ? "" : " (stitching off)");
-    std::printf(
-      "stitch gaps:             %d (length %.6g; before the final repair)\n", gaps, gapLength);
-    if (original)
-      std::printf("distance to original:    Hausdorff %.6g (%.4f of its diagonal; over whole "
-                  "surfaces, proved: %.4f), mean %.5f\n",
-        hausdorff,
-        hausdorffRelative,
-        boundRelative,
-        meanRelative);
-    std::printf("time:                    %.3f s\n", seconds);
-    std::printf("wrote:                   %s\n", meshPath.c_str());
-    if (!picture.empty())
-      std::printf("                         %s\n", picture.c_str());
-  }
+    PrintUnfoldText(summary);
   return 0;
 }
 }
