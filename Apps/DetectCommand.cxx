@@ -24,12 +24,20 @@ namespace foldingmeshes
 {
 namespace cli
 {
-int Detect(int argc, char* argv[])
+namespace
+{
+/// What detect was asked (the detector's options go straight to the filter).
+struct DetectArguments
 {
   std::string meshPath, output, planeOutput, picture, outdir = ".";
   int upAxis = -1;
-  bool json = false, quiet = false, noFiles = false, absoluteGiven = false;
-  vtkNew<vtkSymmetryPlaneDetector> detector;
+  bool json = false, quiet = false, noFiles = false;
+};
+
+DetectArguments ParseDetectArguments(int argc, char* argv[], vtkSymmetryPlaneDetector* detector)
+{
+  DetectArguments args;
+  bool absoluteGiven = false;
   for (int i = 0; i < argc; ++i)
   {
     const std::string arg = argv[i];
@@ -84,39 +92,36 @@ int Detect(int argc, char* argv[])
     else if (arg == "--separate-parts")
       detector->ConnectNearbyPartsOff();
     else if (arg == "--output")
-      output = value("--output");
+      args.output = value("--output");
     else if (arg == "--plane-output")
-      planeOutput = value("--plane-output");
+      args.planeOutput = value("--plane-output");
     else if (arg == "--picture")
-      picture = value("--picture");
+      args.picture = value("--picture");
     else if (arg == "--up")
-      upAxis = ParseUpAxis(value("--up"));
+      args.upAxis = ParseUpAxis(value("--up"));
     else if (arg == "--outdir")
-      outdir = value("--outdir");
+      args.outdir = value("--outdir");
     else if (arg == "--no-files")
-      noFiles = true;
+      args.noFiles = true;
     else if (arg == "--json")
-      json = true;
+      args.json = true;
     else if (arg == "--quiet")
-      quiet = true;
+      args.quiet = true;
     else if (!arg.empty() && arg[0] == '-')
       throw std::runtime_error("unknown option '" + arg + "'");
-    else if (meshPath.empty())
-      meshPath = arg;
+    else if (args.meshPath.empty())
+      args.meshPath = arg;
     else
       throw std::runtime_error("more than one mesh given ('" + arg + "')");
   }
-  if (meshPath.empty())
+  if (args.meshPath.empty())
     throw std::runtime_error("no mesh given");
+  return args;
+}
 
-  std::string error;
-  vtkSmartPointer<vtkPolyData> mesh = foldingmeshes::ReadMesh(meshPath, error);
-  if (!mesh)
-  {
-    std::cerr << "foldingmeshes: " << error << "\n";
-    return 2;
-  }
-
+/// Runs the detector with error and progress observers; false with the errors printed.
+bool RunDetector(vtkSymmetryPlaneDetector* detector, const DetectArguments& args, double& seconds)
+{
   ErrorCollector errors;
   vtkNew<vtkCallbackCommand> onError;
   onError->SetCallback(&ErrorCollector::OnError);
@@ -126,113 +131,142 @@ int Detect(int argc, char* argv[])
   vtkNew<vtkCallbackCommand> onProgress;
   onProgress->SetCallback(&ProgressPrinter::OnProgress);
   onProgress->SetClientData(&progress);
-  if (!quiet)
+  if (!args.quiet)
     detector->AddObserver(vtkCommand::ProgressEvent, onProgress);
 
-  detector->SetInputData(mesh);
   const auto start = std::chrono::steady_clock::now();
   const int ok = detector->GetExecutive()->Update();
-  const double seconds =
-    std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  if (!quiet)
+  seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  if (!args.quiet)
     std::fprintf(stderr, "\n");
   if (!ok || !errors.messages.empty())
   {
-    std::cerr << "foldingmeshes: " << meshPath << ": "
+    std::cerr << "foldingmeshes: " << args.meshPath << ": "
               << (errors.messages.empty() ? "symmetry detection failed" : errors.messages);
     if (errors.messages.empty() || errors.messages.back() != '\n')
       std::cerr << "\n";
-    return 2;
+    return false;
   }
+  return true;
+}
 
-  const std::string stem = std::filesystem::path(meshPath).stem().string();
-  const std::filesystem::path dir(outdir);
-  if (!noFiles)
+/// Writes the region, the plane glyph and the picture (default names in the outdir); false
+/// with the error printed.
+bool WriteDetectOutputs(vtkSymmetryPlaneDetector* detector, DetectArguments& args)
+{
+  const std::string stem = std::filesystem::path(args.meshPath).stem().string();
+  const std::filesystem::path dir(args.outdir);
+  std::string error;
+  std::error_code ec;
+  std::filesystem::create_directories(dir, ec);
+  if (args.output.empty())
+    args.output = (dir / (stem + "_symmetry.vtp")).string();
+  if (args.planeOutput.empty())
+    args.planeOutput = (dir / (stem + "_plane.vtp")).string();
+  if (args.picture.empty())
+    args.picture = (dir / (stem + "_symmetry.png")).string();
+  if (!foldingmeshes::WriteMesh(detector->GetOutput(0), args.output, error) ||
+    !foldingmeshes::WriteMesh(detector->GetOutput(1), args.planeOutput, error))
   {
-    std::error_code ec;
-    std::filesystem::create_directories(dir, ec);
-    if (output.empty())
-      output = (dir / (stem + "_symmetry.vtp")).string();
-    if (planeOutput.empty())
-      planeOutput = (dir / (stem + "_plane.vtp")).string();
-    if (picture.empty())
-      picture = (dir / (stem + "_symmetry.png")).string();
-    if (!foldingmeshes::WriteMesh(detector->GetOutput(0), output, error) ||
-      !foldingmeshes::WriteMesh(detector->GetOutput(1), planeOutput, error))
-    {
-      std::cerr << "foldingmeshes: " << error << "\n";
-      return 3;
-    }
-    if (!std::getenv("DISPLAY"))
-    {
-      std::cerr << "foldingmeshes: no display, picture skipped (run under xvfb-run -a)\n";
-      picture.clear();
-    }
-    else
-    {
-      auto window =
-        foldingmeshes::MakeSymmetryScene(detector->GetOutput(0), detector->GetOutput(1), 800, 600, upAxis);
-      if (!foldingmeshes::WritePicture(window, picture, error))
-      {
-        std::cerr << "foldingmeshes: " << error << "\n";
-        return 3;
-      }
-    }
+    std::cerr << "foldingmeshes: " << error << "\n";
+    return false;
   }
+  if (!std::getenv("DISPLAY"))
+  {
+    std::cerr << "foldingmeshes: no display, picture skipped (run under xvfb-run -a)\n";
+    args.picture.clear();
+    return true;
+  }
+  auto window = foldingmeshes::MakeSymmetryScene(
+    detector->GetOutput(0), detector->GetOutput(1), 800, 600, args.upAxis);
+  if (!foldingmeshes::WritePicture(window, args.picture, error))
+  {
+    std::cerr << "foldingmeshes: " << error << "\n";
+    return false;
+  }
+  return true;
+}
 
+void PrintDetectJson(vtkSymmetryPlaneDetector* detector, const DetectArguments& args, double seconds)
+{
   const double* o = detector->GetPlaneOrigin();
   const double* n = detector->GetPlaneNormal();
   const vtkIdType faces = detector->GetOutput(0)->GetNumberOfCells();
-  if (json)
+  std::printf("{\n  \"mesh\": %s,\n  \"faces\": %lld,\n  \"tolerance\": %.9g,\n"
+              "  \"plane\": {\"origin\": [%.9g, %.9g, %.9g], \"normal\": [%.9g, %.9g, %.9g]},\n"
+              "  \"symmetricAreaFraction\": %.6f,\n  \"symmetryFound\": %s,\n"
+              "  \"iterations\": {\"coarse\": %d, \"fine\": %d},\n  \"seconds\": %.3f",
+    JsonString(args.meshPath).c_str(),
+    static_cast<long long>(faces),
+    detector->GetToleranceLength(),
+    o[0],
+    o[1],
+    o[2],
+    n[0],
+    n[1],
+    n[2],
+    detector->GetSymmetricAreaFraction(),
+    detector->GetSymmetryFound() ? "true" : "false",
+    detector->GetCoarseIterations(),
+    detector->GetFineIterations(),
+    seconds);
+  if (!args.noFiles)
+    std::printf(",\n  \"outputs\": {\"mesh\": %s, \"plane\": %s, \"picture\": %s}",
+      JsonString(args.output).c_str(),
+      JsonString(args.planeOutput).c_str(),
+      args.picture.empty() ? "null" : JsonString(args.picture).c_str());
+  std::printf("\n}\n");
+}
+
+void PrintDetectText(vtkSymmetryPlaneDetector* detector, const DetectArguments& args, double seconds)
+{
+  const double* o = detector->GetPlaneOrigin();
+  const double* n = detector->GetPlaneNormal();
+  const vtkIdType faces = detector->GetOutput(0)->GetNumberOfCells();
+  std::printf("mesh:                    %s (%lld faces)\n",
+    args.meshPath.c_str(),
+    static_cast<long long>(faces));
+  std::printf("tolerance (epsilon):     %.6g\n", detector->GetToleranceLength());
+  std::printf("plane origin:            %.6g %.6g %.6g\n", o[0], o[1], o[2]);
+  std::printf("plane normal:            %.6f %.6f %.6f\n", n[0], n[1], n[2]);
+  std::printf("symmetric area fraction: %.1f%%\n", 100.0 * detector->GetSymmetricAreaFraction());
+  std::printf("symmetry found:          %s\n", detector->GetSymmetryFound() ? "yes" : "no");
+  std::printf("iterations:              %d coarse, %d fine\n",
+    detector->GetCoarseIterations(),
+    detector->GetFineIterations());
+  std::printf("time:                    %.3f s\n", seconds);
+  if (!args.noFiles)
   {
-    std::printf("{\n  \"mesh\": %s,\n  \"faces\": %lld,\n  \"tolerance\": %.9g,\n"
-                "  \"plane\": {\"origin\": [%.9g, %.9g, %.9g], \"normal\": [%.9g, %.9g, %.9g]},\n"
-                "  \"symmetricAreaFraction\": %.6f,\n  \"symmetryFound\": %s,\n"
-                "  \"iterations\": {\"coarse\": %d, \"fine\": %d},\n  \"seconds\": %.3f",
-      JsonString(meshPath).c_str(),
-      static_cast<long long>(faces),
-      detector->GetToleranceLength(),
-      o[0],
-      o[1],
-      o[2],
-      n[0],
-      n[1],
-      n[2],
-      detector->GetSymmetricAreaFraction(),
-      detector->GetSymmetryFound() ? "true" : "false",
-      detector->GetCoarseIterations(),
-      detector->GetFineIterations(),
-      seconds);
-    if (!noFiles)
-      std::printf(",\n  \"outputs\": {\"mesh\": %s, \"plane\": %s, \"picture\": %s}",
-        JsonString(output).c_str(),
-        JsonString(planeOutput).c_str(),
-        picture.empty() ? "null" : JsonString(picture).c_str());
-    std::printf("\n}\n");
+    std::printf("wrote:                   %s\n                         %s\n",
+      args.output.c_str(),
+      args.planeOutput.c_str());
+    if (!args.picture.empty())
+      std::printf("                         %s\n", args.picture.c_str());
   }
+}
+}
+
+int Detect(int argc, char* argv[])
+{
+  vtkNew<vtkSymmetryPlaneDetector> detector;
+  DetectArguments args = ParseDetectArguments(argc, argv, detector);
+  std::string error;
+  vtkSmartPointer<vtkPolyData> mesh = foldingmeshes::ReadMesh(args.meshPath, error);
+  if (!mesh)
+  {
+    std::cerr << "foldingmeshes: " << error << "\n";
+    return 2;
+  }
+  detector->SetInputData(mesh);
+  double seconds = 0.0;
+  if (!RunDetector(detector, args, seconds))
+    return 2;
+  if (!args.noFiles && !WriteDetectOutputs(detector, args))
+    return 3;
+  if (args.json)
+    PrintDetectJson(detector, args, seconds);
   else
-  {
-    std::printf("mesh:                    %s (%lld faces)\n",
-      meshPath.c_str(),
-      static_cast<long long>(faces));
-    std::printf("tolerance (epsilon):     %.6g\n", detector->GetToleranceLength());
-    std::printf("plane origin:            %.6g %.6g %.6g\n", o[0], o[1], o[2]);
-    std::printf("plane normal:            %.6f %.6f %.6f\n", n[0], n[1], n[2]);
-    std::printf("symmetric area fraction: %.1f%%\n", 100.0 * detector->GetSymmetricAreaFraction());
-    std::printf("symmetry found:          %s\n", detector->GetSymmetryFound() ? "yes" : "no");
-    std::printf("iterations:              %d coarse, %d fine\n",
-      detector->GetCoarseIterations(),
-      detector->GetFineIterations());
-    std::printf("time:                    %.3f s\n", seconds);
-    if (!noFiles)
-    {
-      std::printf("wrote:                   %s\n                         %s\n",
-        output.c_str(),
-        planeOutput.c_str());
-      if (!picture.empty())
-        std::printf("                         %s\n", picture.c_str());
-    }
-  }
+    PrintDetectText(detector, args, seconds);
   return 0;
 }
 }
