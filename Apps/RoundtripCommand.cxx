@@ -17,6 +17,133 @@ namespace foldingmeshes
 {
 namespace cli
 {
+namespace
+{
+/// What roundtrip measures of the unfolded mesh against the (triangulated) input.
+struct RoundtripResult
+{
+  std::string meshPath, treePath, unfoldedPath;
+  double diagonal = 0.0, epsilon = 0.0, hausdorff = 0.0, mean = 0.0, bound = 0.0;
+  bool within = false;
+  EdgeCounts before, after;
+  long long unfoldedFaces = 0;
+  int removedProjected = 0, thinned = 0, original = 0, stored = 0, height = 0, gaps = 0;
+  double compression = 0.0, foldSeconds = 0.0, unfoldSeconds = 0.0;
+  double Scale() const { return this->diagonal > 0 ? 1.0 / this->diagonal : 0.0; }
+};
+
+RoundtripResult MeasureRoundtrip(vtkPolyData* input, vtkPolyData* unfolded, vtkMultiBlockDataSet* tree)
+{
+  RoundtripResult r;
+  double bounds[6];
+  input->GetBounds(bounds);
+  r.diagonal = std::sqrt((bounds[1] - bounds[0]) * (bounds[1] - bounds[0]) +
+    (bounds[3] - bounds[2]) * (bounds[3] - bounds[2]) +
+    (bounds[5] - bounds[4]) * (bounds[5] - bounds[4]));
+  foldingmeshes::SymmetricSurfaceDistance(input, unfolded, r.hausdorff, r.mean);
+  r.epsilon = TreeValue(tree, "RootEpsilon");
+  // Over every point of both surfaces: a proved bound within 1e-5 of the diagonal, and whether
+  // it is within epsilon decided to 1e-7 of the diagonal.
+  const foldingmeshes::ProvedDistance proved = foldingmeshes::ProvedSurfaceDistance(
+    input, unfolded, 1e-5 * r.diagonal, r.epsilon, 1e-7 * r.diagonal);
+  r.bound = proved.upper;
+  r.within = proved.within > 0;
+  r.before = foldingmeshes::CountEdges(input);
+  r.after = foldingmeshes::CountEdges(unfolded);
+  r.unfoldedFaces = static_cast<long long>(unfolded->GetNumberOfCells());
+  r.removedProjected = static_cast<int>(FieldValue(unfolded, "RemovedProjectedPoints"));
+  r.thinned = static_cast<int>(FieldValue(unfolded, "ThinnedCopyPoints"));
+  r.gaps = static_cast<int>(FieldValue(unfolded, "OpenGapCount"));
+  r.original = static_cast<int>(TreeValue(tree, "OriginalFaces"));
+  r.stored = static_cast<int>(TreeValue(tree, "StoredFaces"));
+  r.compression = TreeValue(tree, "Compression");
+  r.height = static_cast<int>(TreeValue(tree, "TreeHeight"));
+  return r;
+}
+
+void PrintRoundtripJson(const RoundtripResult& r)
+{
+  const double scale = r.Scale();
+  std::printf("{\n  \"mesh\": %s,\n  \"originalFaces\": %d,\n  \"storedFaces\": %d,\n"
+              "  \"compression\": %.6f,\n  \"treeHeight\": %d,\n  \"unfoldedFaces\": %lld,\n"
+              "  \"originalVertices\": %lld,\n  \"unfoldedVertices\": %lld,\n"
+              "  \"removedProjectedPoints\": %d,\n  \"thinnedCopyPoints\": %d,\n"
+              "  \"diagonal\": %.9g,\n  \"rootEpsilon\": %.9g,\n"
+              "  \"rootEpsilonFraction\": %.9g,\n  \"hausdorff\": %.9g,\n"
+              "  \"hausdorffFraction\": %.9g,\n  \"hausdorffBoundFraction\": %.9g,\n"
+              "  \"meanDistanceFraction\": %.9g,\n"
+              "  \"withinBound\": %s,\n  \"openEdgesBefore\": %lld,\n"
+              "  \"openEdgesAfter\": %lld,\n  \"openGapCount\": %d,\n"
+              "  \"foldSeconds\": %.3f,\n  \"unfoldSeconds\": %.3f,\n"
+              "  \"outputs\": {\"tree\": %s, \"unfolded\": %s}\n}\n",
+    JsonString(r.meshPath).c_str(),
+    r.original,
+    r.stored,
+    r.compression,
+    r.height,
+    r.unfoldedFaces,
+    r.before.vertices,
+    r.after.vertices,
+    r.removedProjected,
+    r.thinned,
+    r.diagonal,
+    r.epsilon,
+    r.epsilon * scale,
+    r.hausdorff,
+    r.hausdorff * scale,
+    r.bound * scale,
+    r.mean * scale,
+    r.within ? "true" : "false",
+    static_cast<long long>(r.before.open),
+    static_cast<long long>(r.after.open),
+    r.gaps,
+    r.foldSeconds,
+    r.unfoldSeconds,
+    JsonString(r.treePath).c_str(),
+    JsonString(r.unfoldedPath).c_str());
+}
+
+void PrintRoundtripText(const RoundtripResult& r, const FoldSettings& f)
+{
+  const double scale = r.Scale();
+  const long long before = r.before.vertices, after = r.after.vertices;
+  std::printf("mesh:                    %s\n", r.meshPath.c_str());
+  std::printf("faces:                   %d original, %d stored (%.1f%% compression), "
+              "%lld unfolded\n",
+    r.original,
+    r.stored,
+    100.0 * r.compression,
+    r.unfoldedFaces);
+  std::printf("vertices:                %lld original, %lld unfolded (%+.1f%%; %d projected "
+              "points removed%s, %d removed from mirrored copies%s)\n",
+    before,
+    after,
+    before > 0 ? 100.0 * (after - before) / before : 0.0,
+    r.removedProjected,
+    f.keepProjectedPoints ? " (--keep-projected-points)" : "",
+    r.thinned,
+    f.keepCopyDensity ? " (--keep-copy-density)" : "");
+  std::printf("tree height:             %d\n", r.height);
+  std::printf("hausdorff / diagonal:    %.6f max, %.6f mean at vertices and centroids; %.6f "
+              "over whole surfaces, proved (bound: root epsilon %.6f) %s\n",
+    r.hausdorff * scale,
+    r.mean * scale,
+    r.bound * scale,
+    r.epsilon * scale,
+    r.within ? "ok" : "VIOLATED");
+  std::printf(
+    "open edges:              %lld before, %lld after (%d stitch gaps before the repair)\n",
+    static_cast<long long>(r.before.open),
+    static_cast<long long>(r.after.open),
+    r.gaps);
+  std::printf(
+    "time:                    fold %.3f s, unfold %.3f s\n", r.foldSeconds, r.unfoldSeconds);
+  std::printf("wrote:                   %s\n                         %s\n",
+    r.treePath.c_str(),
+    r.unfoldedPath.c_str());
+}
+}
+
 int Roundtrip(int argc, char* argv[])
 {
   const FoldSettings f = ParseFoldArguments(argc, argv);
@@ -81,107 +208,18 @@ int Roundtrip(int argc, char* argv[])
     return 3;
   }
 
-  double bounds[6];
-  input->GetBounds(bounds);
-  const double diagonal = std::sqrt((bounds[1] - bounds[0]) * (bounds[1] - bounds[0]) +
-    (bounds[3] - bounds[2]) * (bounds[3] - bounds[2]) +
-    (bounds[5] - bounds[4]) * (bounds[5] - bounds[4]));
-  double hausdorff = 0.0, mean = 0.0;
-  foldingmeshes::SymmetricSurfaceDistance(input, unfolded, hausdorff, mean);
-  const double epsilon = TreeValue(tree, "RootEpsilon");
-  // Over every point of both surfaces: a proved bound within 1e-5 of the diagonal, and whether
-  // it is within epsilon decided to 1e-7 of the diagonal.
-  const foldingmeshes::ProvedDistance proved = foldingmeshes::ProvedSurfaceDistance(
-    input, unfolded, 1e-5 * diagonal, epsilon, 1e-7 * diagonal);
-  const double bound = proved.upper;
-  const bool within = proved.within > 0;
-  const foldingmeshes::EdgeCounts before = foldingmeshes::CountEdges(input),
-                                  after = foldingmeshes::CountEdges(unfolded);
-  const long long openBefore = before.open, openAfter = after.open;
-  const int removedProjected = static_cast<int>(FieldValue(unfolded, "RemovedProjectedPoints"));
-  const int thinned = static_cast<int>(FieldValue(unfolded, "ThinnedCopyPoints"));
-  const double scale = diagonal > 0 ? 1.0 / diagonal : 0.0;
-  const int original = static_cast<int>(TreeValue(tree, "OriginalFaces"));
-  const int stored = static_cast<int>(TreeValue(tree, "StoredFaces"));
-  const double compression = TreeValue(tree, "Compression");
-  const int height = static_cast<int>(TreeValue(tree, "TreeHeight"));
+  RoundtripResult r = MeasureRoundtrip(input, unfolded, tree);
+  r.meshPath = f.meshPath;
+  r.treePath = treePath;
+  r.unfoldedPath = unfoldedPath;
+  r.foldSeconds = foldSeconds;
+  r.unfoldSeconds = unfoldSeconds;
   if (f.json)
-  {
-    std::printf("{\n  \"mesh\": %s,\n  \"originalFaces\": %d,\n  \"storedFaces\": %d,\n"
-                "  \"compression\": %.6f,\n  \"treeHeight\": %d,\n  \"unfoldedFaces\": %lld,\n"
-                "  \"originalVertices\": %lld,\n  \"unfoldedVertices\": %lld,\n"
-                "  \"removedProjectedPoints\": %d,\n  \"thinnedCopyPoints\": %d,\n"
-                "  \"diagonal\": %.9g,\n  \"rootEpsilon\": %.9g,\n"
-                "  \"rootEpsilonFraction\": %.9g,\n  \"hausdorff\": %.9g,\n"
-                "  \"hausdorffFraction\": %.9g,\n  \"hausdorffBoundFraction\": %.9g,\n"
-                "  \"meanDistanceFraction\": %.9g,\n"
-                "  \"withinBound\": %s,\n  \"openEdgesBefore\": %lld,\n"
-                "  \"openEdgesAfter\": %lld,\n  \"openGapCount\": %d,\n"
-                "  \"foldSeconds\": %.3f,\n  \"unfoldSeconds\": %.3f,\n"
-                "  \"outputs\": {\"tree\": %s, \"unfolded\": %s}\n}\n",
-      JsonString(f.meshPath).c_str(),
-      original,
-      stored,
-      compression,
-      height,
-      static_cast<long long>(unfolded->GetNumberOfCells()),
-      before.vertices,
-      after.vertices,
-      removedProjected,
-      thinned,
-      diagonal,
-      epsilon,
-      epsilon * scale,
-      hausdorff,
-      hausdorff * scale,
-      bound * scale,
-      mean * scale,
-      within ? "true" : "false",
-      openBefore,
-      openAfter,
-      static_cast<int>(FieldValue(unfolded, "OpenGapCount")),
-      foldSeconds,
-      unfoldSeconds,
-      JsonString(treePath).c_str(),
-      JsonString(unfoldedPath).c_str());
-  }
+    PrintRoundtripJson(r);
   else
-  {
-    std::printf("mesh:                    %s\n", f.meshPath.c_str());
-    std::printf("faces:                   %d original, %d stored (%.1f%% compression), "
-                "%lld unfolded\n",
-      original,
-      stored,
-      100.0 * compression,
-      static_cast<long long>(unfolded->GetNumberOfCells()));
-    std::printf("vertices:                %lld original, %lld unfolded (%+.1f%%; %d projected "
-                "points removed%s, %d removed from mirrored copies%s)\n",
-      before.vertices,
-      after.vertices,
-      before.vertices > 0 ? 100.0 * (after.vertices - before.vertices) / before.vertices : 0.0,
-      removedProjected,
-      f.keepProjectedPoints ? " (--keep-projected-points)" : "",
-      thinned,
-      f.keepCopyDensity ? " (--keep-copy-density)" : "");
-    std::printf("tree height:             %d\n", height);
-    std::printf("hausdorff / diagonal:    %.6f max, %.6f mean at vertices and centroids; %.6f "
-                "over whole surfaces, proved (bound: root epsilon %.6f) %s\n",
-      hausdorff * scale,
-      mean * scale,
-      bound * scale,
-      epsilon * scale,
-      within ? "ok" : "VIOLATED");
-    std::printf(
-      "open edges:              %lld before, %lld after (%d stitch gaps before the repair)\n",
-      openBefore,
-      openAfter,
-      static_cast<int>(FieldValue(unfolded, "OpenGapCount")));
-    std::printf(
-      "time:                    fold %.3f s, unfold %.3f s\n", foldSeconds, unfoldSeconds);
-    std::printf("wrote:                   %s\n                         %s\n",
-      treePath.c_str(),
-      unfoldedPath.c_str());
-  }
+    PrintRoundtripText(r, f);
+  const bool within = r.within;
+  const double bound = r.bound, epsilon = r.epsilon;
   if (!within)
   {
     std::cerr << "foldingmeshes: " << f.meshPath << ": Hausdorff distance up to " << bound
