@@ -41,6 +41,90 @@ double StarArea(const Piece& piece, const VertexRemover& remover, int v)
     }
   return area;
 }
+
+/**
+ * What the thinning at a folding node may touch: the points of the copy mirrored there that
+ * no later step needs as they are. Every other point is fixed (the kept half, the fold
+ * line), and no new edge joins two fixed points, so the fold line keeps its edges.
+ */
+struct ThinningScope
+{
+  std::vector<char> mirrored; ///< per copy: mirrored at this node
+  std::vector<char> fixed;    ///< per point: not the copy's
+  std::vector<char> open;     ///< per point: on an open edge
+  std::vector<const Plane*> planesAbove;
+  double tolerance = 0.0;
+
+  ThinningScope(const FoldingTree& tree,
+    const FoldingNode& node,
+    const std::vector<UnfoldCopy>& copies,
+    const Piece& piece,
+    double planeTolerance)
+    : tolerance(planeTolerance * tree.diagonal)
+  {
+    const uint64_t bit = uint64_t(1) << node.depth;
+    for (const UnfoldCopy& copy : copies)
+      this->mirrored.push_back((copy.mirrorMask & bit) != 0);
+    const int n = piece.NumberOfPoints();
+    this->fixed.assign(n, 1);
+    for (int v = 0; v < n; ++v)
+      this->fixed[v] = !this->mirrored[piece.pointCopy[v]];
+    this->open = BorderPoints(piece.triangles, piece.points.size());
+    for (int a = node.parent; a >= 0; a = tree.nodes[a].parent)
+      if (tree.nodes[a].kind == FoldingNodeKind::Folding)
+        this->planesAbove.push_back(&tree.nodes[a].plane);
+  }
+
+  bool MirroredHere(int copy) const { return this->mirrored[copy] != 0; }
+
+  /// A point no later step needs as it is: not on an open edge (a seam stitched later, the
+  /// input's border), no pending tear or fold-line flag (MirroredFlag), not flagged as on the
+  /// input's border, not on a plane of a fold above.
+  bool IsFree(const Piece& piece, int v) const
+  {
+    if (this->open[v] || !piece.tear[v].empty() || piece.border[v] == 1)
+      return false;
+    for (const Plane* p : this->planesAbove)
+      if (std::abs(p->SignedDistance(piece.points[v])) <= this->tolerance)
+        return false;
+    return true;
+  }
+};
+
+/// Points used by a face.
+int UsedPoints(const Piece& piece)
+{
+  std::vector<char> used(piece.points.size(), 0);
+  for (const Triangle& t : piece.triangles)
+    for (int v : t)
+      used[v] = 1;
+  return static_cast<int>(std::count(used.begin(), used.end(), char(1)));
+}
+
+/// Drops the removed points; the points whose budget was `unknown` get none again, and
+/// `added` (optional) is compacted with the points. Returns the points removed.
+int CompactThinned(VertexRemover& remover,
+  Piece& piece,
+  const std::vector<char>& unknown,
+  std::vector<char>* added)
+{
+  const size_t n = unknown.size();
+  // Bit 0: the budget was unknown; bit 1: the point is flagged in `added`.
+  std::vector<char> flags(n, 0);
+  for (size_t v = 0; v < n; ++v)
+    flags[v] = static_cast<char>(unknown[v] | (added && (*added)[v] ? 2 : 0));
+  const int removed = remover.Compact(&flags);
+  if (added)
+    added->resize(flags.size());
+  for (size_t v = 0; v < flags.size(); ++v)
+  {
+    if (flags[v] & 1)
+      piece.budget[v] = std::numeric_limits<double>::infinity();
+    if (added)
+      (*added)[v] = (flags[v] & 2) ? 1 : 0;
+  }
+  return removed;
+}
 } // namespace
 
 int Unfolder::FoldExcessFaces(const FoldingNode& node, const Piece& piece)
@@ -82,32 +166,13 @@ int Unfolder::MatchDiscardedDensity(const FoldingNode& node,
       trace(line);
     return 0;
   }
-  const uint64_t bit = uint64_t(1) << node.depth;
   const int n = piece.NumberOfPoints();
-  auto mirroredHere = [&](int copy) { return (this->Result.copies[copy].mirrorMask & bit) != 0; };
-  // Fixed: every point but the copy's (the kept half, the fold line). No new edge joins two
-  // of them, so the fold line keeps its edges.
-  std::vector<char> fixed(n, 1);
-  for (int v = 0; v < n; ++v)
-    fixed[v] = !mirroredHere(piece.pointCopy[v]);
-  const std::vector<char> open = BorderPoints(piece.triangles, piece.points.size());
-  std::vector<const Plane*> planesAbove;
-  for (int a = node.parent; a >= 0; a = this->Tree.nodes[a].parent)
-    if (this->Tree.nodes[a].kind == FoldingNodeKind::Folding)
-      planesAbove.push_back(&this->Tree.nodes[a].plane);
-  const double tolerance = this->Options.planeTolerance * this->Tree.diagonal;
-  // A point no later step needs as it is: not on an open edge (a seam stitched later, the
-  // input's border), no pending tear or fold-line flag (MirroredFlag), not flagged as on the
-  // input's border, not on a plane of a fold above.
-  auto isFree = [&](int v)
-  {
-    if (open[v] || !piece.tear[v].empty() || piece.border[v] == 1)
-      return false;
-    for (const Plane* p : planesAbove)
-      if (std::abs(p->SignedDistance(piece.points[v])) <= tolerance)
-        return false;
-    return true;
-  };
+  const ThinningScope scope(
+    this->Tree, node, this->Result.copies, piece, this->Options.planeTolerance);
+  const std::vector<char>& fixed = scope.fixed;
+  const double tolerance = scope.tolerance;
+  auto mirroredHere = [&](int copy) { return scope.MirroredHere(copy); };
+  auto isFree = [&](int v) { return scope.IsFree(piece, v); };
   // Points the final repair added (fan centres) are not the copy's.
   std::vector<char> candidate(n, 0);
   for (int v = 0; v < n; ++v)
@@ -176,14 +241,7 @@ int Unfolder::MatchDiscardedDensity(const FoldingNode& node,
   for (int v = 0; v < n; ++v)
     if (candidate[v])
       queue.push({ StarArea(piece, remover, v) / meanArea, v, 0 });
-  int usedPoints = 0;
-  {
-    std::vector<char> used(n, 0);
-    for (const Triangle& t : piece.triangles)
-      for (int v : t)
-        used[v] = 1;
-    usedPoints = static_cast<int>(std::count(used.begin(), used.end(), char(1)));
-  }
+  int usedPoints = UsedPoints(piece);
   std::vector<int> ring;
   while (!queue.empty() && excess >= 2 && usedPoints > pointFloor)
   {
@@ -210,21 +268,7 @@ int Unfolder::MatchDiscardedDensity(const FoldingNode& node,
   if (trace)
     trace(
       line + FormatTrace(": removed %d points, %d faces above S left", remover.Count(), excess));
-  // Bit 0: the budget was unknown; bit 1: the point is flagged in `added`.
-  std::vector<char> flags(n, 0);
-  for (int v = 0; v < n; ++v)
-    flags[v] = static_cast<char>(unknown[v] | (added && (*added)[v] ? 2 : 0));
-  const int removed = remover.Compact(&flags);
-  if (added)
-    added->resize(flags.size());
-  for (size_t v = 0; v < flags.size(); ++v)
-  {
-    if (flags[v] & 1)
-      piece.budget[v] = std::numeric_limits<double>::infinity();
-    if (added)
-      (*added)[v] = (flags[v] & 2) ? 1 : 0;
-  }
-  return removed;
+  return CompactThinned(remover, piece, unknown, added);
 }
 } // namespace unfolder_detail
 } // namespace foldingmeshes
