@@ -151,10 +151,240 @@ int Unfolder::Zip(Piece& out,
   return zipped;
 }
 
+namespace
+{
+constexpr int MaximumGapLoop = 256;
+
+/// Unfolder::FillSeamGaps' state: the piece's edges and faces as the fills grow.
+class SeamGapFiller
+{
+public:
+  SeamGapFiller(Piece& out,
+    std::vector<int>& faceChild,
+    const std::vector<std::vector<int>>& children,
+    const std::vector<char>& isTear,
+    double tol,
+    SeamReport& seam)
+    : Out(out)
+    , FaceChild(faceChild)
+    , Children(children)
+    , IsTear(isTear)
+    , Tol(tol)
+    , Seam(seam)
+  {
+    for (int f = 0; f < out.NumberOfFaces(); ++f)
+    {
+      const Triangle& t = out.triangles[f];
+      this->FaceSets.insert(Sorted(t));
+      for (int k = 0; k < 3; ++k)
+      {
+        const int a = t[k], b = t[(k + 1) % 3];
+        this->HalfEdges[{ a, b }] = f;
+        ++this->Uses[{ std::min(a, b), std::max(a, b) }];
+      }
+    }
+  }
+
+  void Run()
+  {
+    std::vector<std::pair<int, int>> holes;
+    for (const auto& h : this->HalfEdges)
+      if (this->IsOpen(h.first.first, h.first.second))
+        holes.push_back({ h.first.second, h.first.first });
+    for (const auto& first : holes)
+    {
+      if (this->VisitedHoles.count(first))
+        continue;
+      std::vector<int> loop;
+      if (!this->TraceLoop(first, loop) || !this->IsNarrowSeamLoop(loop))
+        continue;
+      std::vector<Triangle> added;
+      std::vector<int> addedFace;
+      if (this->Triangulate(loop, added, addedFace))
+        this->Append(loop, added, addedFace);
+    }
+  }
+
+private:
+  static std::array<int, 3> Sorted(const Triangle& t)
+  {
+    std::array<int, 3> key{ t[0], t[1], t[2] };
+    std::sort(key.begin(), key.end());
+    return key;
+  }
+  bool IsOpen(int a, int b) { return this->Uses[{ std::min(a, b), std::max(a, b) }] == 1; }
+
+  /// Arrived at b by the hole edge a -> b (face half-edge b -> a): the next hole edge found
+  /// by turning around b through its faces, so each gap at a pinch vertex is its own loop.
+  int NextHole(int a, int b)
+  {
+    auto it = this->HalfEdges.find({ b, a });
+    for (int guard = 0; it != this->HalfEdges.end() && guard < 64; ++guard)
+    {
+      const Triangle& t = this->Out.triangles[it->second];
+      int k = 0;
+      while (t[(k + 1) % 3] != b)
+        ++k;
+      const int y = t[k]; // half-edge y -> b in this face
+      if (this->IsOpen(y, b))
+        return y;
+      it = this->HalfEdges.find({ b, y });
+    }
+    return -1;
+  }
+
+  /// The boundary loop from hole edge `first`, along hole half-edges (the reverses of open
+  /// face half-edges); true when it closes, is simple and has 3..MaximumGapLoop vertices.
+  bool TraceLoop(const std::pair<int, int>& first, std::vector<int>& loop)
+  {
+    std::pair<int, int> edge = first;
+    bool closed = false;
+    while (static_cast<int>(loop.size()) <= MaximumGapLoop)
+    {
+      if (this->VisitedHoles.count(edge))
+      {
+        closed = edge == first && !loop.empty();
+        break;
+      }
+      this->VisitedHoles.insert(edge);
+      loop.push_back(edge.first);
+      const int nx = this->NextHole(edge.first, edge.second);
+      if (nx < 0)
+        break;
+      edge = { edge.second, nx };
+    }
+    std::vector<int> sortedLoop = loop;
+    std::sort(sortedLoop.begin(), sortedLoop.end());
+    const bool simple =
+      std::adjacent_find(sortedLoop.begin(), sortedLoop.end()) == sortedLoop.end();
+    const int n = static_cast<int>(loop.size());
+    return closed && simple && n >= 3 && n <= MaximumGapLoop;
+  }
+
+  /// A seam loop (two children, at least half tear vertices) whose every vertex has a vertex
+  /// of another child on the loop within 2 * max(tol, mean loop edge).
+  bool IsNarrowSeamLoop(const std::vector<int>& loop) const
+  {
+    const std::vector<std::vector<int>>& children = this->Children;
+    const int n = static_cast<int>(loop.size());
+    std::vector<int> kids;
+    int tears = 0;
+    double perimeter = 0.0;
+    for (int i = 0; i < n; ++i)
+    {
+      kids.insert(kids.end(), children[loop[i]].begin(), children[loop[i]].end());
+      tears += this->IsTear[loop[i]];
+      perimeter += (this->Out.points[loop[i]] - this->Out.points[loop[(i + 1) % n]]).norm();
+    }
+    std::sort(kids.begin(), kids.end());
+    kids.erase(std::unique(kids.begin(), kids.end()), kids.end());
+    if (kids.size() < 2 || 2 * tears < n)
+      return false;
+    const double reach = 2.0 * std::max(this->Tol, perimeter / n);
+    bool narrow = true;
+    for (int i = 0; i < n && narrow; ++i)
+    {
+      bool near = children[loop[i]].size() > 1; // a stitched vertex: on both sides
+      for (int j = 0; j < n && !near; ++j)
+      {
+        if (i == j)
+          continue;
+        bool other = false;
+        for (int c : children[loop[j]])
+          other =
+            other || !std::binary_search(children[loop[i]].begin(), children[loop[i]].end(), c);
+        near = other && (this->Out.points[loop[i]] - this->Out.points[loop[j]]).norm() <= reach;
+      }
+      narrow = near;
+    }
+    return narrow;
+  }
+
+  /// Ear clipping (the ear with the shortest new diagonal, not an existing edge), kept when
+  /// it closes the loop with a new face and stays within the tolerance; else the diagonals
+  /// it counted are taken back.
+  bool Triangulate(const std::vector<int>& loop,
+    std::vector<Triangle>& added,
+    std::vector<int>& addedFace)
+  {
+    std::vector<int> poly = loop;
+    ClipShortestEars(
+      this->Out.points,
+      poly,
+      [&](int a, int c) { return !this->Uses.count({ std::min(a, c), std::max(a, c) }); },
+      [&](int a, int b, int c)
+      {
+        added.push_back({ a, b, c });
+        addedFace.push_back(this->HalfEdges.count({ b, a }) ? this->HalfEdges[{ b, a }] : -1);
+        ++this->Uses[{ std::min(a, c), std::max(a, c) }];
+      });
+    std::array<int, 3> last{
+      poly[0], poly.size() > 1 ? poly[1] : -1, poly.size() > 2 ? poly[2] : -1
+    };
+    std::sort(last.begin(), last.end());
+    if (poly.size() != 3 || this->FaceSets.count(last))
+    {
+      // Gave up: the loop stays open (and is reported as a gap).
+      for (const Triangle& t : added)
+        --this->Uses[{ std::min(t[0], t[2]), std::max(t[0], t[2]) }];
+      return false;
+    }
+    added.push_back({ poly[0], poly[1], poly[2] });
+    addedFace.push_back(this->HalfEdges.count({ poly[1], poly[0] })
+        ? this->HalfEdges[{ poly[1], poly[0] }]
+        : -1);
+    if (!unfolder_detail::FillWithinTolerance(this->Out.points, loop, added, this->Tol))
+    {
+      // Not a narrow crack (nor small and flat): a flat fill may leave the surface by more
+      // than the tolerance (a missing patch of a curved surface). Left to the final repair,
+      // which tests it the same way against the root epsilon.
+      for (size_t k = 0; k + 1 < added.size(); ++k)
+        --this->Uses[{ std::min(added[k][0], added[k][2]), std::max(added[k][0], added[k][2]) }];
+      return false;
+    }
+    return true;
+  }
+
+  /// Adds the fill; each new face takes the attributes of the face across its first loop
+  /// edge (or across the loop's first edge).
+  void Append(const std::vector<int>& loop,
+    const std::vector<Triangle>& added,
+    const std::vector<int>& addedFace)
+  {
+    Piece& out = this->Out;
+    for (size_t k = 0; k < added.size(); ++k)
+    {
+      int from = addedFace[k];
+      if (from < 0)
+        from = this->HalfEdges[{ loop[1], loop[0] }];
+      out.triangles.push_back(added[k]);
+      out.faceOrig.push_back(out.faceOrig[from]);
+      out.faceCopy.push_back(out.faceCopy[from]);
+      out.faceFilled.push_back(1);
+      this->FaceChild.push_back(this->FaceChild[from]);
+      this->FaceSets.insert(Sorted(added[k]));
+    }
+    this->Seam.filledFaces += static_cast<int>(added.size());
+    ++this->Seam.filledLoops;
+  }
+
+  Piece& Out;
+  std::vector<int>& FaceChild;
+  const std::vector<std::vector<int>>& Children;
+  const std::vector<char>& IsTear;
+  const double Tol;
+  SeamReport& Seam;
+  std::map<std::pair<int, int>, int> HalfEdges; // directed edge -> face
+  std::map<std::pair<int, int>, int> Uses;      // undirected edge -> faces
+  std::set<std::array<int, 3>> FaceSets;        // faces as sorted corner triples
+  std::set<std::pair<int, int>> VisitedHoles;
+};
+} // namespace
+
 /**
  * Fills the small boundary loops left along a seam (e.g. the saw-tooth gaps between a
  * mirrored, approximately symmetric region and its neighbour) by ear clipping. A loop is
- * filled when it has 3..maximumGapLoop vertices, touches two children, at least half of its
+ * filled when it has 3..MaximumGapLoop vertices, touches two children, at least half of its
  * vertices are tear vertices of this level, and every vertex has a vertex of another child
  * on the loop within 2 * max(tol, mean loop edge): loops that include an ancestor's open
  * fold line or the input's own border fail that test and stay open; so does a loop whose
@@ -169,166 +399,7 @@ void Unfolder::FillSeamGaps(Piece& out,
   double tol,
   SeamReport& seam)
 {
-  constexpr int maximumGapLoop = 256;
-  std::map<std::pair<int, int>, int> halfEdges; // directed edge -> face
-  std::map<std::pair<int, int>, int> uses;
-  std::set<std::array<int, 3>> faceSets;
-  for (int f = 0; f < out.NumberOfFaces(); ++f)
-  {
-    const Triangle& t = out.triangles[f];
-    std::array<int, 3> key{ t[0], t[1], t[2] };
-    std::sort(key.begin(), key.end());
-    faceSets.insert(key);
-    for (int k = 0; k < 3; ++k)
-    {
-      const int a = t[k], b = t[(k + 1) % 3];
-      halfEdges[{ a, b }] = f;
-      ++uses[{ std::min(a, b), std::max(a, b) }];
-    }
-  }
-  // Boundary loops, traced along hole half-edges (the reverses of open face half-edges);
-  // at a pinch vertex (several openings) the next edge is found by turning around the
-  // vertex through its faces, so each gap is traced as its own loop.
-  auto isOpen = [&](int a, int b) { return uses[{ std::min(a, b), std::max(a, b) }] == 1; };
-  auto nextHole = [&](int a, int b) -> int
-  {
-    // Arrived at b by the hole edge a -> b: face half-edge b -> a.
-    auto it = halfEdges.find({ b, a });
-    for (int guard = 0; it != halfEdges.end() && guard < 64; ++guard)
-    {
-      const Triangle& t = out.triangles[it->second];
-      int k = 0;
-      while (t[(k + 1) % 3] != b)
-        ++k;
-      const int y = t[k]; // half-edge y -> b in this face
-      if (isOpen(y, b))
-        return y;
-      it = halfEdges.find({ b, y });
-    }
-    return -1;
-  };
-  std::set<std::pair<int, int>> visitedHoles;
-  std::vector<std::pair<int, int>> holes;
-  for (const auto& h : halfEdges)
-    if (isOpen(h.first.first, h.first.second))
-      holes.push_back({ h.first.second, h.first.first });
-  for (const auto& first : holes)
-  {
-    if (visitedHoles.count(first))
-      continue;
-    std::vector<int> loop;
-    std::pair<int, int> edge = first;
-    bool closed = false;
-    while (static_cast<int>(loop.size()) <= maximumGapLoop)
-    {
-      if (visitedHoles.count(edge))
-      {
-        closed = edge == first && !loop.empty();
-        break;
-      }
-      visitedHoles.insert(edge);
-      loop.push_back(edge.first);
-      const int nx = nextHole(edge.first, edge.second);
-      if (nx < 0)
-        break;
-      edge = { edge.second, nx };
-    }
-    std::vector<int> sortedLoop = loop;
-    std::sort(sortedLoop.begin(), sortedLoop.end());
-    const bool simple =
-      std::adjacent_find(sortedLoop.begin(), sortedLoop.end()) == sortedLoop.end();
-    const int n = static_cast<int>(loop.size());
-    if (!closed || !simple || n < 3 || n > maximumGapLoop)
-      continue;
-    // Seam loop?
-    std::vector<int> kids;
-    int tears = 0;
-    double perimeter = 0.0;
-    for (int i = 0; i < n; ++i)
-    {
-      kids.insert(kids.end(), children[loop[i]].begin(), children[loop[i]].end());
-      tears += isTear[loop[i]];
-      perimeter += (out.points[loop[i]] - out.points[loop[(i + 1) % n]]).norm();
-    }
-    std::sort(kids.begin(), kids.end());
-    kids.erase(std::unique(kids.begin(), kids.end()), kids.end());
-    if (kids.size() < 2 || 2 * tears < n)
-      continue;
-    const double reach = 2.0 * std::max(tol, perimeter / n);
-    bool narrow = true;
-    for (int i = 0; i < n && narrow; ++i)
-    {
-      bool near = children[loop[i]].size() > 1; // a stitched vertex: on both sides
-      for (int j = 0; j < n && !near; ++j)
-      {
-        if (i == j)
-          continue;
-        bool other = false;
-        for (int c : children[loop[j]])
-          other =
-            other || !std::binary_search(children[loop[i]].begin(), children[loop[i]].end(), c);
-        near = other && (out.points[loop[i]] - out.points[loop[j]]).norm() <= reach;
-      }
-      narrow = near;
-    }
-    if (!narrow)
-      continue;
-    // Ear clipping: the ear with the shortest new diagonal, not an existing edge.
-    std::vector<int> poly = loop;
-    std::vector<Triangle> added;
-    std::vector<int> addedFace;
-    ClipShortestEars(
-      out.points,
-      poly,
-      [&](int a, int c) {
-        return !uses.count({ std::min(a, c), std::max(a, c) });
-      },
-      [&](int a, int b, int c)
-      {
-        added.push_back({ a, b, c });
-        addedFace.push_back(halfEdges.count({ b, a }) ? halfEdges[{ b, a }] : -1);
-        ++uses[{ std::min(a, c), std::max(a, c) }];
-      });
-    std::array<int, 3> last{
-      poly[0], poly.size() > 1 ? poly[1] : -1, poly.size() > 2 ? poly[2] : -1
-    };
-    std::sort(last.begin(), last.end());
-    if (poly.size() != 3 || faceSets.count(last))
-    {
-      // Gave up: the loop stays open (and is reported as a gap).
-      for (const Triangle& t : added)
-        --uses[{ std::min(t[0], t[2]), std::max(t[0], t[2]) }];
-      continue;
-    }
-    added.push_back({ poly[0], poly[1], poly[2] });
-    addedFace.push_back(
-      halfEdges.count({ poly[1], poly[0] }) ? halfEdges[{ poly[1], poly[0] }] : -1);
-    if (!unfolder_detail::FillWithinTolerance(out.points, loop, added, tol))
-    {
-      // Not a narrow crack (nor small and flat): a flat fill may leave the surface by more
-      // than the tolerance (a missing patch of a curved surface). Left to the final repair,
-      // which tests it the same way against the root epsilon.
-      for (size_t k = 0; k + 1 < added.size(); ++k)
-        --uses[{ std::min(added[k][0], added[k][2]), std::max(added[k][0], added[k][2]) }];
-      continue;
-    }
-    for (size_t k = 0; k < added.size(); ++k)
-    {
-      int from = addedFace[k];
-      if (from < 0)
-        from = halfEdges[{ loop[1], loop[0] }];
-      out.triangles.push_back(added[k]);
-      out.faceOrig.push_back(out.faceOrig[from]);
-      out.faceCopy.push_back(out.faceCopy[from]);
-      out.faceFilled.push_back(1);
-      faceChild.push_back(faceChild[from]);
-      std::array<int, 3> key{ added[k][0], added[k][1], added[k][2] };
-      std::sort(key.begin(), key.end());
-      faceSets.insert(key);
-    }
-    seam.filledFaces += static_cast<int>(added.size());
-    ++seam.filledLoops;
-  }
+  SeamGapFiller(out, faceChild, children, isTear, tol, seam).Run();
 }
 } // namespace unfolder_detail
 } // namespace foldingmeshes
