@@ -187,195 +187,263 @@ SymmetryResult DetectSymmetry(const PreparedMesh& mesh,
 
 namespace
 {
-SymmetryResult DetectOn(const PreparedMesh& mesh,
-  const FaceTree& targetFaces,
-  const SymmetryOptions& options)
+/// One detection (DetectOn): the runs tried, in the order they were judged.
+class PlaneSearch
 {
-  const PreparedMesh& target = targetFaces.Surface();
-  SymmetryResult result;
-  auto report = [&](double p) { return !options.progress || options.progress(p); };
-  auto trace = [&](const char* what, size_t k, const Run& run)
+public:
+  PlaneSearch(const PreparedMesh& mesh, const FaceTree& targetFaces, const SymmetryOptions& options)
+    : Mesh(mesh)
+    , Target(targetFaces.Surface())
+    , Options(options)
+    , Refine(mesh, targetFaces, options)
   {
-    if (options.trace)
-      options.trace(
+  }
+
+  SymmetryResult Detect();
+
+private:
+  bool Report(double p) const { return !this->Options.progress || this->Options.progress(p); }
+  void Trace(const char* what, size_t k, const Run& run) const
+  {
+    if (this->Options.trace)
+      this->Options.trace(
         FormatTrace("%s %zu: iterations %d/%d region %.3f rms/eps %.3f n=(%.3f %.3f %.3f)",
           what,
           k,
           run.coarseIterations,
           run.fineIterations,
-          run.regionArea / mesh.totalArea,
-          run.rms / options.epsilon,
+          run.regionArea / this->Mesh.totalArea,
+          run.rms / this->Options.epsilon,
           run.plane.normal.x(),
           run.plane.normal.y(),
           run.plane.normal.z()));
-  };
-  Refiner refiner(mesh, targetFaces, options);
-  std::vector<Run> runs;
-  std::vector<size_t> finished; // runs iterated to convergence
-
-  // The paper's path: coarse phase from the principal start (or the user's plane).
-  const auto t0 = Clock::now();
-  {
-    Run run;
-    refiner.Coarse(run, options.useInitialPlane ? &options.initialPlane : nullptr);
-    if (!options.robust)
-      refiner.Fine(run, options.maximumIterations);
-    refiner.Score(run, options.epsilon);
-    trace("paper start", 0, run);
-    runs.push_back(std::move(run));
   }
+  bool SamePlaneAsAny(const std::vector<Plane>& planes, const Plane& p) const
+  {
+    for (const Plane& q : planes)
+      if (SamePlane(q, p, this->Options.epsilon))
+        return true;
+    return false;
+  }
+
+  /// The paper's path: coarse phase from the principal start (or the user's plane).
+  void PaperStart();
+  /// Probes the starts distinct[first..] (in parallel), then judges them in order; true when
+  /// one settles the search (a tight region covering almost the whole mesh).
+  bool ProbeStarts(const std::vector<Plane>& distinct,
+    size_t first,
+    std::vector<Probe>& started,
+    std::vector<size_t>& probes,
+    size_t& tried);
+  /// The other starts: the user's plane, the principal planes of the surface and the voted
+  /// planes, appended to `distinct` unless already there.
+  void AddCandidateStarts(std::vector<Plane>& distinct) const;
+  /// Finishes the best three distinct probes that could still win, in parallel; their runs
+  /// go to `finished`.
+  void FinishBestProbes(std::vector<size_t>& probes, std::vector<size_t>& finished);
+  /// The robust search after the paper start; false when aborted.
+  bool RobustSearch(SymmetryResult& result, std::vector<size_t>& finished);
+
+  const PreparedMesh& Mesh;
+  const PreparedMesh& Target;
+  const SymmetryOptions& Options;
+  Refiner Refine;
+  std::vector<Run> Runs;
+};
+
+void PlaneSearch::PaperStart()
+{
+  Run run;
+  this->Refine.Coarse(run, this->Options.useInitialPlane ? &this->Options.initialPlane : nullptr);
+  if (!this->Options.robust)
+    this->Refine.Fine(run, this->Options.maximumIterations);
+  this->Refine.Score(run, this->Options.epsilon);
+  this->Trace("paper start", 0, run);
+  this->Runs.push_back(std::move(run));
+}
+
+bool PlaneSearch::ProbeStarts(const std::vector<Plane>& distinct,
+  size_t first,
+  std::vector<Probe>& started,
+  std::vector<size_t>& probes,
+  size_t& tried)
+{
+  const SymmetryOptions& options = this->Options;
+  started.resize(distinct.size());
+  RunTasksInParallel(started.size() - first,
+    [&](size_t i)
+    {
+      const size_t k = first + i;
+      Probe& probe = started[k];
+      this->Refine.Seed(probe.run, distinct[k], k == 0 ? &this->Runs[0] : nullptr);
+      this->Refine.Fine(probe.run, std::min(options.maximumIterations, 2));
+      probe.earlyPlane = probe.run.plane;
+      probe.earlySupportArea = RegionArea(this->Mesh, probe.run.support);
+      this->Refine.Fine(probe.run, std::min(options.maximumIterations, 4));
+      this->Refine.Score(probe.run, options.epsilon);
+    });
+  bool settled = false;
+  for (size_t k = first; k < started.size() && !settled; ++k)
+  {
+    ++tried;
+    Probe& probe = started[k];
+    bool duplicate = false;
+    for (size_t j : probes)
+      duplicate = duplicate || SamePlane(this->Runs[j].plane, probe.earlyPlane, options.epsilon);
+    // A probe whose support after two iterations is already below half the best region
+    // so far is dropped too: it would not be finished (see PromisingFraction).
+    if (!duplicate)
+    {
+      double bestArea = 0.0;
+      for (size_t j : probes)
+        bestArea = std::max(bestArea, this->Runs[j].regionArea);
+      duplicate = probe.earlySupportArea < PromisingFraction * bestArea;
+    }
+    if (!duplicate)
+    {
+      this->Trace("probe", k, probe.run);
+      // A tight region covering almost the whole mesh cannot be beaten by the region
+      // rule (Better: more than 2% of the area larger): no need to probe further.
+      settled = Tight(probe.run, options, this->Mesh.totalArea) &&
+        probe.run.regionArea >= (1.0 - GlobalSymmetryMargin) * this->Mesh.totalArea;
+      probes.push_back(this->Runs.size());
+      this->Runs.push_back(std::move(probe.run));
+    }
+  }
+  return settled;
+}
+
+void PlaneSearch::AddCandidateStarts(std::vector<Plane>& distinct) const
+{
+  // All from the full surface (target: a sampled copy has fewer vertex pairs to vote with;
+  // small local symmetries were missed, triceratops 60% -> 50%).
+  const SymmetryOptions& options = this->Options;
+  std::vector<Plane> seeds;
+  if (options.useInitialPlane)
+    seeds.push_back(options.initialPlane);
+  std::array<Plane, 3> principal;
+  if (SurfacePrincipalPlanes(this->Target, principal))
+    seeds.insert(seeds.end(), principal.begin(), principal.end());
+  for (const Plane& p :
+    VotedPlanes(this->Target, options.numberOfCandidates, options.epsilon, options.seed))
+    seeds.push_back(p);
+  for (const Plane& p : seeds)
+    if (!this->SamePlaneAsAny(distinct, p))
+      distinct.push_back(p);
+}
+
+void PlaneSearch::FinishBestProbes(std::vector<size_t>& probes, std::vector<size_t>& chosen)
+{
+  const SymmetryOptions& options = this->Options;
+  std::vector<Run>& runs = this->Runs;
+  std::stable_sort(probes.begin(),
+    probes.end(),
+    [&](size_t a, size_t b) { return Better(runs[a], runs[b], this->Mesh.totalArea, options); });
+  for (size_t k : probes)
+  {
+    bool duplicate = false;
+    for (size_t c : chosen)
+      duplicate = duplicate || SamePlane(runs[c].plane, runs[k].plane, options.epsilon);
+    const bool promising = runs[k].regionArea >= PromisingFraction * runs[probes[0]].regionArea;
+    if (!duplicate && promising && chosen.size() < 3)
+      chosen.push_back(k);
+  }
+  RunTasksInParallel(chosen.size(),
+    [&](size_t i)
+    {
+      Run& run = runs[chosen[i]];
+      this->Refine.Fine(run, options.maximumIterations);
+      this->Refine.Polish(run, std::min(options.maximumIterations, PolishIterations));
+      this->Refine.Score(run, options.epsilon);
+    });
+  for (size_t k : chosen)
+    this->Trace("final", k, runs[k]);
+}
+
+// More starts, each refined directly by a few fine iterations (sigma = 3 epsilon): the
+// coarse metric tends to drag a good start away. Probes: two fine iterations each; probes
+// that land on the plane of an earlier probe are dropped; the rest get four more iterations
+// and are scored by their region. The first probe continues the paper start and comes
+// alone: a globally symmetric mesh settles there, and needs no other start. The others run
+// in parallel, each serially (RunTasksInParallel), and are then judged one after the other
+// exactly as if they had run in turn - the same decisions and results for any thread count,
+// at the price of finishing probes that are then dropped.
+bool PlaneSearch::RobustSearch(SymmetryResult& result, std::vector<size_t>& finished)
+{
+  const auto t2 = Clock::now();
+  std::vector<Plane> distinct{ this->Runs[0].plane };
+  std::vector<size_t> probes;
+  std::vector<Probe> started;
+  size_t tried = 0;
+  bool settled = false;
+  for (size_t first = 0; first < distinct.size() && !settled; first = started.size())
+  {
+    settled = this->ProbeStarts(distinct, first, started, probes, tried);
+    if (!this->Report(0.2 + (first == 0 ? 0.1 : 0.5)))
+      return false;
+    if (first == 0 && !settled)
+    {
+      const auto t1 = Clock::now();
+      this->AddCandidateStarts(distinct);
+      result.candidateSeconds = Seconds(t1);
+    }
+  }
+  if (!this->Report(0.7))
+    return false;
+  this->FinishBestProbes(probes, finished);
+  if (!this->Report(1.0))
+    return false;
+  result.fineSeconds = Seconds(t2) - result.candidateSeconds;
+  result.startsTried = static_cast<int>(tried);
+  return true;
+}
+
+SymmetryResult PlaneSearch::Detect()
+{
+  SymmetryResult result;
+  std::vector<size_t> finished; // runs iterated to convergence
+  const auto t0 = Clock::now();
+  this->PaperStart();
   result.coarseSeconds = Seconds(t0);
-  if (!report(options.robust ? 0.2 : 0.9))
+  if (!this->Report(this->Options.robust ? 0.2 : 0.9))
   {
     result.aborted = true;
     return result;
   }
-
-  if (options.robust)
+  if (this->Options.robust)
   {
-    // More starts, each refined directly by a few fine iterations (sigma = 3 epsilon):
-    // the coarse metric tends to drag a good start away. Probes: two fine iterations each;
-    // probes that land on the plane of an earlier probe are dropped; the rest get four more
-    // iterations and are scored by their region. The first probe continues the paper start
-    // and comes alone: a globally symmetric mesh settles there, and needs no other start.
-    // The others run in parallel, each serially (RunTasksInParallel), and are then judged
-    // one after the other exactly as if they had run in turn - the same decisions and
-    // results for any thread count, at the price of finishing probes that are then dropped.
-    const auto t2 = Clock::now();
-    std::vector<Plane> distinct{ runs[0].plane };
-    std::vector<size_t> probes;
-    std::vector<Probe> started;
-    size_t tried = 0;
-    bool settled = false;
-    for (size_t first = 0; first < distinct.size() && !settled; first = started.size())
-    {
-      started.resize(distinct.size());
-      RunTasksInParallel(started.size() - first,
-        [&](size_t i)
-        {
-          const size_t k = first + i;
-          Probe& probe = started[k];
-          refiner.Seed(probe.run, distinct[k], k == 0 ? &runs[0] : nullptr);
-          refiner.Fine(probe.run, std::min(options.maximumIterations, 2));
-          probe.earlyPlane = probe.run.plane;
-          probe.earlySupportArea = RegionArea(mesh, probe.run.support);
-          refiner.Fine(probe.run, std::min(options.maximumIterations, 4));
-          refiner.Score(probe.run, options.epsilon);
-        });
-      for (size_t k = first; k < started.size() && !settled; ++k)
-      {
-        ++tried;
-        Probe& probe = started[k];
-        bool duplicate = false;
-        for (size_t j : probes)
-          duplicate = duplicate || SamePlane(runs[j].plane, probe.earlyPlane, options.epsilon);
-        // A probe whose support after two iterations is already below half the best region
-        // so far is dropped too: it would not be finished (see PromisingFraction).
-        if (!duplicate)
-        {
-          double bestArea = 0.0;
-          for (size_t j : probes)
-            bestArea = std::max(bestArea, runs[j].regionArea);
-          duplicate = probe.earlySupportArea < PromisingFraction * bestArea;
-        }
-        if (!duplicate)
-        {
-          trace("probe", k, probe.run);
-          // A tight region covering almost the whole mesh cannot be beaten by the region
-          // rule (Better: more than 2% of the area larger): no need to probe further.
-          settled = Tight(probe.run, options, mesh.totalArea) &&
-            probe.run.regionArea >= (1.0 - GlobalSymmetryMargin) * mesh.totalArea;
-          probes.push_back(runs.size());
-          runs.push_back(std::move(probe.run));
-        }
-      }
-      if (!report(0.2 + (first == 0 ? 0.1 : 0.5)))
-      {
-        result.aborted = true;
-        return result;
-      }
-      if (first == 0 && !settled)
-      {
-        // The other starts: the user's plane, the principal planes of the surface and the
-        // voted planes, all from the full surface (target: a sampled copy has fewer vertex
-        // pairs to vote with; small local symmetries were missed, triceratops 60% -> 50%).
-        const auto t1 = Clock::now();
-        std::vector<Plane> seeds;
-        if (options.useInitialPlane)
-          seeds.push_back(options.initialPlane);
-        std::array<Plane, 3> principal;
-        if (SurfacePrincipalPlanes(target, principal))
-          seeds.insert(seeds.end(), principal.begin(), principal.end());
-        for (const Plane& p :
-          VotedPlanes(target, options.numberOfCandidates, options.epsilon, options.seed))
-          seeds.push_back(p);
-        for (const Plane& p : seeds)
-        {
-          bool duplicate = false;
-          for (const Plane& q : distinct)
-            duplicate = duplicate || SamePlane(q, p, options.epsilon);
-          if (!duplicate)
-            distinct.push_back(p);
-        }
-        result.candidateSeconds = Seconds(t1);
-      }
-    }
-    if (!report(0.7))
+    if (!this->RobustSearch(result, finished))
     {
       result.aborted = true;
       return result;
     }
-    // Finish the best three distinct probes that could still win, in parallel.
-    std::stable_sort(probes.begin(),
-      probes.end(),
-      [&](size_t a, size_t b) { return Better(runs[a], runs[b], mesh.totalArea, options); });
-    std::vector<size_t>& chosen = finished;
-    for (size_t k : probes)
-    {
-      bool duplicate = false;
-      for (size_t c : chosen)
-        duplicate = duplicate || SamePlane(runs[c].plane, runs[k].plane, options.epsilon);
-      const bool promising = runs[k].regionArea >= PromisingFraction * runs[probes[0]].regionArea;
-      if (!duplicate && promising && chosen.size() < 3)
-        chosen.push_back(k);
-    }
-    RunTasksInParallel(chosen.size(),
-      [&](size_t i)
-      {
-        Run& run = runs[chosen[i]];
-        refiner.Fine(run, options.maximumIterations);
-        refiner.Polish(run, std::min(options.maximumIterations, PolishIterations));
-        refiner.Score(run, options.epsilon);
-      });
-    for (size_t k : chosen)
-      trace("final", k, runs[k]);
-    if (!report(1.0))
-    {
-      result.aborted = true;
-      return result;
-    }
-    result.fineSeconds = Seconds(t2) - result.candidateSeconds;
-    result.startsTried = static_cast<int>(tried);
   }
   else
-  {
     result.startsTried = 1;
-  }
 
   // The result is the best converged run (robust: runs[0], the paper's coarse phase alone,
   // only seeded a probe). Finalists: the converged runs, best first.
-  if (!options.robust)
+  std::vector<Run>& runs = this->Runs;
+  if (!this->Options.robust)
     finished.assign(1, 0);
   if (finished.empty()) // no probe at all (cannot happen with a paper start): take any run
     for (size_t k = 0; k < runs.size(); ++k)
       finished.push_back(k);
   std::stable_sort(finished.begin(),
     finished.end(),
-    [&](size_t a, size_t b) { return Better(runs[a], runs[b], mesh.totalArea, options); });
+    [&](size_t a, size_t b) { return Better(runs[a], runs[b], this->Mesh.totalArea, this->Options); });
   for (size_t k : finished)
     result.finalists.push_back(runs[k].plane);
-  Finish(mesh, options, refiner, runs[finished[0]], result);
+  Finish(this->Mesh, this->Options, this->Refine, runs[finished[0]], result);
   return result;
+}
+
+SymmetryResult DetectOn(const PreparedMesh& mesh,
+  const FaceTree& targetFaces,
+  const SymmetryOptions& options)
+{
+  PlaneSearch search(mesh, targetFaces, options);
+  return search.Detect();
 }
 }
 }
