@@ -132,35 +132,45 @@ bool SurfacePrincipalPlanes(const PreparedMesh& mesh, std::array<Plane, 3>& plan
   return true;
 }
 
-std::vector<Plane> VotedPlanes(const PreparedMesh& mesh, int count, double epsilon, unsigned seed)
+namespace
 {
-  std::vector<Plane> result;
+/// Votes wanted, and pairs drawn at most to get them.
+constexpr int WantedVotes = 4000, VoteAttempts = 400000;
+/// A pair votes when its normals mirror into each other within this angle (degrees).
+constexpr double PairAngle = 25.0;
+/// Votes within this angle (degrees) and epsilon of each other support each other.
+constexpr double ClusterAngle = 4.0;
+/// A chosen plane uses up the votes within this angle (degrees) and 3 epsilon.
+constexpr double SeparationAngle = 10.0;
+/// A cluster must have at least this weight of votes to give a plane.
+constexpr double MinimumClusterWeight = 3.0;
+
+double Cosine(double degrees)
+{
+  return std::cos(degrees * 3.14159265358979323846 / 180.0);
+}
+
+/// A pair's plane (unit normal, offset from the bounding-box centre) and its weight.
+struct Vote
+{
+  Vec3 normal;
+  double offset;
+  double weight;
+};
+
+bool NearVote(const Vote& u, const Vote& v, double cosLimit, double offsetLimit)
+{
+  const double c = u.normal.dot(v.normal);
+  if (std::abs(c) < cosLimit)
+    return false;
+  const double vo = c < 0 ? -v.offset : v.offset;
+  return std::abs(u.offset - vo) <= offsetLimit;
+}
+
+/// A discrete mean normal curvature per vertex (in parallel: each vertex alone).
+std::vector<double> VertexCurvatures(const PreparedMesh& mesh)
+{
   const int nv = mesh.NumberOfPoints();
-  if (count <= 0 || nv < 2)
-    return result;
-  // Area-weighted vertex sampling.
-  std::vector<double> cumulative(nv);
-  double total = 0.0;
-  for (int i = 0; i < nv; ++i)
-    cumulative[i] = (total += mesh.vertexAreas[i]);
-  std::mt19937 random(seed);
-  auto sample = [&]()
-  {
-    const double u = (static_cast<double>(random()) + 0.5) / 4294967296.0 * total;
-    return static_cast<int>(std::min<std::ptrdiff_t>(
-      std::lower_bound(cumulative.begin(), cumulative.end(), u) - cumulative.begin(), nv - 1));
-  };
-  struct Vote
-  {
-    Vec3 normal;
-    double offset;
-    double weight;
-  };
-  // Partners are drawn mostly among vertices of similar curvature (mirror images have the
-  // same): a discrete mean normal curvature per vertex, ranked; q is sampled within a window
-  // of p's rank. One vote in four pairs p with a uniformly sampled q.
-  // Per-vertex and per-vote loops below run in parallel (ForRanges): each element is computed
-  // alone, in a fixed order, so the result does not depend on the thread count.
   std::vector<double> curvature(nv, 0.0);
   ForRanges(nv,
     1024,
@@ -183,6 +193,30 @@ std::vector<Plane> VotedPlanes(const PreparedMesh& mesh, int count, double epsil
         curvature[v] = n > 0 ? sum / n : 0.0;
       }
     });
+  return curvature;
+}
+
+/**
+ * The votes of vertex pairs (p, q) whose normals mirror into each other: p sampled by area,
+ * q mostly among vertices of similar curvature (mirror images have the same: within a
+ * window of p's curvature rank), one vote in four with a q sampled by area.
+ */
+std::vector<Vote> CastVotes(const PreparedMesh& mesh, double epsilon, unsigned seed)
+{
+  const int nv = mesh.NumberOfPoints();
+  // Area-weighted vertex sampling.
+  std::vector<double> cumulative(nv);
+  double total = 0.0;
+  for (int i = 0; i < nv; ++i)
+    cumulative[i] = (total += mesh.vertexAreas[i]);
+  std::mt19937 random(seed);
+  auto sample = [&]()
+  {
+    const double u = (static_cast<double>(random()) + 0.5) / 4294967296.0 * total;
+    return static_cast<int>(std::min<std::ptrdiff_t>(
+      std::lower_bound(cumulative.begin(), cumulative.end(), u) - cumulative.begin(), nv - 1));
+  };
+  const std::vector<double> curvature = VertexCurvatures(mesh);
   std::vector<int> byCurvature(nv), rank(nv);
   for (int v = 0; v < nv; ++v)
     byCurvature[v] = v;
@@ -200,10 +234,9 @@ std::vector<Plane> VotedPlanes(const PreparedMesh& mesh, int count, double epsil
   };
 
   std::vector<Vote> votes;
-  const int wanted = 4000, attempts = 400000;
-  const double pairCos = std::cos(25.0 * 3.14159265358979323846 / 180.0);
+  const double pairCos = Cosine(PairAngle);
   const Vec3 center = 0.5 * (mesh.boundsMin + mesh.boundsMax);
-  for (int k = 0; k < attempts && static_cast<int>(votes.size()) < wanted; ++k)
+  for (int k = 0; k < VoteAttempts && static_cast<int>(votes.size()) < WantedVotes; ++k)
   {
     const int a = sample();
     const int b = (k % 4 == 3) ? sample() : similar(a);
@@ -219,20 +252,19 @@ std::vector<Plane> VotedPlanes(const PreparedMesh& mesh, int count, double epsil
     p = CanonicalPlane(p, center);
     votes.push_back({ p.normal, p.normal.dot(p.origin - center), 1.0 });
   }
-  // Cluster strength: votes within 4 degrees and epsilon.
-  const double clusterCos = std::cos(4.0 * 3.14159265358979323846 / 180.0);
+  return votes;
+}
+
+/**
+ * Per vote, the weight of the votes near it (itself included; NearVote within ClusterAngle
+ * and epsilon). NearVote needs the offsets within epsilon (or opposite within epsilon, for
+ * opposite normals): only the votes in two offset windows of the votes sorted by offset are
+ * tested. In parallel: each vote alone.
+ */
+std::vector<double> ClusterStrengths(const std::vector<Vote>& votes, double epsilon)
+{
+  const double clusterCos = Cosine(ClusterAngle);
   const int nvotes = static_cast<int>(votes.size());
-  auto near = [&](const Vote& u, const Vote& v, double cosLimit, double offsetLimit)
-  {
-    const double c = u.normal.dot(v.normal);
-    if (std::abs(c) < cosLimit)
-      return false;
-    const double vo = c < 0 ? -v.offset : v.offset;
-    return std::abs(u.offset - vo) <= offsetLimit;
-  };
-  // strength[i] = the weight of the votes near vote i (itself included). near() needs the
-  // offsets within epsilon (or opposite within epsilon, for opposite normals): only the votes
-  // in two offset windows of the votes sorted by offset are tested.
   std::vector<int> byOffset(nvotes);
   for (int i = 0; i < nvotes; ++i)
     byOffset[i] = i;
@@ -260,29 +292,45 @@ std::vector<Plane> VotedPlanes(const PreparedMesh& mesh, int count, double epsil
         const auto same = offsetWindow(votes[i].offset);
         const auto opposite = offsetWindow(-votes[i].offset);
         for (int k = same.first; k < same.second; ++k)
-          if (near(votes[i], votes[byOffset[k]], clusterCos, epsilon))
+          if (NearVote(votes[i], votes[byOffset[k]], clusterCos, epsilon))
             strength[i] += votes[byOffset[k]].weight;
         for (int k = opposite.first; k < opposite.second; ++k)
           if ((k < same.first || k >= same.second) &&
-            near(votes[i], votes[byOffset[k]], clusterCos, epsilon))
+            NearVote(votes[i], votes[byOffset[k]], clusterCos, epsilon))
             strength[i] += votes[byOffset[k]].weight;
       }
     });
+  return strength;
+}
+}
+
+std::vector<Plane> VotedPlanes(const PreparedMesh& mesh, int count, double epsilon, unsigned seed)
+{
+  std::vector<Plane> result;
+  if (count <= 0 || mesh.NumberOfPoints() < 2)
+    return result;
+  // The per-vertex and per-vote loops run in parallel (ForRanges): each element is computed
+  // alone, in a fixed order, so the result does not depend on the thread count.
+  const std::vector<Vote> votes = CastVotes(mesh, epsilon, seed);
+  const std::vector<double> strength = ClusterStrengths(votes, epsilon);
+  // The strongest cluster not used up yet, one plane at a time: the mean of its votes.
+  const int nvotes = static_cast<int>(votes.size());
+  const double clusterCos = Cosine(ClusterAngle), separationCos = Cosine(SeparationAngle);
+  const Vec3 center = 0.5 * (mesh.boundsMin + mesh.boundsMax);
   std::vector<char> used(nvotes, 0);
-  const double separationCos = std::cos(10.0 * 3.14159265358979323846 / 180.0);
   while (static_cast<int>(result.size()) < count)
   {
     int best = -1;
     for (int i = 0; i < nvotes; ++i)
       if (!used[i] && (best < 0 || strength[i] > strength[best]))
         best = i;
-    if (best < 0 || strength[best] < 3.0)
+    if (best < 0 || strength[best] < MinimumClusterWeight)
       break;
     Vec3 n = Vec3::Zero();
     double offset = 0.0, weight = 0.0;
     for (int j = 0; j < nvotes; ++j)
     {
-      if (near(votes[best], votes[j], clusterCos, epsilon))
+      if (NearVote(votes[best], votes[j], clusterCos, epsilon))
       {
         const double sgn = votes[best].normal.dot(votes[j].normal) < 0 ? -1.0 : 1.0;
         n += sgn * votes[j].normal;
@@ -291,7 +339,7 @@ std::vector<Plane> VotedPlanes(const PreparedMesh& mesh, int count, double epsil
       }
     }
     for (int j = 0; j < nvotes; ++j)
-      if (!used[j] && near(votes[best], votes[j], separationCos, 3.0 * epsilon))
+      if (!used[j] && NearVote(votes[best], votes[j], separationCos, 3.0 * epsilon))
         used[j] = 1;
     used[best] = 1;
     Plane p;
