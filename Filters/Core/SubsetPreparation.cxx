@@ -51,6 +51,162 @@ int Traversal(const Triangle& t, int u, int v)
 }
 }
 
+namespace
+{
+/**
+ * Adjacency (from mesh.vertexFaces), parts and the open / non-manifold edge counts of the
+ * subset's faces (`faces`: their ids in `mesh`, `localFace`: the inverse); onOpenEdge per
+ * subset face. False when two faces across a manifold edge are not consistently oriented
+ * (the caller then prepares the faces as a soup).
+ */
+bool ConnectSubsetFaces(const PreparedMesh& mesh,
+  const std::vector<char>& faceMask,
+  const std::vector<int>& faces,
+  const std::vector<int>& localFace,
+  PreparedMesh& subset,
+  std::vector<char>& onOpenEdge)
+{
+  const int nf = static_cast<int>(faces.size());
+  std::vector<int> parent(nf);
+  std::iota(parent.begin(), parent.end(), 0);
+  onOpenEdge.assign(nf, 0);
+  subset.faceNeighborOffsets.assign(nf + 1, 0);
+  std::vector<int> others;
+  for (int i = 0; i < nf; ++i)
+  {
+    const int f = faces[i];
+    const Triangle& t = mesh.triangles[f];
+    const size_t firstNeighbor = subset.faceNeighbors.size();
+    for (int k = 0; k < 3; ++k)
+    {
+      const int u = t[k], v = t[(k + 1) % 3];
+      others.clear();
+      bool lowest = true, sameDirection = false;
+      for (int m = mesh.vertexFaceOffsets[u]; m < mesh.vertexFaceOffsets[u + 1]; ++m)
+      {
+        const int g = mesh.vertexFaces[m];
+        if (g == f || !faceMask[g])
+          continue;
+        const int direction = Traversal(mesh.triangles[g], u, v);
+        if (direction == 0)
+          continue;
+        others.push_back(localFace[g]);
+        lowest = lowest && g > f;
+        sameDirection = sameDirection || direction > 0;
+      }
+      const size_t uses = others.size() + 1;
+      if (uses == 2 && sameDirection)
+        return false;
+      if (uses != 2)
+        onOpenEdge[i] = 1;
+      if (lowest && uses == 1)
+        ++subset.numberOfBoundaryEdges;
+      if (lowest && uses > 2)
+        ++subset.numberOfNonManifoldEdges;
+      for (int j : others)
+      {
+        subset.faceNeighbors.push_back(j);
+        Unite(parent, i, j);
+      }
+    }
+    std::sort(subset.faceNeighbors.begin() + firstNeighbor, subset.faceNeighbors.end());
+    subset.faceNeighbors.erase(
+      std::unique(subset.faceNeighbors.begin() + firstNeighbor, subset.faceNeighbors.end()),
+      subset.faceNeighbors.end());
+    subset.faceNeighborOffsets[i + 1] = static_cast<int>(subset.faceNeighbors.size());
+  }
+  subset.facePart.assign(nf, -1);
+  std::vector<int> partOfRoot(nf, -1);
+  for (int f = 0; f < nf; ++f)
+  {
+    const int r = FindRoot(parent, f);
+    if (partOfRoot[r] < 0)
+      partOfRoot[r] = subset.numberOfParts++;
+    subset.facePart[f] = partOfRoot[r];
+  }
+  return true;
+}
+
+/// Orientation: consistent already (no face flipped by a walk), so an open part keeps it
+/// and a closed part is turned outward.
+void OrientClosedParts(PreparedMesh& subset, const std::vector<char>& onOpenEdge)
+{
+  const int nf = subset.NumberOfFaces();
+  std::vector<char> partClosed(subset.numberOfParts, 1);
+  for (int f = 0; f < nf; ++f)
+    if (onOpenEdge[f])
+      partClosed[subset.facePart[f]] = 0;
+  std::vector<double> volume(subset.numberOfParts, 0.0);
+  const Vec3 center = 0.5 * (subset.boundsMin + subset.boundsMax);
+  for (int f = 0; f < nf; ++f)
+  {
+    const Triangle& t = subset.triangles[f];
+    volume[subset.facePart[f]] +=
+      (subset.points[t[0]] - center)
+        .dot((subset.points[t[1]] - center).cross(subset.points[t[2]] - center));
+  }
+  for (int f = 0; f < nf; ++f)
+    if (partClosed[subset.facePart[f]] && volume[subset.facePart[f]] < 0.0)
+    {
+      std::swap(subset.triangles[f][1], subset.triangles[f][2]);
+      ++subset.numberOfFlippedFaces;
+    }
+}
+
+/// Normals, centroids, vertex areas, vertex-face incidence (in face order); then mesh's
+/// vertex normals as the input normals, on the side of the subset's surface.
+void SubsetNormalsAndIncidence(const PreparedMesh& mesh,
+  const std::vector<int>& localPoint,
+  PreparedMesh& subset)
+{
+  const int nf = subset.NumberOfFaces(), nv = subset.NumberOfPoints();
+  subset.faceNormals.assign(nf, Vec3::Zero());
+  subset.faceCentroids.assign(nf, Vec3::Zero());
+  subset.vertexNormals.assign(nv, Vec3::Zero());
+  subset.vertexAreas.assign(nv, 0.0);
+  subset.vertexFaceOffsets.assign(nv + 1, 0);
+  for (int f = 0; f < nf; ++f)
+  {
+    const Triangle& t = subset.triangles[f];
+    const Vec3 &a = subset.points[t[0]], &b = subset.points[t[1]], &c = subset.points[t[2]];
+    subset.faceCentroids[f] = (a + b + c) / 3.0;
+    const Vec3 cross = (b - a).cross(c - a);
+    if (!subset.faceDegenerate[f])
+      subset.faceNormals[f] = cross.normalized();
+    for (int v : t)
+    {
+      subset.vertexNormals[v] += 0.5 * cross; // area-weighted
+      subset.vertexAreas[v] += subset.faceAreas[f] / 3.0;
+      ++subset.vertexFaceOffsets[v + 1];
+    }
+  }
+  std::partial_sum(subset.vertexFaceOffsets.begin(),
+    subset.vertexFaceOffsets.end(),
+    subset.vertexFaceOffsets.begin());
+  subset.vertexFaces.assign(subset.vertexFaceOffsets[nv], 0);
+  std::vector<int> fill(subset.vertexFaceOffsets.begin(), subset.vertexFaceOffsets.end() - 1);
+  for (int f = 0; f < nf; ++f)
+    for (int v : subset.triangles[f])
+      subset.vertexFaces[fill[v]++] = f;
+  for (Vec3& n : subset.vertexNormals)
+  {
+    const double len = n.norm();
+    n = len > 0.0 ? Vec3(n / len) : Vec3::Zero();
+  }
+  for (int v = 0; v < mesh.NumberOfPoints(); ++v)
+    if (localPoint[v] >= 0)
+    {
+      const Vec3& n = mesh.vertexNormals[v];
+      if (n.allFinite() && n.norm() > 0.0)
+      {
+        Vec3& own = subset.vertexNormals[localPoint[v]];
+        const Vec3 u = n.normalized();
+        own = u.dot(own) < 0.0 ? Vec3(-u) : u;
+      }
+    }
+}
+}
+
 bool PrepareFaceSubset(const PreparedMesh& mesh,
   const std::vector<char>& faceMask,
   PreparedMesh& subset)
@@ -92,135 +248,11 @@ bool PrepareFaceSubset(const PreparedMesh& mesh,
   ComputeBoundsAndAreas(subset);
   if (!(subset.totalArea > 0.0) || !(subset.diagonal > 0.0))
     return false;
-
-  // Edges of the subset from mesh.vertexFaces: adjacency, parts, open parts, and whether
-  // the faces are already consistently oriented across the subset's manifold edges.
-  std::vector<int> parent(nf);
-  std::iota(parent.begin(), parent.end(), 0);
-  std::vector<char> onOpenEdge(nf, 0);
-  subset.faceNeighborOffsets.assign(nf + 1, 0);
-  std::vector<int> others;
-  for (int i = 0; i < nf; ++i)
-  {
-    const int f = faces[i];
-    const Triangle& t = mesh.triangles[f];
-    const size_t firstNeighbor = subset.faceNeighbors.size();
-    for (int k = 0; k < 3; ++k)
-    {
-      const int u = t[k], v = t[(k + 1) % 3];
-      others.clear();
-      bool lowest = true, sameDirection = false;
-      for (int m = mesh.vertexFaceOffsets[u]; m < mesh.vertexFaceOffsets[u + 1]; ++m)
-      {
-        const int g = mesh.vertexFaces[m];
-        if (g == f || !faceMask[g])
-          continue;
-        const int direction = Traversal(mesh.triangles[g], u, v);
-        if (direction == 0)
-          continue;
-        others.push_back(localFace[g]);
-        lowest = lowest && g > f;
-        sameDirection = sameDirection || direction > 0;
-      }
-      const size_t uses = others.size() + 1;
-      if (uses == 2 && sameDirection)
-        return PrepareSelectedSoup(mesh, faceMask, subset);
-      if (uses != 2)
-        onOpenEdge[i] = 1;
-      if (lowest && uses == 1)
-        ++subset.numberOfBoundaryEdges;
-      if (lowest && uses > 2)
-        ++subset.numberOfNonManifoldEdges;
-      for (int j : others)
-      {
-        subset.faceNeighbors.push_back(j);
-        Unite(parent, i, j);
-      }
-    }
-    std::sort(subset.faceNeighbors.begin() + firstNeighbor, subset.faceNeighbors.end());
-    subset.faceNeighbors.erase(
-      std::unique(subset.faceNeighbors.begin() + firstNeighbor, subset.faceNeighbors.end()),
-      subset.faceNeighbors.end());
-    subset.faceNeighborOffsets[i + 1] = static_cast<int>(subset.faceNeighbors.size());
-  }
-  subset.facePart.assign(nf, -1);
-  std::vector<int> partOfRoot(nf, -1);
-  for (int f = 0; f < nf; ++f)
-  {
-    const int r = FindRoot(parent, f);
-    if (partOfRoot[r] < 0)
-      partOfRoot[r] = subset.numberOfParts++;
-    subset.facePart[f] = partOfRoot[r];
-  }
-
-  // Orientation: consistent already (no face flipped by the walk), so an open part keeps it
-  // and a closed part is turned outward.
-  std::vector<char> partClosed(subset.numberOfParts, 1);
-  for (int f = 0; f < nf; ++f)
-    if (onOpenEdge[f])
-      partClosed[subset.facePart[f]] = 0;
-  std::vector<double> volume(subset.numberOfParts, 0.0);
-  const Vec3 center = 0.5 * (subset.boundsMin + subset.boundsMax);
-  for (int f = 0; f < nf; ++f)
-  {
-    const Triangle& t = subset.triangles[f];
-    volume[subset.facePart[f]] +=
-      (subset.points[t[0]] - center)
-        .dot((subset.points[t[1]] - center).cross(subset.points[t[2]] - center));
-  }
-  for (int f = 0; f < nf; ++f)
-    if (partClosed[subset.facePart[f]] && volume[subset.facePart[f]] < 0.0)
-    {
-      std::swap(subset.triangles[f][1], subset.triangles[f][2]);
-      ++subset.numberOfFlippedFaces;
-    }
-
-  // Normals, centroids, vertex areas, vertex-face incidence (in face order).
-  subset.faceNormals.assign(nf, Vec3::Zero());
-  subset.faceCentroids.assign(nf, Vec3::Zero());
-  subset.vertexNormals.assign(nv, Vec3::Zero());
-  subset.vertexAreas.assign(nv, 0.0);
-  subset.vertexFaceOffsets.assign(nv + 1, 0);
-  for (int f = 0; f < nf; ++f)
-  {
-    const Triangle& t = subset.triangles[f];
-    const Vec3 &a = subset.points[t[0]], &b = subset.points[t[1]], &c = subset.points[t[2]];
-    subset.faceCentroids[f] = (a + b + c) / 3.0;
-    const Vec3 cross = (b - a).cross(c - a);
-    if (!subset.faceDegenerate[f])
-      subset.faceNormals[f] = cross.normalized();
-    for (int v : t)
-    {
-      subset.vertexNormals[v] += 0.5 * cross; // area-weighted
-      subset.vertexAreas[v] += subset.faceAreas[f] / 3.0;
-      ++subset.vertexFaceOffsets[v + 1];
-    }
-  }
-  std::partial_sum(subset.vertexFaceOffsets.begin(),
-    subset.vertexFaceOffsets.end(),
-    subset.vertexFaceOffsets.begin());
-  subset.vertexFaces.assign(subset.vertexFaceOffsets[nv], 0);
-  std::vector<int> fill(subset.vertexFaceOffsets.begin(), subset.vertexFaceOffsets.end() - 1);
-  for (int f = 0; f < nf; ++f)
-    for (int v : subset.triangles[f])
-      subset.vertexFaces[fill[v]++] = f;
-  for (Vec3& n : subset.vertexNormals)
-  {
-    const double len = n.norm();
-    n = len > 0.0 ? Vec3(n / len) : Vec3::Zero();
-  }
-  // mesh's vertex normals as the input normals, on the side of the subset's surface.
-  for (int v = 0; v < mesh.NumberOfPoints(); ++v)
-    if (localPoint[v] >= 0)
-    {
-      const Vec3& n = mesh.vertexNormals[v];
-      if (n.allFinite() && n.norm() > 0.0)
-      {
-        Vec3& own = subset.vertexNormals[localPoint[v]];
-        const Vec3 u = n.normalized();
-        own = u.dot(own) < 0.0 ? Vec3(-u) : u;
-      }
-    }
+  std::vector<char> onOpenEdge;
+  if (!ConnectSubsetFaces(mesh, faceMask, faces, localFace, subset, onOpenEdge))
+    return PrepareSelectedSoup(mesh, faceMask, subset);
+  OrientClosedParts(subset, onOpenEdge);
+  SubsetNormalsAndIncidence(mesh, localPoint, subset);
   return true;
 }
 }
