@@ -266,6 +266,146 @@ std::string BlockName(const FoldingTree& tree, int index)
   return os.str();
 }
 
+/// A leaf's points (double precision) and triangles.
+vtkSmartPointer<vtkPolyData> LeafGeometry(const FoldingLeafMesh& m)
+{
+  auto leaf = vtkSmartPointer<vtkPolyData>::New();
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  points->SetNumberOfPoints(m.NumberOfPoints());
+  for (int i = 0; i < m.NumberOfPoints(); ++i)
+    points->SetPoint(i, m.points[i].data());
+  leaf->SetPoints(points);
+  vtkNew<vtkCellArray> polys;
+  polys->AllocateExact(m.NumberOfFaces(), 3 * m.NumberOfFaces());
+  for (const Triangle& t : m.triangles)
+  {
+    const vtkIdType ids[3] = { t[0], t[1], t[2] };
+    polys->InsertNextCell(3, ids);
+  }
+  leaf->SetPolys(polys);
+  return leaf;
+}
+
+/// OriginalPointId, TearMask, PlaneMask, Projected and (when known) ErrorBudget.
+void AddTreePointArrays(const FoldingLeafMesh& m, vtkPointData* pd)
+{
+  vtkNew<vtkIdTypeArray> pointIds;
+  pointIds->SetName("OriginalPointId");
+  pointIds->SetNumberOfTuples(m.NumberOfPoints());
+  vtkNew<vtkTypeUInt64Array> tear, plane;
+  tear->SetName("TearMask");
+  plane->SetName("PlaneMask");
+  tear->SetNumberOfTuples(m.NumberOfPoints());
+  plane->SetNumberOfTuples(m.NumberOfPoints());
+  vtkNew<vtkUnsignedCharArray> projected;
+  projected->SetName("Projected");
+  projected->SetNumberOfTuples(m.NumberOfPoints());
+  for (int i = 0; i < m.NumberOfPoints(); ++i)
+  {
+    pointIds->SetValue(i, m.originalPointIds[i]);
+    tear->SetValue(i, m.tearMask[i]);
+    plane->SetValue(i, m.planeMask[i]);
+    projected->SetValue(i, m.projected[i] ? 1 : 0);
+  }
+  pd->AddArray(pointIds);
+  pd->AddArray(tear);
+  pd->AddArray(plane);
+  pd->AddArray(projected);
+  if (!m.errorBudget.empty())
+  {
+    vtkNew<vtkDoubleArray> budget;
+    budget->SetName("ErrorBudget");
+    budget->SetNumberOfTuples(m.NumberOfPoints());
+    for (int i = 0; i < m.NumberOfPoints(); ++i)
+      budget->SetValue(i, m.errorBudget[i]);
+    pd->AddArray(budget);
+  }
+}
+
+/// InputBoundary, and the tree's input border edges (FoldingTree::inputBorderEdges) at their
+/// end points: InputBorderNeighbors, the input ids of up to four border neighbours of the
+/// point's input point, -1 padded.
+void AddInputBorderArrays(const FoldingLeafMesh& m,
+  const std::vector<std::pair<int, int>>& borderEdges,
+  vtkPointData* pd)
+{
+  vtkNew<vtkUnsignedCharArray> border;
+  border->SetName("InputBoundary");
+  border->SetNumberOfTuples(m.NumberOfPoints());
+  for (int i = 0; i < m.NumberOfPoints(); ++i)
+    border->SetValue(i, m.inputBoundary[i] ? 1 : 0);
+  pd->AddArray(border);
+  vtkNew<vtkIdTypeArray> neighbours;
+  neighbours->SetName("InputBorderNeighbors");
+  neighbours->SetNumberOfComponents(4);
+  neighbours->SetNumberOfTuples(m.NumberOfPoints());
+  std::map<int, std::vector<int>> around;
+  for (const auto& e : borderEdges)
+  {
+    around[e.first].push_back(e.second);
+    around[e.second].push_back(e.first);
+  }
+  for (int i = 0; i < m.NumberOfPoints(); ++i)
+  {
+    int k = 0;
+    auto it = around.find(m.originalPointIds[i]);
+    if (m.inputBoundary[i] && it != around.end())
+      for (size_t j = 0; j < it->second.size() && k < 4; ++j)
+        neighbours->SetTypedComponent(i, k++, it->second[j]);
+    for (; k < 4; ++k)
+      neighbours->SetTypedComponent(i, k, -1);
+  }
+  pd->AddArray(neighbours);
+}
+
+/// OriginalCellId, and the leaf's node index on every face, active: viewers colour the tree
+/// by leaf, with the same numbers as the segmentation view's FoldingLeafId (the unfolder
+/// does not carry it).
+void AddTreeCellArrays(const FoldingLeafMesh& m, int index, vtkCellData* cd)
+{
+  vtkNew<vtkIdTypeArray> cellIds;
+  cellIds->SetName("OriginalCellId");
+  cellIds->SetNumberOfTuples(m.NumberOfFaces());
+  for (int f = 0; f < m.NumberOfFaces(); ++f)
+    cellIds->SetValue(f, m.originalFaceIds[f]);
+  cd->AddArray(cellIds);
+  vtkNew<vtkIntArray> leafIds;
+  leafIds->SetName("FoldingLeafId");
+  leafIds->SetNumberOfTuples(m.NumberOfFaces());
+  leafIds->FillValue(index);
+  cd->AddArray(leafIds);
+  cd->SetActiveScalars("FoldingLeafId");
+}
+
+/// The mirrored-flag records as four field arrays (MirroredFlagPoint / Level / Kind / Mask).
+void AddMirroredFlags(const FoldingLeafMesh& m, vtkFieldData* fd)
+{
+  const size_t nf = m.mirroredFlags.size();
+  vtkNew<vtkIntArray> flagPoint, flagLevel, flagKind;
+  vtkNew<vtkTypeUInt64Array> flagMask;
+  flagPoint->SetName("MirroredFlagPoint");
+  flagLevel->SetName("MirroredFlagLevel");
+  flagKind->SetName("MirroredFlagKind");
+  flagMask->SetName("MirroredFlagMask");
+  for (auto* a : { static_cast<vtkDataArray*>(flagPoint),
+         static_cast<vtkDataArray*>(flagLevel),
+         static_cast<vtkDataArray*>(flagKind),
+         static_cast<vtkDataArray*>(flagMask) })
+  {
+    a->SetNumberOfTuples(static_cast<vtkIdType>(nf));
+    fd->AddArray(a);
+  }
+  for (size_t k = 0; k < nf; ++k)
+  {
+    const MirroredFlag& f = m.mirroredFlags[k];
+    flagPoint->SetValue(k, f.point);
+    flagLevel->SetValue(k, f.level);
+    flagKind->SetValue(k, f.flag == LevelFlag::Tear ? 0 : 1);
+    flagMask->SetValue(k, f.mirrorMask);
+  }
+}
+
 struct Writer
 {
   const FoldingTree& Tree;
@@ -312,132 +452,21 @@ struct Writer
   {
     const FoldingNode& node = this->Tree.nodes[index];
     const FoldingLeafMesh& m = node.mesh;
-    auto leaf = vtkSmartPointer<vtkPolyData>::New();
-    vtkNew<vtkPoints> points;
-    points->SetDataTypeToDouble();
-    points->SetNumberOfPoints(m.NumberOfPoints());
-    for (int i = 0; i < m.NumberOfPoints(); ++i)
-      points->SetPoint(i, m.points[i].data());
-    leaf->SetPoints(points);
-    vtkNew<vtkCellArray> polys;
-    polys->AllocateExact(m.NumberOfFaces(), 3 * m.NumberOfFaces());
-    for (const Triangle& t : m.triangles)
-    {
-      const vtkIdType ids[3] = { t[0], t[1], t[2] };
-      polys->InsertNextCell(3, ids);
-    }
-    leaf->SetPolys(polys);
-
+    vtkSmartPointer<vtkPolyData> leaf = LeafGeometry(m);
     if (this->Input)
     {
       CopyArraysById(this->Input->GetPointData(), leaf->GetPointData(), m.originalPointIds);
       CopyArraysById(this->Input->GetCellData(), leaf->GetCellData(), m.originalFaceIds);
     }
-    vtkNew<vtkIdTypeArray> pointIds;
-    pointIds->SetName("OriginalPointId");
-    pointIds->SetNumberOfTuples(m.NumberOfPoints());
-    vtkNew<vtkTypeUInt64Array> tear, plane;
-    tear->SetName("TearMask");
-    plane->SetName("PlaneMask");
-    tear->SetNumberOfTuples(m.NumberOfPoints());
-    plane->SetNumberOfTuples(m.NumberOfPoints());
-    vtkNew<vtkUnsignedCharArray> projected;
-    projected->SetName("Projected");
-    projected->SetNumberOfTuples(m.NumberOfPoints());
-    for (int i = 0; i < m.NumberOfPoints(); ++i)
-    {
-      pointIds->SetValue(i, m.originalPointIds[i]);
-      tear->SetValue(i, m.tearMask[i]);
-      plane->SetValue(i, m.planeMask[i]);
-      projected->SetValue(i, m.projected[i] ? 1 : 0);
-    }
-    leaf->GetPointData()->AddArray(pointIds);
-    leaf->GetPointData()->AddArray(tear);
-    leaf->GetPointData()->AddArray(plane);
-    leaf->GetPointData()->AddArray(projected);
-    if (!m.errorBudget.empty())
-    {
-      vtkNew<vtkDoubleArray> budget;
-      budget->SetName("ErrorBudget");
-      budget->SetNumberOfTuples(m.NumberOfPoints());
-      for (int i = 0; i < m.NumberOfPoints(); ++i)
-        budget->SetValue(i, m.errorBudget[i]);
-      leaf->GetPointData()->AddArray(budget);
-    }
+    AddTreePointArrays(m, leaf->GetPointData());
     if (!m.inputBoundary.empty())
-    {
-      vtkNew<vtkUnsignedCharArray> border;
-      border->SetName("InputBoundary");
-      border->SetNumberOfTuples(m.NumberOfPoints());
-      for (int i = 0; i < m.NumberOfPoints(); ++i)
-        border->SetValue(i, m.inputBoundary[i] ? 1 : 0);
-      leaf->GetPointData()->AddArray(border);
-      // The tree's input border edges (FoldingTree::inputBorderEdges) at their end points: the
-      // input ids of up to four border neighbours of the point's input point, -1 padded.
-      vtkNew<vtkIdTypeArray> neighbours;
-      neighbours->SetName("InputBorderNeighbors");
-      neighbours->SetNumberOfComponents(4);
-      neighbours->SetNumberOfTuples(m.NumberOfPoints());
-      std::map<int, std::vector<int>> around;
-      for (const auto& e : this->Tree.inputBorderEdges)
-      {
-        around[e.first].push_back(e.second);
-        around[e.second].push_back(e.first);
-      }
-      for (int i = 0; i < m.NumberOfPoints(); ++i)
-      {
-        int k = 0;
-        auto it = around.find(m.originalPointIds[i]);
-        if (m.inputBoundary[i] && it != around.end())
-          for (size_t j = 0; j < it->second.size() && k < 4; ++j)
-            neighbours->SetTypedComponent(i, k++, it->second[j]);
-        for (; k < 4; ++k)
-          neighbours->SetTypedComponent(i, k, -1);
-      }
-      leaf->GetPointData()->AddArray(neighbours);
-    }
-    vtkNew<vtkIdTypeArray> cellIds;
-    cellIds->SetName("OriginalCellId");
-    cellIds->SetNumberOfTuples(m.NumberOfFaces());
-    for (int f = 0; f < m.NumberOfFaces(); ++f)
-      cellIds->SetValue(f, m.originalFaceIds[f]);
-    leaf->GetCellData()->AddArray(cellIds);
-    // The leaf's node index on every face, active: viewers colour the tree by leaf, with the
-    // same numbers as the segmentation view's FoldingLeafId (the unfolder does not carry it).
-    vtkNew<vtkIntArray> leafIds;
-    leafIds->SetName("FoldingLeafId");
-    leafIds->SetNumberOfTuples(m.NumberOfFaces());
-    leafIds->FillValue(index);
-    leaf->GetCellData()->AddArray(leafIds);
-    leaf->GetCellData()->SetActiveScalars("FoldingLeafId");
-
+      AddInputBorderArrays(m, this->Tree.inputBorderEdges, leaf->GetPointData());
+    AddTreeCellArrays(m, index, leaf->GetCellData());
     vtkFieldData* fd = leaf->GetFieldData();
     AddNodeMetadata(fd, node, index);
     AddInt(fd, "LeafReason", static_cast<int>(node.leafReason));
     AddString(fd, "LeafReasonName", ToString(node.leafReason));
-    const size_t nf = m.mirroredFlags.size();
-    vtkNew<vtkIntArray> flagPoint, flagLevel, flagKind;
-    vtkNew<vtkTypeUInt64Array> flagMask;
-    flagPoint->SetName("MirroredFlagPoint");
-    flagLevel->SetName("MirroredFlagLevel");
-    flagKind->SetName("MirroredFlagKind");
-    flagMask->SetName("MirroredFlagMask");
-    for (auto* a : { static_cast<vtkDataArray*>(flagPoint),
-           static_cast<vtkDataArray*>(flagLevel),
-           static_cast<vtkDataArray*>(flagKind),
-           static_cast<vtkDataArray*>(flagMask) })
-    {
-      a->SetNumberOfTuples(static_cast<vtkIdType>(nf));
-      fd->AddArray(a);
-    }
-    for (size_t k = 0; k < nf; ++k)
-    {
-      const MirroredFlag& f = m.mirroredFlags[k];
-      flagPoint->SetValue(k, f.point);
-      flagLevel->SetValue(k, f.level);
-      flagKind->SetValue(k, f.flag == LevelFlag::Tear ? 0 : 1);
-      flagMask->SetValue(k, f.mirrorMask);
-    }
+    AddMirroredFlags(m, fd);
     return leaf;
   }
 };
