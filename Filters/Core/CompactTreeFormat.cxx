@@ -124,6 +124,54 @@ bool EncodeSmallestSections(const FoldingTree& tree,
   return any; // else error says why Draco failed
 }
 
+/// The file: header, the sections, the arrays section (if `arrays` has any), checksum.
+bool AssembleFile(const SectionsToWrite& sections,
+  const std::vector<CompactArray>* arrays,
+  std::string& bytes,
+  std::string& packedArrays,
+  std::string& error)
+{
+  const bool withArrays = arrays && !arrays->empty();
+  const std::string& packed = sections.packedTree;
+  const std::string& geometry = sections.geometry;
+  const size_t rawSectionSize = sections.rawTreeBytes;
+  if (packed.size() > 0xffffffffu || rawSectionSize > 0xffffffffu ||
+    geometry.size() > 0xffffffffu)
+  {
+    error = "the tree is too large for the compact format (a section over 4 GB)";
+    return false;
+  }
+  ByteWriter file;
+  file.Raw(std::string(Magic, 4));
+  file.U8(static_cast<uint8_t>(CompactTreeFormatVersion & 0xff));
+  file.U8(static_cast<uint8_t>(CompactTreeFormatVersion >> 8));
+  file.U8(static_cast<uint8_t>((withArrays ? 1 : 0) | (sections.symbolsBeside ? 2 : 0)));
+  file.U8(0);
+  file.U32(static_cast<uint32_t>(packed.size()));
+  file.U32(static_cast<uint32_t>(rawSectionSize));
+  file.Raw(packed);
+  file.U32(static_cast<uint32_t>(geometry.size()));
+  file.Raw(geometry);
+  if (withArrays)
+  {
+    ByteWriter values;
+    WriteArrays(*arrays, values);
+    packedArrays = Deflate(values.Bytes);
+    if (packedArrays.empty() || packedArrays.size() > 0xffffffffu ||
+      values.Bytes.size() > 0xffffffffu)
+    {
+      error = "the arrays cannot be compressed into the compact format (over 4 GB?)";
+      return false;
+    }
+    file.U32(static_cast<uint32_t>(packedArrays.size()));
+    file.U32(static_cast<uint32_t>(values.Bytes.size()));
+    file.Raw(packedArrays);
+  }
+  file.U32(Crc(file.Bytes.data(), file.Bytes.size()));
+  bytes = std::move(file.Bytes);
+  return true;
+}
+
 }
 
 bool LooksLikeCompactTree(const std::string& bytes)
@@ -186,52 +234,17 @@ bool EncodeCompactTree(const FoldingTree& tree,
   }
 
   SectionsToWrite sections;
-  if (!EncodeSmallestSections(tree, options, coding, quantizationError, palette, leaves, sections, error))
+  if (!EncodeSmallestSections(
+        tree, options, coding, quantizationError, palette, leaves, sections, error))
     return false;
-  const std::string& packed = sections.packedTree;
-  const std::string& geometry = sections.geometry;
-  const size_t rawSectionSize = sections.rawTreeBytes;
-
-  if (packed.size() > 0xffffffffu || rawSectionSize > 0xffffffffu ||
-    geometry.size() > 0xffffffffu)
-  {
-    error = "the tree is too large for the compact format (a section over 4 GB)";
-    return false;
-  }
-  ByteWriter file;
-  file.Raw(std::string(Magic, 4));
-  file.U8(static_cast<uint8_t>(CompactTreeFormatVersion & 0xff));
-  file.U8(static_cast<uint8_t>(CompactTreeFormatVersion >> 8));
-  file.U8(static_cast<uint8_t>((withArrays ? 1 : 0) | (sections.symbolsBeside ? 2 : 0)));
-  file.U8(0);
-  file.U32(static_cast<uint32_t>(packed.size()));
-  file.U32(static_cast<uint32_t>(rawSectionSize));
-  file.Raw(packed);
-  file.U32(static_cast<uint32_t>(geometry.size()));
-  file.Raw(geometry);
   std::string packedArrays;
-  if (withArrays)
-  {
-    ByteWriter values;
-    WriteArrays(*arrays, values);
-    packedArrays = Deflate(values.Bytes);
-    if (packedArrays.empty() || packedArrays.size() > 0xffffffffu ||
-      values.Bytes.size() > 0xffffffffu)
-    {
-      error = "the arrays cannot be compressed into the compact format (over 4 GB?)";
-      return false;
-    }
-    file.U32(static_cast<uint32_t>(packedArrays.size()));
-    file.U32(static_cast<uint32_t>(values.Bytes.size()));
-    file.Raw(packedArrays);
-  }
-  file.U32(Crc(file.Bytes.data(), file.Bytes.size()));
-  bytes = std::move(file.Bytes);
+  if (!AssembleFile(sections, arrays, bytes, packedArrays, error))
+    return false;
   if (stats)
   {
     stats->bytes = bytes.size();
-    stats->treeSectionBytes = packed.size();
-    stats->geometryBytes = geometry.size();
+    stats->treeSectionBytes = sections.packedTree.size();
+    stats->geometryBytes = sections.geometry.size();
     stats->arrayBytes = packedArrays.size();
     stats->quantizationBits = coding.bits;
     stats->quantizationError = quantizationError;

@@ -176,6 +176,31 @@ void WriteTreeSection(const FoldingTree& tree,
   }
 }
 
+/// The palette of point data (WriteTreeSection's last part).
+static void ReadPalette(ByteReader& r, std::vector<PointData>& palette)
+{
+  const size_t entries =
+    r.Count(std::min<uint64_t>(MaximumCount, r.Remaining()), "palette entries");
+  for (size_t e = 0; e < entries; ++e)
+  {
+    PointData d;
+    d.tear = r.VarUInt();
+    d.plane = r.VarUInt();
+    const uint8_t flags = r.U8();
+    d.projected = flags & 3;
+    d.boundary = (flags >> 2) & 1;
+    const size_t records = r.Count(2 * MaximumFoldingTreeLevels, "mirrored-flag records");
+    for (size_t k = 0; k < records; ++k)
+    {
+      const int level = r.U8(), flag = r.U8();
+      if (flag > static_cast<int>(LevelFlag::Plane))
+        throw CompactFormatError("tree section: unknown mirrored flag");
+      d.mirrored.emplace_back(level, flag, r.VarUInt());
+    }
+    palette.push_back(std::move(d));
+  }
+}
+
 void ReadTreeSection(ByteReader& r,
   FoldingTree& tree,
   LeafGeometryCoding& coding,
@@ -266,26 +291,7 @@ void ReadTreeSection(ByteReader& r,
   }
   if (!open.empty())
     throw CompactFormatError("tree section: fewer nodes than the children listed");
-  const size_t entries =
-    r.Count(std::min<uint64_t>(MaximumCount, r.Remaining()), "palette entries");
-  for (size_t e = 0; e < entries; ++e)
-  {
-    PointData d;
-    d.tear = r.VarUInt();
-    d.plane = r.VarUInt();
-    const uint8_t flags = r.U8();
-    d.projected = flags & 3;
-    d.boundary = (flags >> 2) & 1;
-    const size_t records = r.Count(2 * MaximumFoldingTreeLevels, "mirrored-flag records");
-    for (size_t k = 0; k < records; ++k)
-    {
-      const int level = r.U8(), flag = r.U8();
-      if (flag > static_cast<int>(LevelFlag::Plane))
-        throw CompactFormatError("tree section: unknown mirrored flag");
-      d.mirrored.emplace_back(level, flag, r.VarUInt());
-    }
-    palette.push_back(std::move(d));
-  }
+  ReadPalette(r, palette);
 }
 
 void AttachLeaves(FoldingTree& tree,

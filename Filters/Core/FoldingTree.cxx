@@ -110,6 +110,8 @@ int FoldingTree::MaximumFoldsOnPath() const
   return folds;
 }
 
+// (Over 100 lines because it is one flat list of checks, one per invariant of FoldingTree,
+// each with its own message; split up, the list would no longer read as one.)
 std::string FoldingTree::Validate() const
 {
   std::ostringstream os;

@@ -207,6 +207,10 @@ void MarkTears(WorkMesh& w, const std::vector<char>& S, const std::vector<int>& 
 }
 }
 
+// The recursion of the paper's section 4 (see FoldingTreeBuilderInternal.h). (Over 100 lines
+// because it is that sequence - leaf tests, detection, the choice of S, the fold, the
+// segmentation of what remains - whose steps are named helpers; what is left is their order
+// and the node bookkeeping between them.)
 int Builder::Build(WorkMesh w, int parent, int depth, double eps, int folds, uint64_t pathFolds)
 {
   const std::vector<int> dropped = WeldAndDropCollapsed(w);

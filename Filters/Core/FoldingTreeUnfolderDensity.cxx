@@ -137,6 +137,9 @@ int Unfolder::FoldExcessFaces(const FoldingNode& node, const Piece& piece)
   return piece.NumberOfFaces() - 2 * pending - node.numberOfFaces;
 }
 
+// (Over 100 lines because the lazy priority queue shares its state - the removal tried,
+// the versions, the budgets granted - with the cost that orders it; the scope, the point
+// count and the compaction are named helpers.)
 int Unfolder::MatchDiscardedDensity(const FoldingNode& node,
   Piece& piece,
   std::vector<char>* added,

@@ -44,6 +44,8 @@ int Unfolder::InputNonManifoldFaces(const Piece& piece, int a, int b) const
  * agreement), preferring faces that are not gap fills nor slivers; the others go (the holes
  * they leave are filled afterwards). Returns the number of faces dropped.
  */
+// (Over 100 lines because the ranking of the faces at an edge - input non-manifold edges,
+// fills, slivers, duplicates, normal agreement - is one rule written in one place.)
 int Unfolder::DropNonManifoldFaces(Piece& piece) const
 {
   int dropped = 0;
@@ -162,6 +164,8 @@ int Unfolder::DropNonManifoldFaces(Piece& piece) const
  * dropped (the hole is filled afterwards). Returns the number of faces flipped; `dropped`
  * counts the faces removed.
  */
+// (Over 100 lines because patches, the greedy decision and the conflict drop share the
+// patch tables built at the start.)
 int Unfolder::OrientComponents(Piece& piece, int& dropped)
 {
   const int nf = piece.NumberOfFaces();

@@ -220,6 +220,8 @@ double Bound(const std::array<Vec3, 3>& corner,
 constexpr size_t BatchPieces = 4096;
 }
 
+// (Over 100 lines because the subdivision loop - heap of pieces, settled bounds, parallel
+// batches, the stop level - is one algorithm whose parts share the heap and the bounds.)
 HausdorffBounds DirectedHausdorffBounds(const TriangleMesh& from,
   const SurfaceDistanceQuery& to,
   double tolerance,
