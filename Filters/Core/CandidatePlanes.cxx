@@ -10,6 +10,22 @@
 
 namespace foldingmeshes
 {
+namespace
+{
+/// The three planes through m perpendicular to the eigenvectors of the covariance c.
+void PlanesOfCovariance(const Vec3& m, const Eigen::Matrix3d& c, std::array<Plane, 3>& planes)
+{
+  Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver(c);
+  for (int k = 0; k < 3; ++k)
+  {
+    Plane p;
+    p.origin = m;
+    p.normal = solver.eigenvectors().col(k).normalized();
+    planes[k] = CanonicalPlane(p, m);
+  }
+}
+}
+
 bool PrincipalPlanes(const PreparedMesh& mesh,
   const std::vector<double>& weights,
   std::array<Plane, 3>& planes)
@@ -34,14 +50,7 @@ bool PrincipalPlanes(const PreparedMesh& mesh,
     }
   }
   c /= s;
-  Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver(c);
-  for (int k = 0; k < 3; ++k)
-  {
-    Plane p;
-    p.origin = m;
-    p.normal = solver.eigenvectors().col(k).normalized();
-    planes[k] = CanonicalPlane(p, m);
-  }
+  PlanesOfCovariance(m, c, planes);
   return true;
 }
 
@@ -121,14 +130,7 @@ bool SurfacePrincipalPlanes(const PreparedMesh& mesh, std::array<Plane, 3>& plan
   const Vec3 m = first / area + center;
   const Vec3 mc = first / area;
   const Eigen::Matrix3d c = second / area - mc * mc.transpose();
-  Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver(c);
-  for (int k = 0; k < 3; ++k)
-  {
-    Plane p;
-    p.origin = m;
-    p.normal = solver.eigenvectors().col(k).normalized();
-    planes[k] = CanonicalPlane(p, m);
-  }
+  PlanesOfCovariance(m, c, planes);
   return true;
 }
 
