@@ -19,6 +19,14 @@ namespace foldingmeshes
 {
 namespace unfolder_detail
 {
+namespace
+{
+/// A small loop (FillWithinTolerance) is no wider than this many tolerances ...
+constexpr double SmallLoopDiameter = 4.0;
+/// ... or this many of its mean edge lengths (a missing face or two on a coarse mesh).
+constexpr double SmallLoopMeanEdges = 2.5;
+}
+
 using namespace repair;
 
 /**
@@ -175,7 +183,7 @@ bool FillWithinTolerance(const std::vector<Vec3>& points,
   double perimeter = 0.0;
   for (int i = 0; i < n; ++i)
     perimeter += (points[loop[i]] - points[loop[(i + 1) % n]]).norm();
-  if (diameter > std::max(4.0 * tolerance, 2.5 * perimeter / n))
+  if (diameter > std::max(SmallLoopDiameter * tolerance, SmallLoopMeanEdges * perimeter / n))
     return false;
   const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(cov);
   const Vec3 normal = eig.eigenvectors().col(0);

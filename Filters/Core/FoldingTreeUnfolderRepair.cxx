@@ -16,6 +16,13 @@ namespace foldingmeshes
 {
 namespace unfolder_detail
 {
+namespace
+{
+/// A face whose height over its longest edge is below this share of the root epsilon is a
+/// sliver (the last kept at a non-manifold edge).
+constexpr double SliverHeightOfEpsilon = 0.01;
+}
+
 using namespace repair;
 /// The number of faces of the input's non-manifold edge that the edge a-b of `piece` copies
 /// (through the points' input ids, FoldingTree::inputNonManifoldEdges), 0 if none.
@@ -49,7 +56,7 @@ int Unfolder::InputNonManifoldFaces(const Piece& piece, int a, int b) const
 int Unfolder::DropNonManifoldFaces(Piece& piece) const
 {
   int dropped = 0;
-  const double sliverHeight = 0.01 * this->Tree.rootEpsilon;
+  const double sliverHeight = SliverHeightOfEpsilon * this->Tree.rootEpsilon;
   for (int round = 0; round < 4; ++round)
   {
     const auto edges = EdgeFaces(piece);

@@ -14,6 +14,15 @@ namespace foldingmeshes
 {
 namespace unfolder_detail
 {
+namespace
+{
+/// The zipper's grid cells are at least the longest open edge over this.
+constexpr double ZipCellsPerLongestEdge = 8.0;
+/// A tear vertex is zipped into an edge only between its end shares (as a share of the
+/// edge's length): nearer an end point, the end point is its partner.
+constexpr double ZipEdgeEndShare = 0.02;
+}
+
 /**
  * Inserts unmatched tear vertices into open boundary edges of other children whose two end
  * points are tear vertices, within `tol` (the vertex moves half way to the edge). Returns
@@ -65,7 +74,7 @@ int Unfolder::Zip(Piece& out,
     double longest = 0.0;
     for (const Edge& e : open)
       longest = std::max(longest, (out.points[e.first] - out.points[e.second]).norm());
-    const double cell = std::max({ tol, longest / 8.0, 1e-300 });
+    const double cell = std::max({ tol, longest / ZipCellsPerLongestEdge, 1e-300 });
     auto cellOf = [cell](double x) { return static_cast<long long>(std::floor(x / cell)); };
     std::unordered_map<std::array<long long, 3>, std::vector<int>, PointBuckets::KeyHash> buckets;
     for (int i = 0; i < static_cast<int>(open.size()); ++i)
@@ -104,7 +113,7 @@ int Unfolder::Zip(Piece& out,
         if (!(len2 > 0.0))
           continue;
         const double t = (x - out.points[a]).dot(ab) / len2;
-        if (t <= 0.02 || t >= 0.98)
+        if (t <= ZipEdgeEndShare || t >= 1.0 - ZipEdgeEndShare)
           continue;
         const Vec3 q = out.points[a] + t * ab;
         const double d = (x - q).norm();

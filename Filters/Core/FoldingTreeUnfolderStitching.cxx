@@ -15,6 +15,15 @@ namespace foldingmeshes
 {
 namespace unfolder_detail
 {
+namespace
+{
+/// The smallest stitch / weld tolerance, as a share of the tree's diagonal (rounding).
+constexpr double RoundingOfDiagonal = 1e-12;
+/// Two open vertices of one copy closer than this share of the root epsilon are welded too
+/// (WeldBoundaries).
+constexpr double SameCopyWeldOfEpsilon = 0.01;
+}
+
 void Unfolder::Stitch(const FoldingNode& node,
   Piece& piece,
   const std::vector<int>& childOf,
@@ -22,7 +31,7 @@ void Unfolder::Stitch(const FoldingNode& node,
 {
   const int level = node.depth;
   const double tol = std::max(this->Options.stitchToleranceScale * node.epsilon,
-    1e-12 * std::max(this->Tree.diagonal, 1e-300));
+    RoundingOfDiagonal * std::max(this->Tree.diagonal, 1e-300));
   std::vector<char> isTear(piece.points.size());
   for (int v = 0; v < piece.NumberOfPoints(); ++v)
     isTear[v] = IsTear(piece.tear[v], level);
@@ -50,7 +59,7 @@ void Unfolder::WeldBoundaries(Piece& piece, SeamReport& seam)
 {
   const std::vector<char> open = BorderPoints(piece.triangles, piece.points.size());
   const double tol = std::max(this->Options.weldToleranceScale * this->Tree.rootEpsilon,
-    1e-12 * std::max(this->Tree.diagonal, 1e-300));
+    RoundingOfDiagonal * std::max(this->Tree.diagonal, 1e-300));
   // No gap filling here: loops of open edges between copies may be the input's own
   // borders (new faces there would leave the input surface).
   // Two open vertices of one copy within a hundredth of the root epsilon are merged as well:
@@ -68,7 +77,7 @@ void Unfolder::WeldBoundaries(Piece& piece, SeamReport& seam)
     this->Tree.rootEpsilon,
     false,
     seam,
-    std::min(tol, 0.01 * this->Tree.rootEpsilon));
+    std::min(tol, SameCopyWeldOfEpsilon * this->Tree.rootEpsilon));
 }
 
 /// Whether face t of `piece` (`face`: its input face and the sorted input ids of its

@@ -18,6 +18,19 @@ namespace
 {
 /// Largest share of the error limit a collapse of a vertex into its ring may use.
 constexpr double CollapseShareOfLimit = 0.1;
+/// A point is inside a projected star face down to this barycentric weight (rounding).
+constexpr double BarycentricSlack = 1e-9;
+/// A new face is degenerate when twice its area is at most this share of its longest edge
+/// squared.
+constexpr double DegenerateAreaOfLongest = 1e-6;
+/// Every star face must face the star's mean normal by more than this cosine (else the star
+/// does not project one-to-one).
+constexpr double FacingCosine = 1e-3;
+/// An ear is too flat (or reflex) in the projection when its doubled signed area is at most
+/// this share of its longer side squared.
+constexpr double FlatEarArea = 1e-9;
+/// Weight of the new diagonal's length in an ear's cost (a tie-breaker: the shorter one).
+constexpr double EarLengthWeight = 1e-3;
 
 /// 2D orientation (twice the signed area) of (a, b, c).
 double Orientation(const Eigen::Vector2d& a, const Eigen::Vector2d& b, const Eigen::Vector2d& c)
@@ -82,7 +95,7 @@ int OverlappingStarFace(const std::vector<Vec3>& x,
         continue;
       const double l0 = Orientation(q, a, b) / area, l1 = Orientation(o, q, b) / area,
                    l2 = Orientation(o, a, q) / area;
-      const double slack = -1e-9;
+      const double slack = -BarycentricSlack;
       if (l0 < slack || l1 < slack || l2 < slack)
         continue;
       const double d =
@@ -255,7 +268,7 @@ private:
     const std::vector<Vec3>& x = this->X;
     const double longest = std::max(
       { (x[a] - x[b]).squaredNorm(), (x[b] - x[c]).squaredNorm(), (x[c] - x[a]).squaredNorm() });
-    return (x[b] - x[a]).cross(x[c] - x[a]).norm() > 1e-6 * longest &&
+    return (x[b] - x[a]).cross(x[c] - x[a]).norm() > DegenerateAreaOfLongest * longest &&
       (this->Sharpest <= 0.0 || SmallestAngle(x[a], x[b], x[c]) >= this->Sharpest);
   }
 
@@ -290,7 +303,7 @@ bool RingRetriangulation::ClipEars(std::vector<Triangle>& created, const char*& 
     return false;
   normal.normalize();
   for (const Vec3& n : faceNormal)
-    if (n.dot(normal) <= 1e-3 * n.norm())
+    if (n.dot(normal) <= FacingCosine * n.norm())
       return false;
   // The ring in the plane perpendicular to the mean normal, v at the origin.
   const Vec3 u = normal.unitOrthogonal(), w = normal.cross(u);
@@ -316,7 +329,7 @@ bool RingRetriangulation::ClipEars(std::vector<Triangle>& created, const char*& 
     const int b = poly[(i + 1) % poly.size()];
     const Eigen::Vector2d &pa = flat[a], &pb = flat[b], &pc = flat[c];
     const double area = Orientation(pa, pb, pc);
-    if (area <= 1e-9 * std::max((pa - pc).squaredNorm(), (pb - pa).squaredNorm()))
+    if (area <= FlatEarArea * std::max((pa - pc).squaredNorm(), (pb - pa).squaredNorm()))
       return false;
     for (int q : poly)
       if (q != a && q != b && q != c)
@@ -336,7 +349,7 @@ bool RingRetriangulation::ClipEars(std::vector<Triangle>& created, const char*& 
   // The ear that departs least from the old star first (sampled at its centroid and the
   // midpoint of its new diagonal), the shorter diagonal on (near) ties: on a crease, the
   // diagonals follow the crease instead of cutting across it.
-  const double lengthWeight = 1e-3;
+  const double lengthWeight = EarLengthWeight;
   double spoke = 0.0;
   for (int a : ring)
     spoke += (x[a] - x[v]).norm() / m;
