@@ -148,23 +148,21 @@ UnfoldArguments ParseUnfoldArguments(int argc, char* argv[], vtkFoldingTreeUnfol
   for (int i = 0; i < argc; ++i)
   {
     const std::string arg = argv[i];
+    auto value = [&](const char* what) -> std::string
+    {
+      if (i + 1 >= argc)
+        throw std::runtime_error(std::string("missing value after ") + what);
+      return argv[++i];
+    };
     if (arg == "--help" || arg == "-h")
     {
       std::cout << Usage;
       std::exit(0);
     }
     else if (arg == "--outdir")
-    {
-      if (i + 1 >= argc)
-        throw std::runtime_error("missing value after --outdir");
-      args.outdir = argv[++i];
-    }
+      args.outdir = value("--outdir");
     else if (arg == "--up")
-    {
-      if (i + 1 >= argc)
-        throw std::runtime_error("missing value after --up");
-      args.upAxis = ParseUpAxis(argv[++i]);
-    }
+      args.upAxis = ParseUpAxis(value("--up"));
     else if (arg == "--no-stitch")
       unfolder->StitchOff();
     else if (arg == "--no-close-holes")
@@ -174,11 +172,7 @@ UnfoldArguments ParseUnfoldArguments(int argc, char* argv[], vtkFoldingTreeUnfol
     else if (arg == "--keep-copy-density")
       unfolder->MatchDiscardedDensityOff();
     else if (arg == "--original")
-    {
-      if (i + 1 >= argc)
-        throw std::runtime_error("missing value after --original");
-      args.originalPath = argv[++i];
-    }
+      args.originalPath = value("--original");
     else if (arg == "--json")
       args.json = true;
     else if (arg == "--quiet")

@@ -23,12 +23,15 @@ enum AttributeId : uint32_t
   SymbolId = 2 // uint32: the point's entry in the tree's palette of point data
 };
 
+/// An attribute with one value per point, or (values > 0) `values` values the caller maps to
+/// the points (SetExplicitMapping).
 template <typename T>
 int AddAttribute(draco::Mesh& mesh,
   draco::GeometryAttribute::Type type,
   draco::DataType dataType,
   int components,
-  uint32_t uniqueId)
+  uint32_t uniqueId,
+  uint32_t values = 0)
 {
   draco::GeometryAttribute ga;
   ga.Init(type,
@@ -38,7 +41,8 @@ int AddAttribute(draco::Mesh& mesh,
     false,
     static_cast<int64_t>(sizeof(T)) * components,
     0);
-  const int id = mesh.AddAttribute(ga, true, mesh.num_points());
+  const int id = values > 0 ? mesh.AddAttribute(ga, false, values)
+                            : mesh.AddAttribute(ga, true, mesh.num_points());
   mesh.attribute(id)->set_unique_id(uniqueId);
   return id;
 }
@@ -52,11 +56,12 @@ std::vector<uint32_t> PositionIndices(const std::vector<LeafToEncode>& leaves,
   std::vector<uint32_t> indices;
   std::map<std::array<double, 3>, uint32_t> first; // coordinates -> position
   std::vector<size_t> lastLeaf;                    // per position: the last leaf using it
+  const bool weld = coding.weldPositions && !coding.keepOrder;
   for (size_t l = 0; l < leaves.size(); ++l)
     for (const Vec3& p : leaves[l].mesh->points)
     {
       const std::array<double, 3> key{ p.x(), p.y(), p.z() };
-      const auto found = coding.weldPositions && !coding.keepOrder ? first.find(key) : first.end();
+      const auto found = weld ? first.find(key) : first.end();
       // Never two points of one leaf on one position: that would make degenerate faces.
       if (found != first.end() && lastLeaf[found->second] != l)
       {
@@ -67,7 +72,7 @@ std::vector<uint32_t> PositionIndices(const std::vector<LeafToEncode>& leaves,
       const uint32_t index = static_cast<uint32_t>(positions.size());
       positions.push_back(p);
       lastLeaf.push_back(l);
-      if (coding.weldPositions)
+      if (weld)
         first.emplace(key, index);
       indices.push_back(index);
     }
@@ -82,16 +87,12 @@ std::unique_ptr<draco::Mesh> BuildMesh(const std::vector<LeafToEncode>& leaves,
   const std::vector<uint32_t> positionOf = PositionIndices(leaves, coding, positions);
   const uint32_t points = static_cast<uint32_t>(positionOf.size());
   mesh->set_num_points(points);
-  draco::GeometryAttribute ga;
-  ga.Init(draco::GeometryAttribute::POSITION,
-    nullptr,
-    3,
+  const int position = AddAttribute<float>(*mesh,
+    draco::GeometryAttribute::POSITION,
     draco::DT_FLOAT32,
-    false,
-    static_cast<int64_t>(sizeof(float)) * 3,
-    0);
-  const int position = mesh->AddAttribute(ga, false, static_cast<uint32_t>(positions.size()));
-  mesh->attribute(position)->set_unique_id(PositionId);
+    3,
+    PositionId,
+    static_cast<uint32_t>(positions.size()));
   for (size_t i = 0; i < positions.size(); ++i)
   {
     const Vec3 offset = positions[i] - coding.origin;

@@ -1,7 +1,6 @@
 // Per-point symbols of the compact tree file in border order (CompactPointSymbols.h).
 #include "CompactPointSymbols.h"
 
-
 #include <algorithm>
 #include <utility>
 
