@@ -44,8 +44,12 @@ connected region that has it (Folding meshes, SGP 2006, section 3).
   --separate-parts         regions never span separate parts (default: parts touching within
                            epsilon are connected)
   --seed N                 seed of the candidate sampling (default 1)
+  --rotation               also find the best rotational axis and order k (a turn by 360/k
+                           maps a region onto itself within epsilon); writes the axis glyph
+  --max-rotation-order N   largest order tried with --rotation (default 64, range 2..360)
   --output FILE            labelled mesh (default: MESH stem + "_symmetry.vtp" in --outdir)
   --plane-output FILE      plane glyph (default: MESH stem + "_plane.vtp" in --outdir)
+  --axis-output FILE       axis glyph with --rotation (default: MESH stem + "_axis.vtp")
   --picture FILE           PNG picture (default: MESH stem + "_symmetry.png" in --outdir)
   --up auto|x|y|z          the picture's up axis (default auto: the longest axis lying in the
                            plane; files differ in which axis is up)

@@ -29,7 +29,7 @@ namespace
 /// What detect was asked (the detector's options go straight to the filter).
 struct DetectArguments
 {
-  std::string meshPath, output, planeOutput, picture, outdir = ".";
+  std::string meshPath, output, planeOutput, axisOutput, picture, outdir = ".";
   int upAxis = -1;
   bool json = false, quiet = false, noFiles = false;
 };
@@ -63,8 +63,7 @@ DetectArguments ParseDetectArguments(int argc, char* argv[], vtkSymmetryPlaneDet
     }
     else if (arg == "--absolute-tolerance")
     {
-      detector->SetTolerance(
-        ParseNumber(arg, value("--absolute-tolerance"), 1e-12, 1e30, true));
+      detector->SetTolerance(ParseNumber(arg, value("--absolute-tolerance"), 1e-12, 1e30, true));
       detector->SetToleranceMode(vtkSymmetryPlaneDetector::ABSOLUTE);
       absoluteGiven = true;
     }
@@ -91,6 +90,12 @@ DetectArguments ParseDetectArguments(int argc, char* argv[], vtkSymmetryPlaneDet
       detector->SetRandomSeed(ParseInteger(arg, value("--seed"), -2147483647, 2147483647));
     else if (arg == "--separate-parts")
       detector->ConnectNearbyPartsOff();
+    else if (arg == "--rotation")
+      detector->DetectRotationOn();
+    else if (arg == "--max-rotation-order")
+      detector->SetMaximumRotationOrder(ParseInteger(arg, value("--max-rotation-order"), 2, 360));
+    else if (arg == "--axis-output")
+      args.axisOutput = value("--axis-output");
     else if (arg == "--output")
       args.output = value("--output");
     else if (arg == "--plane-output")
@@ -165,8 +170,14 @@ bool WriteDetectOutputs(vtkSymmetryPlaneDetector* detector, DetectArguments& arg
     args.planeOutput = (dir / (stem + "_plane.vtp")).string();
   if (args.picture.empty())
     args.picture = (dir / (stem + "_symmetry.png")).string();
+  if (!detector->GetDetectRotation())
+    args.axisOutput.clear();
+  else if (args.axisOutput.empty())
+    args.axisOutput = (dir / (stem + "_axis.vtp")).string();
   if (!foldingmeshes::WriteMesh(detector->GetOutput(0), args.output, error) ||
-    !foldingmeshes::WriteMesh(detector->GetOutput(1), args.planeOutput, error))
+    !foldingmeshes::WriteMesh(detector->GetOutput(1), args.planeOutput, error) ||
+    (!args.axisOutput.empty() &&
+      !foldingmeshes::WriteMesh(detector->GetOutput(2), args.axisOutput, error)))
   {
     std::cerr << "foldingmeshes: " << error << "\n";
     return false;
@@ -187,7 +198,9 @@ bool WriteDetectOutputs(vtkSymmetryPlaneDetector* detector, DetectArguments& arg
   return true;
 }
 
-void PrintDetectJson(vtkSymmetryPlaneDetector* detector, const DetectArguments& args, double seconds)
+void PrintDetectJson(vtkSymmetryPlaneDetector* detector,
+  const DetectArguments& args,
+  double seconds)
 {
   const double* o = detector->GetPlaneOrigin();
   const double* n = detector->GetPlaneNormal();
@@ -210,15 +223,37 @@ void PrintDetectJson(vtkSymmetryPlaneDetector* detector, const DetectArguments& 
     detector->GetCoarseIterations(),
     detector->GetFineIterations(),
     seconds);
+  if (detector->GetDetectRotation())
+  {
+    const double* ao = detector->GetRotationAxisOrigin();
+    const double* ad = detector->GetRotationAxisDirection();
+    std::printf(",\n  \"rotation\": {\"origin\": [%.9g, %.9g, %.9g], "
+                "\"direction\": [%.9g, %.9g, %.9g], \"order\": %d, \"found\": %s, "
+                "\"continuous\": %s, \"areaFraction\": %.6f}",
+      ao[0],
+      ao[1],
+      ao[2],
+      ad[0],
+      ad[1],
+      ad[2],
+      detector->GetRotationOrder(),
+      detector->GetRotationFound() ? "true" : "false",
+      detector->GetRotationContinuous() ? "true" : "false",
+      detector->GetRotationalAreaFraction());
+  }
   if (!args.noFiles)
-    std::printf(",\n  \"outputs\": {\"mesh\": %s, \"plane\": %s, \"picture\": %s}",
+    std::printf(",\n  \"outputs\": {\"mesh\": %s, \"plane\": %s, \"axis\": %s, "
+                "\"picture\": %s}",
       JsonString(args.output).c_str(),
       JsonString(args.planeOutput).c_str(),
+      args.axisOutput.empty() ? "null" : JsonString(args.axisOutput).c_str(),
       args.picture.empty() ? "null" : JsonString(args.picture).c_str());
   std::printf("\n}\n");
 }
 
-void PrintDetectText(vtkSymmetryPlaneDetector* detector, const DetectArguments& args, double seconds)
+void PrintDetectText(vtkSymmetryPlaneDetector* detector,
+  const DetectArguments& args,
+  double seconds)
 {
   const double* o = detector->GetPlaneOrigin();
   const double* n = detector->GetPlaneNormal();
@@ -234,12 +269,27 @@ void PrintDetectText(vtkSymmetryPlaneDetector* detector, const DetectArguments& 
   std::printf("iterations:              %d coarse, %d fine\n",
     detector->GetCoarseIterations(),
     detector->GetFineIterations());
+  if (detector->GetDetectRotation())
+  {
+    const double* ao = detector->GetRotationAxisOrigin();
+    const double* ad = detector->GetRotationAxisDirection();
+    std::printf("rotation axis origin:    %.6g %.6g %.6g\n", ao[0], ao[1], ao[2]);
+    std::printf("rotation axis direction: %.6f %.6f %.6f\n", ad[0], ad[1], ad[2]);
+    std::printf("rotation order:          %d%s\n",
+      detector->GetRotationOrder(),
+      detector->GetRotationContinuous() ? " (every order up to the cap: a surface of revolution)"
+                                        : "");
+    std::printf("rotational area:         %.1f%%\n", 100.0 * detector->GetRotationalAreaFraction());
+    std::printf("rotation found:          %s\n", detector->GetRotationFound() ? "yes" : "no");
+  }
   std::printf("time:                    %.3f s\n", seconds);
   if (!args.noFiles)
   {
     std::printf("wrote:                   %s\n                         %s\n",
       args.output.c_str(),
       args.planeOutput.c_str());
+    if (!args.axisOutput.empty())
+      std::printf("                         %s\n", args.axisOutput.c_str());
     if (!args.picture.empty())
       std::printf("                         %s\n", args.picture.c_str());
   }

@@ -1,6 +1,7 @@
 #include "vtkSymmetryPlaneDetector.h"
 
 #include "Core/MeshPreparation.h"
+#include "Core/RotationalSymmetry.h"
 #include "Core/SymmetryDetection.h"
 #include "vtkFoldingArrays.h"
 #include "vtkFoldingDebugTrace.h"
@@ -100,6 +101,97 @@ void BuildPlaneGlyph(const foldingmeshes::PreparedMesh& mesh,
   quads->InsertNextCell(4, ids);
   glyph->SetPoints(points);
   glyph->SetPolys(quads);
+}
+
+/// A line along the axis over the extent of the selected faces' points (all points when none
+/// is selected), with a 10% margin.
+void BuildAxisGlyph(const foldingmeshes::PreparedMesh& mesh,
+  const std::vector<char>& faces,
+  const foldingmeshes::RotationAxis& axis,
+  vtkPolyData* glyph)
+{
+  double lo = std::numeric_limits<double>::max(), hi = -lo;
+  for (int pass = 0; pass < 2 && lo > hi; ++pass)
+    for (int f = 0; f < mesh.NumberOfFaces(); ++f)
+      if (pass == 1 || faces[f])
+        for (int p : mesh.triangles[f])
+        {
+          const double t = (mesh.points[p] - axis.origin).dot(axis.direction);
+          lo = std::min(lo, t);
+          hi = std::max(hi, t);
+        }
+  const double margin = 0.1 * (hi - lo) + 1e-3 * mesh.diagonal;
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  for (double t : { lo - margin, hi + margin })
+  {
+    const Vec3 p = axis.origin + t * axis.direction;
+    points->InsertNextPoint(p.x(), p.y(), p.z());
+  }
+  vtkNew<vtkCellArray> lines;
+  const vtkIdType ids[2] = { 0, 1 };
+  lines->InsertNextCell(2, ids);
+  glyph->SetPoints(points);
+  glyph->SetLines(lines);
+}
+
+/// Names of the rotation's field arrays (output 0 and the axis glyph).
+const char* const RotationFieldNames[] = { "RotationAxisOrigin",
+  "RotationAxisDirection",
+  "RotationOrder",
+  "RotationFound",
+  "RotationContinuous",
+  "RotationalAreaFraction" };
+
+/// The rotation's arrays on output 0 (RotationRegion, RotationDistance, the field arrays)
+/// and the axis glyph on output 2. Input arrays of these names are renamed, with a warning.
+void AddRotationOutputs(const foldingmeshes::PreparedMesh& mesh,
+  const foldingmeshes::RotationResult& rotation,
+  vtkPolyData* output,
+  vtkPolyData* axisGlyph,
+  vtkObject* warner)
+{
+  {
+    std::vector<std::string> renamed;
+    foldingmeshes::RenameReservedArrays(output->GetCellData(), { "RotationRegion" }, renamed);
+    foldingmeshes::RenameReservedArrays(output->GetPointData(), { "RotationDistance" }, renamed);
+    for (const std::string& r : renamed)
+      vtkWarningWithObjectMacro(
+        warner, "The input's array " << r << " (the name is the detector's).");
+  }
+  const vtkIdType nf = output->GetNumberOfCells();
+  vtkNew<vtkIntArray> region;
+  region->SetName("RotationRegion");
+  region->SetNumberOfTuples(nf);
+  for (vtkIdType f = 0; f < nf; ++f)
+    region->SetValue(f, rotation.faceLabel[f]);
+  output->GetCellData()->AddArray(region);
+  const vtkIdType np = output->GetNumberOfPoints();
+  vtkNew<vtkDoubleArray> distance;
+  distance->SetName("RotationDistance");
+  distance->SetNumberOfTuples(np);
+  for (vtkIdType i = 0; i < np; ++i)
+  {
+    const double d = rotation.distance[mesh.inputToWelded[i]];
+    distance->SetValue(i, std::isfinite(d) ? d : std::numeric_limits<double>::quiet_NaN());
+  }
+  output->GetPointData()->AddArray(distance);
+
+  vtkFieldData* field = output->GetFieldData();
+  field->AddArray(MakeTuple("RotationAxisOrigin", rotation.axis.origin.data(), 3));
+  field->AddArray(MakeTuple("RotationAxisDirection", rotation.axis.direction.data(), 3));
+  const double order = rotation.order, found = rotation.found ? 1.0 : 0.0,
+               continuous = rotation.continuous ? 1.0 : 0.0;
+  field->AddArray(MakeTuple("RotationOrder", &order, 1));
+  field->AddArray(MakeTuple("RotationFound", &found, 1));
+  field->AddArray(MakeTuple("RotationContinuous", &continuous, 1));
+  field->AddArray(MakeTuple("RotationalAreaFraction", &rotation.symmetricAreaFraction, 1));
+
+  BuildAxisGlyph(mesh, rotation.faceLabel, rotation.axis, axisGlyph);
+  vtkNew<vtkFieldData> glyphField;
+  for (const char* name : RotationFieldNames)
+    glyphField->AddArray(field->GetAbstractArray(name));
+  axisGlyph->SetFieldData(glyphField);
 }
 
 /// The filter's initial plane, its normal made unit length. False when the origin is not
@@ -252,7 +344,7 @@ void SetPlaneGlyphOutput(const foldingmeshes::PreparedMesh& mesh,
 vtkSymmetryPlaneDetector::vtkSymmetryPlaneDetector()
 {
   this->SetNumberOfInputPorts(1);
-  this->SetNumberOfOutputPorts(2);
+  this->SetNumberOfOutputPorts(3);
   this->SetController(vtkMultiProcessController::GetGlobalController());
 }
 
@@ -285,9 +377,16 @@ int vtkSymmetryPlaneDetector::RequestData(vtkInformation* request,
         &this->PlaneNormal[1],
         &this->PlaneNormal[2],
         &this->SymmetricAreaFraction,
-        &this->ToleranceLength },
-      { &this->CoarseIterations, &this->FineIterations },
-      { &this->SymmetryFound } });
+        &this->ToleranceLength,
+        &this->RotationAxisOrigin[0],
+        &this->RotationAxisOrigin[1],
+        &this->RotationAxisOrigin[2],
+        &this->RotationAxisDirection[0],
+        &this->RotationAxisDirection[1],
+        &this->RotationAxisDirection[2],
+        &this->RotationalAreaFraction },
+      { &this->CoarseIterations, &this->FineIterations, &this->RotationOrder },
+      { &this->SymmetryFound, &this->RotationFound, &this->RotationContinuous } });
 }
 
 //------------------------------------------------------------------------------
@@ -298,13 +397,19 @@ int vtkSymmetryPlaneDetector::RequestWholeData(vtkInformation*,
   vtkPolyData* input = vtkPolyData::GetData(inputVector[0], 0);
   vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
   vtkPolyData* glyph = vtkPolyData::GetData(outputVector, 1);
+  vtkPolyData* axisGlyph = vtkPolyData::GetData(outputVector, 2);
   this->SymmetricAreaFraction = 0.0;
+  this->RotationOrder = 0;
+  this->RotationFound = this->RotationContinuous = false;
+  this->RotationalAreaFraction = 0.0;
+  for (int k = 0; k < 3; ++k)
+    this->RotationAxisOrigin[k] = this->RotationAxisDirection[k] = 0.0;
   this->SymmetryFound = false;
   this->CoarseIterations = this->FineIterations = 0;
   this->ToleranceLength = 0.0;
   for (int k = 0; k < 3; ++k)
     this->PlaneOrigin[k] = this->PlaneNormal[k] = 0.0;
-  if (!input || !output || !glyph)
+  if (!input || !output || !glyph || !axisGlyph)
   {
     vtkErrorMacro("Missing input or output poly data.");
     return 0;
@@ -363,7 +468,8 @@ int vtkSymmetryPlaneDetector::RequestWholeData(vtkInformation*,
 
   const foldingmeshes::SymmetryOptions options =
     SymmetryOptionsOf(this, epsilon, initialOrigin, initialNormal);
-  const foldingmeshes::SymmetryResult result = foldingmeshes::DetectSymmetry(mesh, options);
+  const foldingmeshes::FaceTree faces(mesh);
+  const foldingmeshes::SymmetryResult result = foldingmeshes::DetectSymmetry(mesh, options, &faces);
   if (result.aborted)
   {
     vtkWarningMacro("Symmetry detection aborted.");
@@ -390,6 +496,29 @@ int vtkSymmetryPlaneDetector::RequestWholeData(vtkInformation*,
   AddDetectionArrays(mesh, result, output, this);
   output->SetFieldData(DetectionFieldData(input, result, epsilon));
   SetPlaneGlyphOutput(mesh, result, output->GetFieldData(), glyph);
+
+  if (this->DetectRotation)
+  {
+    foldingmeshes::RotationOptions rotationOptions;
+    rotationOptions.epsilon = epsilon;
+    rotationOptions.maximumOrder = this->MaximumRotationOrder;
+    rotationOptions.compatibilityAngle = this->CompatibilityAngle;
+    rotationOptions.minimumSymmetricAreaFraction = this->MinimumSymmetricAreaFraction;
+    rotationOptions.mirrorPlanes = result.finalists;
+    rotationOptions.mirrorPlanes.push_back(result.plane);
+    const foldingmeshes::RotationResult rotation =
+      foldingmeshes::DetectRotationalSymmetry(mesh, rotationOptions, &faces);
+    std::copy(
+      rotation.axis.origin.data(), rotation.axis.origin.data() + 3, this->RotationAxisOrigin);
+    std::copy(rotation.axis.direction.data(),
+      rotation.axis.direction.data() + 3,
+      this->RotationAxisDirection);
+    this->RotationOrder = rotation.order;
+    this->RotationFound = rotation.found;
+    this->RotationContinuous = rotation.continuous;
+    this->RotationalAreaFraction = rotation.symmetricAreaFraction;
+    AddRotationOutputs(mesh, rotation, output, axisGlyph, this);
+  }
   return 1;
 }
 
@@ -414,6 +543,16 @@ void vtkSymmetryPlaneDetector::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "ConnectNearbyParts: " << this->ConnectNearbyParts << "\n";
   os << indent << "MinimumSymmetricAreaFraction: " << this->MinimumSymmetricAreaFraction << "\n";
   os << indent << "RandomSeed: " << this->RandomSeed << "\n";
+  os << indent << "DetectRotation: " << this->DetectRotation << "\n";
+  os << indent << "MaximumRotationOrder: " << this->MaximumRotationOrder << "\n";
+  os << indent << "RotationAxisOrigin: " << this->RotationAxisOrigin[0] << " "
+     << this->RotationAxisOrigin[1] << " " << this->RotationAxisOrigin[2] << "\n";
+  os << indent << "RotationAxisDirection: " << this->RotationAxisDirection[0] << " "
+     << this->RotationAxisDirection[1] << " " << this->RotationAxisDirection[2] << "\n";
+  os << indent << "RotationOrder: " << this->RotationOrder << "\n";
+  os << indent << "RotationFound: " << this->RotationFound << "\n";
+  os << indent << "RotationContinuous: " << this->RotationContinuous << "\n";
+  os << indent << "RotationalAreaFraction: " << this->RotationalAreaFraction << "\n";
   os << indent << "PlaneOrigin: " << this->PlaneOrigin[0] << " " << this->PlaneOrigin[1] << " "
      << this->PlaneOrigin[2] << "\n";
   os << indent << "PlaneNormal: " << this->PlaneNormal[0] << " " << this->PlaneNormal[1] << " "

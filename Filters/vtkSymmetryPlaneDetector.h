@@ -54,6 +54,27 @@
  * Output 1: the plane glyph: a quad on the plane covering the projection of
  * the symmetric region with a 10% margin, with the same plane field data.
  *
+ * Rotational symmetry (DetectRotation, off by default): the filter also looks for an axis
+ * and the largest order k (2 <= k <= MaximumRotationOrder) such that turning the mesh by
+ * 360/k degrees about the axis maps a region of it onto itself within epsilon (the paper's
+ * future work, "axial symmetries"). Candidate axes are the surface's principal axes, those
+ * of its large separate parts, and the lines where two of the mirror planes tried above
+ * meet; for each, every turn j/k of an order must keep the same share of a vertex sample
+ * (so a near-identity turn cannot pass alone, and a multiple of the true order fails); the
+ * best is refined by Gauss-Newton on the axis. A surface of revolution within epsilon passes
+ * every order: RotationContinuous is 1 and RotationOrder is MaximumRotationOrder. With it:
+ * - output 0 gains cell array "RotationRegion" (1: its vertices map within epsilon under the
+ *   turns by 360/k and by floor(k/2) 360/k degrees) and point array "RotationDistance"
+ *   (the larger distance of the two turned copies of the vertex; NaN beyond 3 epsilon);
+ * - field data "RotationAxisOrigin", "RotationAxisDirection" (3 components; the direction's
+ *   largest component positive, the origin nearest the bounding-box centre),
+ *   "RotationOrder" (0: no candidate passed), "RotationFound" (0/1: the region covers at
+ *   least MinimumSymmetricAreaFraction of the area with an area-weighted RMS distance of
+ *   at most 0.35 epsilon), "RotationContinuous" (0/1), "RotationalAreaFraction";
+ * - output 2: the axis glyph, a line along the axis over the extent of the region (of the
+ *   mesh if the region is empty) with a 10% margin, carrying the same field data.
+ * Off, output 2 is empty and none of these arrays is added.
+ *
  * "No symmetry" rule: SymmetryFound is 1 when the symmetric region covers at
  * least MinimumSymmetricAreaFraction of the mesh area and the area-weighted
  * RMS distance over it is at most 0.35 epsilon; otherwise the best plane is
@@ -171,6 +192,29 @@ public:
   ///@}
 
   ///@{
+  /** Also find the best rotational axis and order (default off; see above). */
+  vtkSetMacro(DetectRotation, bool);
+  vtkGetMacro(DetectRotation, bool);
+  vtkBooleanMacro(DetectRotation, bool);
+  ///@}
+
+  ///@{
+  /** Largest rotation order tried (default 64, range 2..360). */
+  vtkSetClampMacro(MaximumRotationOrder, int, 2, 360);
+  vtkGetMacro(MaximumRotationOrder, int);
+  ///@}
+
+  ///@{
+  /** Rotation results, valid after Update() with DetectRotation on (else 0). */
+  vtkGetVector3Macro(RotationAxisOrigin, double);
+  vtkGetVector3Macro(RotationAxisDirection, double);
+  vtkGetMacro(RotationOrder, int);
+  vtkGetMacro(RotationFound, bool);
+  vtkGetMacro(RotationContinuous, bool);
+  vtkGetMacro(RotationalAreaFraction, double);
+  ///@}
+
+  ///@{
   /** Results, valid after Update(). */
   vtkGetVector3Macro(PlaneOrigin, double);
   vtkGetVector3Macro(PlaneNormal, double);
@@ -214,6 +258,15 @@ protected:
   bool ConnectNearbyParts = true;
   double MinimumSymmetricAreaFraction = 0.1;
   int RandomSeed = 1;
+  bool DetectRotation = false;
+  int MaximumRotationOrder = 64;
+
+  double RotationAxisOrigin[3] = { 0.0, 0.0, 0.0 };
+  double RotationAxisDirection[3] = { 0.0, 0.0, 0.0 };
+  int RotationOrder = 0;
+  bool RotationFound = false;
+  bool RotationContinuous = false;
+  double RotationalAreaFraction = 0.0;
 
   double PlaneOrigin[3] = { 0.0, 0.0, 0.0 };
   double PlaneNormal[3] = { 1.0, 0.0, 0.0 };

@@ -104,6 +104,13 @@ bool RefinePlaneFromCorrespondences(const std::vector<Vec3>& points,
 
 bool SurfacePrincipalPlanes(const PreparedMesh& mesh, std::array<Plane, 3>& planes)
 {
+  return SurfacePrincipalPlanes(mesh, std::vector<char>(mesh.NumberOfFaces(), 1), planes);
+}
+
+bool SurfacePrincipalPlanes(const PreparedMesh& mesh,
+  const std::vector<char>& faceMask,
+  std::array<Plane, 3>& planes)
+{
   const Vec3 center = 0.5 * (mesh.boundsMin + mesh.boundsMax);
   double area = 0.0;
   Vec3 first = Vec3::Zero();
@@ -111,7 +118,7 @@ bool SurfacePrincipalPlanes(const PreparedMesh& mesh, std::array<Plane, 3>& plan
   for (int f = 0; f < mesh.NumberOfFaces(); ++f)
   {
     const double a = mesh.faceAreas[f];
-    if (!(a > 0.0))
+    if (!(a > 0.0) || !faceMask[f])
       continue;
     // Moments about the box centre: about the world origin, far-away meshes would lose
     // the covariance to cancellation.

@@ -41,6 +41,10 @@ bool RefinePlaneFromCorrespondences(const std::vector<Vec3>& points,
  * for a mirror-symmetric surface one of them is the mirror plane).
  */
 bool SurfacePrincipalPlanes(const PreparedMesh& mesh, std::array<Plane, 3>& planes);
+/// The same for the faces f with faceMask[f] nonzero only (e.g. one part of the mesh).
+bool SurfacePrincipalPlanes(const PreparedMesh& mesh,
+  const std::vector<char>& faceMask,
+  std::array<Plane, 3>& planes);
 
 /**
  * Planes voted for by random vertex pairs (p, q) whose normals are mirror images of each

@@ -1,8 +1,12 @@
 // Prints, per mesh: faces, starts tried, iterations (coarse/fine), seconds per phase,
-// peak memory and the plane. Not a test: numbers for humans and closing notes.
+// peak memory and the plane; with --rotation also the rotational symmetry search (as
+// vtkSymmetryPlaneDetector's DetectRotation runs it, after the plane search): its seconds,
+// order ("c" after it: continuous), found, region and axis. Not a test: numbers for humans
+// and closing notes.
 //
-//   BenchmarkSymmetryDetection [--threads N] [--procedural] MESH...
+//   BenchmarkSymmetryDetection [--threads N] [--procedural] [--rotation] MESH...
 #include "Core/MeshPreparation.h"
+#include "Core/RotationalSymmetry.h"
 #include "Core/SymmetryDetection.h"
 #include "MeshIO.h"
 #include "ProceduralMeshes.h"
@@ -31,6 +35,29 @@ double PeakMemoryMiB()
   return usage.ru_maxrss / 1024.0;
 }
 
+/// The rotation search after the plane search: seconds, order, found, region, axis.
+void PrintRotation(const PreparedMesh& mesh, const SymmetryResult& planes, double epsilon)
+{
+  RotationOptions options;
+  options.epsilon = epsilon;
+  options.mirrorPlanes = planes.finalists;
+  options.mirrorPlanes.push_back(planes.plane);
+  const auto t0 = Clock::now();
+  const RotationResult r = DetectRotationalSymmetry(mesh, options);
+  const double seconds = std::chrono::duration<double>(Clock::now() - t0).count();
+  std::printf(" | rot %6.3f s k=%d%s %-3s %5.1f%% a=(%+.4f %+.4f %+.4f)",
+    seconds,
+    r.order,
+    r.continuous ? "c" : "",
+    r.found ? "yes" : "no",
+    100.0 * r.symmetricAreaFraction,
+    r.axis.direction.x(),
+    r.axis.direction.y(),
+    r.axis.direction.z());
+}
+
+bool rotation = false;
+
 void Run(const std::string& name, vtkPolyData* input)
 {
   const auto t0 = Clock::now();
@@ -53,7 +80,7 @@ void Run(const std::string& name, vtkPolyData* input)
   const SymmetryResult r = DetectSymmetry(mesh, options);
   const double detect = std::chrono::duration<double>(Clock::now() - t1).count();
   std::printf("%-28s %8d %6d %4d/%-4d %7.3f %7.3f %7.3f %7.3f %7.3f %8.1f %6.1f%% %5.3f %-3s "
-              "n=(%+.4f %+.4f %+.4f) o=(%.4g %.4g %.4g)\n",
+              "n=(%+.4f %+.4f %+.4f) o=(%.4g %.4g %.4g)",
     name.c_str(),
     mesh.NumberOfFaces(),
     r.startsTried,
@@ -74,6 +101,9 @@ void Run(const std::string& name, vtkPolyData* input)
     r.plane.origin.x(),
     r.plane.origin.y(),
     r.plane.origin.z());
+  if (rotation)
+    PrintRotation(mesh, r, options.epsilon);
+  std::printf("\n");
   std::fflush(stdout);
 }
 }
@@ -92,6 +122,8 @@ int main(int argc, char* argv[])
     }
     else if (arg == "--procedural")
       procedural = true;
+    else if (arg == "--rotation")
+      rotation = true;
     else
     {
       const std::vector<std::string> found = foldingmeshes::MeshFiles(arg);

@@ -8,7 +8,8 @@
 # 4b. `foldingmeshes unfold TREE --original MESH` reports the roundtrip's Hausdorff distance;
 # 4c. `--up` takes auto, x, y or z on detect, fold and unfold (exit 0 with z), anything else
 #     exits 1 and names the option;
-# 4d. out-of-range numbers exit 1 on detect and fold; --min-faces, --method, --seed and
+# 4d. out-of-range numbers exit 1 on detect and fold; detect --rotation prints the rotation
+#     and writes STEM_axis.vtp; --min-faces, --method, --seed and
 #     --separate-parts reach the builder; roundtrip --no-stitch --no-close-holes leaves seams open;
 # 4e. a triangle referring to a point that does not exist: detect, fold and roundtrip exit 2,
 #     unfold --original fails, all with the filters' message;
@@ -194,6 +195,7 @@ foreach (bad IN ITEMS "detect;--candidates;abc;--candidates needs an integer"
     "detect;--candidates;65;--candidates needs an integer"
     "detect;--tolerance;2;--tolerance needs a number"
     "detect;--seed;1.5;--seed needs an integer"
+    "detect;--max-rotation-order;1;--max-rotation-order needs an integer"
     "fold;--min-faces;0;--min-faces needs an integer"
     "fold;--seed;x;--seed needs an integer"
     "fold;--method;fast;--method must be robust or paper")
@@ -207,6 +209,16 @@ foreach (bad IN ITEMS "detect;--candidates;abc;--candidates needs an integer"
     message(FATAL_ERROR "${command} ${option} ${value} exited with ${rc}, expected 1 and '${expected}': ${err}")
   endif ()
 endforeach ()
+# detect --rotation reports the rotation in JSON and writes the axis glyph.
+execute_process(COMMAND "${FOLDINGMESHES}" detect "${MESH}" --rotation --max-rotation-order 12
+  --json --quiet --outdir "${WORK_DIR}/rotation" RESULT_VARIABLE rc OUTPUT_VARIABLE out
+  ERROR_VARIABLE err)
+if (NOT rc EQUAL 0 OR NOT out MATCHES "\"rotation\": {\"origin\": \\[[^]]+\\], \"direction\""
+    OR NOT out MATCHES "\"order\": [0-9]+, \"found\": (true|false)"
+    OR NOT EXISTS "${WORK_DIR}/rotation/${stem}_axis.vtp")
+  message(FATAL_ERROR "detect --rotation (exit ${rc}) should print the rotation and write "
+    "${stem}_axis.vtp: ${out}${err}")
+endif ()
 execute_process(COMMAND "${FOLDINGMESHES}" fold "${MESH}" --min-faces 1000000000 --json --quiet
   --outdir "${WORK_DIR}/minfaces" RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
 if (NOT rc EQUAL 0 OR NOT out MATCHES "\"folds\": 0," OR NOT out MATCHES "\"leaves\": 1,")

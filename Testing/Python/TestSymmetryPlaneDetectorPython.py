@@ -9,6 +9,10 @@ rotation + translation. The test checks that
   plane passes through the moved origin, SymmetricAreaFraction > 0.9;
 - the output arrays (SymmetryRegion, SymmetryDistance, SymmetryWeight) and the
   field data arrays exist with the right sizes, on both output ports;
+- with DetectRotation, a twisted 5-fold vase (no mirror plane) moved by the same motion
+  gives order 5 about the moved z axis, the rotation arrays and field data, and a
+  line glyph on the axis (output 2); without it output 2 is empty and no Rotation
+  array is added;
 - bad input (an empty vtkPolyData, a polydata with only lines) makes the update
   fail with an error, without crashing;
 - the rendering of the region colouring and the plane glyph matches the
@@ -51,6 +55,44 @@ SYMMETRIC_BUMPS = [
 ]
 ASYMMETRIC_BUMP = ((0.6, -0.55, 0.1), 0.3, 0.02)
 SEMI_AXES = (1.0, 0.8, 0.6)
+
+
+def make_twisted_vase(k, segments_per_lobe=10, rings=24):
+    """A closed vase along z in [0, 2] with k twisted lobes: r = R(z) (1 + 0.15 cos(k t + 0.9 z)).
+
+    The only symmetries are the turns by multiples of 360/k about the z axis: the lobes
+    twist (no mirror plane) and R is uneven (no half turn across the axis).
+    """
+    n = k * segments_per_lobe
+    points, polys = vtkPoints(), vtkCellArray()
+    for j in range(rings):
+        z = 2.0 * (j + 0.5) / rings
+        profile = 0.55 + 0.22 * math.sin(1.7 * z + 0.4) + 0.08 * z
+        for i in range(n):
+            t = 2.0 * math.pi * i / n
+            r = profile * (1.0 + 0.15 * math.cos(k * t + 0.9 * z))
+            points.InsertNextPoint(r * math.cos(t), r * math.sin(t), z)
+    bottom = points.InsertNextPoint(0.0, 0.0, 0.0)
+    top = points.InsertNextPoint(0.0, 0.0, 2.0)
+
+    def triangle(a, b, c):
+        polys.InsertNextCell(3)
+        for v in (a, b, c):
+            polys.InsertCellPoint(v)
+
+    for j in range(rings - 1):
+        for i in range(n):
+            a, b = j * n + i, j * n + (i + 1) % n
+            c, d = b + n, a + n
+            triangle(a, b, c)
+            triangle(a, c, d)
+    for i in range(n):
+        triangle(bottom, (i + 1) % n, i)
+        triangle(top, (rings - 1) * n + i, (rings - 1) * n + (i + 1) % n)
+    vase = vtkPolyData()
+    vase.SetPoints(points)
+    vase.SetPolys(polys)
+    return vase
 
 
 def make_symmetric_mesh(with_asymmetry=True):
@@ -220,6 +262,66 @@ class TestSymmetryPlaneDetectorPython(Testing.vtkTest):
         for i in range(4):
             p = glyph.GetPoint(i)
             self.assertLess(abs(sum((a - b) * c for a, b, c in zip(p, origin, normal))), 1e-6)
+
+    def testRotation(self):
+        # Without DetectRotation: nothing about rotations.
+        mesh, _ = self.run_detector()
+        self.assertIsNone(mesh.GetCellData().GetArray("RotationRegion"))
+        self.assertIsNone(mesh.GetFieldData().GetArray("RotationOrder"))
+        self.assertEqual(self.detector.GetOutput(2).GetNumberOfPoints(), 0)
+        self.assertEqual(self.detector.GetRotationOrder(), 0)
+
+        moved = vtkTransformPolyDataFilter()
+        moved.SetInputData(make_twisted_vase(5))
+        moved.SetTransform(self.transform)
+        detector = vtkSymmetryPlaneDetector()
+        detector.SetInputConnection(moved.GetOutputPort())
+        self.assertFalse(detector.GetDetectRotation())
+        self.assertEqual(detector.GetMaximumRotationOrder(), 64)
+        detector.DetectRotationOn()
+        self.assertEqual(detector.GetExecutive().Update(), 1)
+        self.assertEqual(detector.GetRotationOrder(), 5)
+        self.assertTrue(detector.GetRotationFound())
+        self.assertFalse(detector.GetRotationContinuous())
+        self.assertGreater(detector.GetRotationalAreaFraction(), 0.95)
+        truth = self.transform.TransformVector(0.0, 0.0, 1.0)
+        direction = detector.GetRotationAxisDirection()
+        self.assertLess(angle_between_lines_deg(direction, truth), 0.1)
+        # The moved origin lies on the found axis.
+        centre = self.transform.TransformPoint(0.0, 0.0, 0.0)
+        origin = detector.GetRotationAxisOrigin()
+        r = [c - o for c, o in zip(centre, origin)]
+        along = sum(x * d for x, d in zip(r, direction))
+        off = math.sqrt(max(0.0, sum(x * x for x in r) - along * along))
+        self.assertLess(off, 1e-3)
+
+        mesh = detector.GetOutput(0)
+        region = mesh.GetCellData().GetArray("RotationRegion")
+        self.assertIsNotNone(region)
+        self.assertEqual(region.GetNumberOfTuples(), mesh.GetNumberOfCells())
+        distance = mesh.GetPointData().GetArray("RotationDistance")
+        self.assertIsNotNone(distance)
+        self.assertEqual(distance.GetNumberOfTuples(), mesh.GetNumberOfPoints())
+        # SymmetryRegion stays the active scalars.
+        self.assertEqual(mesh.GetCellData().GetScalars().GetName(), "SymmetryRegion")
+        axis = detector.GetOutput(2)
+        self.assertEqual(axis.GetNumberOfPoints(), 2)
+        self.assertEqual(axis.GetNumberOfLines(), 1)
+        for data in (mesh, axis):
+            field = data.GetFieldData()
+            self.assertEqual(field.GetArray("RotationOrder").GetValue(0), 5)
+            self.assertEqual(field.GetArray("RotationFound").GetValue(0), 1)
+            self.assertEqual(field.GetArray("RotationContinuous").GetValue(0), 0)
+            self.assertEqual(field.GetArray("RotationAxisOrigin").GetNumberOfComponents(), 3)
+            self.assertLess(angle_between_lines_deg(
+                field.GetArray("RotationAxisDirection").GetTuple3(0), direction), 1e-9)
+        # Both glyph points lie on the axis, and the line covers the vase (height 2).
+        p0, p1 = axis.GetPoint(0), axis.GetPoint(1)
+        self.assertGreater(math.dist(p0, p1), 2.0)
+        for p in (p0, p1):
+            r = [a - o for a, o in zip(p, origin)]
+            along = sum(x * d for x, d in zip(r, direction))
+            self.assertLess(math.sqrt(max(0.0, sum(x * x for x in r) - along * along)), 1e-6)
 
     def check_update_fails(self, data):
         detector = vtkSymmetryPlaneDetector()

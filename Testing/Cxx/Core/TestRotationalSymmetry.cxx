@@ -1,0 +1,237 @@
+// Rotational symmetry detection (issue 22) on procedural shapes whose axis and order are
+// exact by construction:
+// - twisted k-fold vases (k = 2..12): r = R(z) (1 + a cos(k theta + b z)) with an uneven
+//   profile R, so the only symmetries are the turns by multiples of 360/k about the z axis
+//   (no mirror plane, no half turn across the axis); the rings have a multiple of k
+//   vertices, so a turn by 360/k maps vertices onto vertices;
+// - a surface of revolution (a = 0): every order passes (continuous, order = the cap);
+// - with noise of 0.05 epsilon, and with a separate box of about 15% of the area beside it;
+// - shapes with no rotational symmetry get none: a lumpy vase with three harmonics, and the
+//   procedural lumpy blob (MakeAsymmetricBlob, two seeds).
+// Every shape is moved by a seeded rigid motion; the axis found is compared with the moved z
+// axis (angle, and offset at the centroid over the diagonal).
+//
+//   TestRotationalSymmetry
+#include "CoreTestUtilities.h"
+#include "ProceduralMeshes.h"
+#include "RotationalSymmetry.h"
+
+#include <Eigen/Geometry>
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <random>
+#include <vector>
+
+using namespace foldingmeshes;
+
+namespace
+{
+const double Pi = 3.14159265358979323846;
+
+/// Uniform in [-1, 1) from the generator's raw bits (not a std distribution: the same numbers
+/// on every standard library).
+double Uniform(std::mt19937& g)
+{
+  return 2.0 * (static_cast<double>(g()) / 4294967296.0) - 1.0;
+}
+
+Eigen::Isometry3d Motion(unsigned seed)
+{
+  std::mt19937 g(seed);
+  Eigen::Quaterniond q(Uniform(g), Uniform(g), Uniform(g), Uniform(g));
+  q.normalize();
+  Eigen::Isometry3d m = Eigen::Isometry3d::Identity();
+  m.linear() = q.toRotationMatrix();
+  m.translation() = Vec3(3 * Uniform(g), 3 * Uniform(g), 3 * Uniform(g));
+  return m;
+}
+
+struct VaseShape
+{
+  int order = 1;          ///< k (the harmonic)
+  double amplitude = 0.0; ///< a (0: a surface of revolution)
+  double twist = 0.9;     ///< b
+  bool lumpy = false;     ///< harmonics 1, 2, 3 with different phases: no symmetry
+};
+
+/// The closed vase along z in [0, 2] with `rings` rings of `segments` vertices and two poles.
+TriangleMesh MakeVase(const VaseShape& s, int segments, int rings)
+{
+  TriangleMesh m;
+  const double height = 2.0;
+  for (int j = 0; j < rings; ++j)
+  {
+    const double z = height * (j + 0.5) / rings;
+    const double profile = 0.55 + 0.22 * std::sin(1.7 * z + 0.4) + 0.08 * z;
+    for (int i = 0; i < segments; ++i)
+    {
+      const double theta = 2.0 * Pi * i / segments;
+      double f = 1.0 + s.amplitude * std::cos(s.order * theta + s.twist * z);
+      if (s.lumpy)
+        f = 1.0 + 0.35 * std::cos(theta + 0.3) + 0.25 * std::cos(2 * theta + 1.7 * z) +
+          0.2 * std::cos(3 * theta - 2 * z);
+      const double r = profile * f;
+      m.points.emplace_back(r * std::cos(theta), r * std::sin(theta), z);
+    }
+  }
+  const int bottom = static_cast<int>(m.points.size());
+  m.points.emplace_back(0, 0, 0);
+  const int top = bottom + 1;
+  m.points.emplace_back(0, 0, height);
+  auto id = [&](int j, int i) { return j * segments + (i % segments); };
+  for (int j = 0; j + 1 < rings; ++j)
+    for (int i = 0; i < segments; ++i)
+    {
+      m.triangles.push_back({ id(j, i), id(j, i + 1), id(j + 1, i + 1) });
+      m.triangles.push_back({ id(j, i), id(j + 1, i + 1), id(j + 1, i) });
+    }
+  for (int i = 0; i < segments; ++i)
+  {
+    m.triangles.push_back({ bottom, id(0, i + 1), id(0, i) });
+    m.triangles.push_back({ top, id(rings - 1, i), id(rings - 1, i + 1) });
+  }
+  return m;
+}
+
+/// A closed box of edge `side` centred at `c` appended to m (a separate part).
+void AddBox(TriangleMesh& m, const Vec3& c, double side)
+{
+  const int base = static_cast<int>(m.points.size());
+  for (int k = 0; k < 8; ++k)
+    m.points.push_back(
+      c + 0.5 * side * Vec3(k & 1 ? 1.0 : -1.0, k & 2 ? 1.0 : -1.0, k & 4 ? 1.0 : -1.0));
+  const int quads[6][4] = {
+    { 0, 2, 3, 1 }, { 4, 5, 7, 6 }, { 0, 1, 5, 4 }, { 2, 6, 7, 3 }, { 0, 4, 6, 2 }, { 1, 3, 7, 5 }
+  };
+  for (const auto& q : quads)
+  {
+    m.triangles.push_back({ base + q[0], base + q[1], base + q[2] });
+    m.triangles.push_back({ base + q[0], base + q[2], base + q[3] });
+  }
+}
+
+double Area(const TriangleMesh& m)
+{
+  double a = 0.0;
+  for (const Triangle& t : m.triangles)
+    a += 0.5 * (m.points[t[1]] - m.points[t[0]]).cross(m.points[t[2]] - m.points[t[0]]).norm();
+  return a;
+}
+
+struct Case
+{
+  const char* name;
+  VaseShape shape;
+  double noise = 0.0;       ///< per coordinate, in epsilon
+  double boxFraction = 0.0; ///< area of the added box over the vase's
+  unsigned seed = 1;
+  int blobFaces = 0; ///< > 0: MakeAsymmetricBlob of about this many faces instead of a vase
+};
+
+/// Runs one case; expectedOrder 0: no symmetry expected; -1: continuous (order = the cap).
+void Check(const Case& c, int expectedOrder, double minimumRegion)
+{
+  const int segments =
+    std::max(1, c.shape.order) * ((48 + c.shape.order - 1) / std::max(1, c.shape.order));
+  TriangleMesh m = c.blobFaces > 0
+    ? coretest::ToTriangleMesh(testing::MakeAsymmetricBlob(c.blobFaces, c.seed).mesh)
+    : MakeVase(c.shape, segments, 24);
+  if (c.boxFraction > 0.0)
+  {
+    const double side = std::sqrt(c.boxFraction * Area(m) / 6.0);
+    AddBox(m, Vec3(1.3 + side, 0.2, 1.0), side);
+  }
+  const Eigen::Isometry3d motion = Motion(c.seed);
+  for (Vec3& p : m.points)
+    p = motion * p;
+  Vec3 lo = m.points[0], hi = m.points[0];
+  for (const Vec3& p : m.points)
+  {
+    lo = lo.cwiseMin(p);
+    hi = hi.cwiseMax(p);
+  }
+  const double diagonal = (hi - lo).norm();
+  RotationOptions options;
+  options.epsilon = 0.02 * diagonal;
+  if (c.noise > 0.0)
+  {
+    std::mt19937 g(c.seed + 100);
+    for (Vec3& p : m.points)
+      p += c.noise * options.epsilon * Vec3(Uniform(g), Uniform(g), Uniform(g));
+  }
+  const PreparedMesh mesh = coretest::Prepare(m);
+  const auto start = std::chrono::steady_clock::now();
+  const RotationResult r = DetectRotationalSymmetry(mesh, options);
+  const double seconds = coretest::Seconds(start);
+
+  RotationAxis truth;
+  truth.origin = motion * Vec3(0, 0, 0);
+  truth.direction = motion.linear() * Vec3::UnitZ();
+  const Vec3 centroid = motion * Vec3(0, 0, 1);
+  const double angle = AxisAngleDegrees(r.axis, truth);
+  const double offset = AxisOffsetAt(truth, r.axis, centroid) / diagonal;
+  std::printf("%-28s faces %6d: found %d order %2d continuous %d region %.3f rms/eps %.3f "
+              "angle %.4f deg offset %.5f diag, %d axes, %d steps, %.2f s\n",
+    c.name,
+    mesh.NumberOfFaces(),
+    r.found,
+    r.order,
+    r.continuous,
+    r.symmetricAreaFraction,
+    r.rmsResidual / options.epsilon,
+    angle,
+    offset,
+    r.candidateAxes,
+    r.iterations,
+    seconds);
+  EXPECT(r.distance.size() == mesh.points.size() && r.faceLabel.size() == m.triangles.size(),
+    c.name << ": one distance per vertex and one label per face");
+  if (expectedOrder == 0)
+  {
+    EXPECT(!r.found, c.name << ": no rotational symmetry expected, found order " << r.order);
+    return;
+  }
+  EXPECT(r.found, c.name << ": rotational symmetry not found");
+  if (expectedOrder < 0)
+    EXPECT(r.continuous && r.order == DefaultMaximumRotationOrder,
+      c.name << ": a surface of revolution is continuous, order the cap; got order " << r.order
+             << " continuous " << r.continuous);
+  else
+    EXPECT(r.order == expectedOrder && !r.continuous,
+      c.name << ": order " << r.order << " (continuous " << r.continuous << "), expected "
+             << expectedOrder);
+  const double maxAngle = c.noise > 0.0 || c.boxFraction > 0.0 ? 0.5 : 0.01;
+  const double maxOffset = c.noise > 0.0 || c.boxFraction > 0.0 ? 2e-3 : 1e-4;
+  EXPECT(angle < maxAngle, c.name << ": axis off by " << angle << " degrees");
+  EXPECT(offset < maxOffset, c.name << ": axis offset " << offset << " diagonals");
+  EXPECT(r.symmetricAreaFraction >= minimumRegion,
+    c.name << ": region " << r.symmetricAreaFraction << " < " << minimumRegion);
+  if (c.boxFraction > 0.0)
+  {
+    // The box's faces are not in the region.
+    bool boxOut = true;
+    for (size_t f = m.triangles.size() - 12; f < m.triangles.size(); ++f)
+      boxOut = boxOut && !r.faceLabel[f];
+    EXPECT(boxOut, c.name << ": the attached box is not rotationally symmetric");
+  }
+}
+}
+
+int main()
+{
+  for (int k = 2; k <= 12; ++k)
+  {
+    const std::string name = "twisted " + std::to_string(k) + "-fold";
+    Check({ name.c_str(), { k, 0.15, 0.9, false }, 0.0, 0.0, static_cast<unsigned>(k) }, k, 0.97);
+  }
+  Check({ "revolution", { 1, 0.0, 0.0, false }, 0.0, 0.0, 21 }, -1, 0.97);
+  Check({ "5-fold, noise 0.05 eps", { 5, 0.15, 0.9, false }, 0.05, 0.0, 22 }, 5, 0.9);
+  Check({ "7-fold, box 15% of area", { 7, 0.15, 0.9, false }, 0.0, 0.15, 23 }, 7, 0.8);
+  Check({ "4-fold, noise and box", { 4, 0.15, 0.9, false }, 0.05, 0.15, 24 }, 4, 0.75);
+  Check({ "lumpy vase, no symmetry", { 1, 0.0, 0.0, true }, 0.0, 0.0, 25 }, 0, 0.0);
+  for (unsigned seed : { 3u, 4u })
+    Check({ "asymmetric blob", {}, 0.0, 0.0, seed, 4000 }, 0, 0.0);
+  return coretest::Finish("TestRotationalSymmetry");
+}
