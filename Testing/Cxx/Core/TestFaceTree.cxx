@@ -18,6 +18,9 @@
 //   scan with the tree's own per-face rule (closest point, then the interpolated normal test
 //   n . q >= cos * |n|, ties: lowest id), with and without a hint face, and with a third of
 //   the faces excluded (a scan of the others; the hint may be an excluded face).
+// - a soup: the blob with 60 long triangles and slivers spanning its box, checked like the
+//   blob above, near and far; and flat plates turned obliquely (where the nodes' oriented
+//   boxes, not their axis-aligned ones, prune): bit for bit the exhaustive scan.
 #include "CoreTestUtilities.h"
 #include "FaceTree.h"
 #include "PointTriangleDistance.h"
@@ -423,6 +426,31 @@ int main()
       coretest::Prepare(coretest::ToTriangleMesh(MakeBilateralBlob(3000).mesh)),
       400,
       0.15);
+  }
+  {
+    // A soup: the blob with 60 large triangles across its bounding box (long slivers and fat
+    // ones, random orientation), which the tree splits into pieces.
+    TriangleMesh soup = coretest::ToTriangleMesh(MakeBilateralBlob(3000).mesh);
+    Vec3 lo = soup.points[0], hi = soup.points[0];
+    for (const Vec3& q : soup.points)
+    {
+      lo = lo.cwiseMin(q);
+      hi = hi.cwiseMax(q);
+    }
+    for (int t = 0; t < 60; ++t)
+    {
+      const int base = static_cast<int>(soup.points.size());
+      const Vec3 a(U(lo.x(), hi.x()), U(lo.y(), hi.y()), U(lo.z(), hi.z()));
+      const Vec3 b(U(lo.x(), hi.x()), U(lo.y(), hi.y()), U(lo.z(), hi.z()));
+      const double width = t % 2 == 0 ? 1e-3 : 0.3;
+      const Vec3 c = 0.5 * (a + b) + width * (hi - lo).norm() * RandomUnit();
+      soup.points.insert(soup.points.end(), { a, b, c });
+      soup.triangles.push_back({ base, base + 1, base + 2 });
+    }
+    const PreparedMesh m = coretest::Prepare(soup);
+    CheckMesh("blob with large triangles", m, 600, angles, false);
+    CheckExact("blob with large triangles, near", m, 400, 0.02);
+    CheckExact("blob with large triangles, far", m, 400, 0.15);
   }
   std::printf("TestFaceTree: %.2f s\n", coretest::Seconds(t0));
   return coretest::Finish("TestFaceTree");
