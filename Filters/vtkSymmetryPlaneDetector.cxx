@@ -212,7 +212,8 @@ bool InitialPlaneOf(vtkSymmetryPlaneDetector* self, Vec3& origin, Vec3& normal)
   return true;
 }
 
-/// The filter's parameters as the core's options (the initial plane already checked).
+/// The filter's parameters as the core's options (the initial plane already checked; the
+/// progress callback is the caller's).
 foldingmeshes::SymmetryOptions SymmetryOptionsOf(vtkSymmetryPlaneDetector* self,
   double epsilon,
   const Vec3& origin,
@@ -233,11 +234,6 @@ foldingmeshes::SymmetryOptions SymmetryOptionsOf(vtkSymmetryPlaneDetector* self,
   options.minimumSymmetricAreaFraction = self->GetMinimumSymmetricAreaFraction();
   options.seed = static_cast<unsigned>(self->GetRandomSeed());
   options.trace = foldingmeshes::DebugTrace(self);
-  options.progress = [self](double p)
-  {
-    self->UpdateProgress(p);
-    return !self->GetAbortExecute();
-  };
 
   return options;
 }
@@ -466,8 +462,15 @@ int vtkSymmetryPlaneDetector::RequestWholeData(vtkInformation*,
   if (this->ConnectNearbyParts)
     foldingmeshes::LinkNearbyParts(mesh, epsilon);
 
-  const foldingmeshes::SymmetryOptions options =
+  foldingmeshes::SymmetryOptions options =
     SymmetryOptionsOf(this, epsilon, initialOrigin, initialNormal);
+  // With the rotation search after it, the plane search reports the first 40% of the progress.
+  const double planeShare = this->DetectRotation ? 0.4 : 1.0;
+  options.progress = [this, planeShare](double p)
+  {
+    this->UpdateProgress(planeShare * p);
+    return !this->GetAbortExecute();
+  };
   const foldingmeshes::FaceTree faces(mesh);
   const foldingmeshes::SymmetryResult result = foldingmeshes::DetectSymmetry(mesh, options, &faces);
   if (result.aborted)
@@ -506,8 +509,18 @@ int vtkSymmetryPlaneDetector::RequestWholeData(vtkInformation*,
     rotationOptions.minimumSymmetricAreaFraction = this->MinimumSymmetricAreaFraction;
     rotationOptions.mirrorPlanes = result.finalists;
     rotationOptions.mirrorPlanes.push_back(result.plane);
+    rotationOptions.progress = [this, planeShare](double p)
+    {
+      this->UpdateProgress(planeShare + (1.0 - planeShare) * p);
+      return !this->GetAbortExecute();
+    };
     const foldingmeshes::RotationResult rotation =
       foldingmeshes::DetectRotationalSymmetry(mesh, rotationOptions, &faces);
+    if (rotation.aborted)
+    {
+      vtkWarningMacro("Rotational symmetry detection aborted.");
+      return 1;
+    }
     std::copy(
       rotation.axis.origin.data(), rotation.axis.origin.data() + 3, this->RotationAxisOrigin);
     std::copy(rotation.axis.direction.data(),

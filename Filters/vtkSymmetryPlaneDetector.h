@@ -73,7 +73,9 @@
  *   at most 0.35 epsilon), "RotationContinuous" (0/1), "RotationalAreaFraction";
  * - output 2: the axis glyph, a line along the axis over the extent of the region (of the
  *   mesh if the region is empty) with a 10% margin, carrying the same field data.
- * Off, output 2 is empty and none of these arrays is added.
+ * Off, output 2 is empty and none of these arrays is added. The progress bar covers both
+ * searches (the plane's first 40%); an abort during the rotation search keeps the plane's
+ * outputs and adds no rotation result (with a warning).
  *
  * "No symmetry" rule: SymmetryFound is 1 when the symmetric region covers at
  * least MinimumSymmetricAreaFraction of the mesh area and the area-weighted

@@ -318,10 +318,25 @@ RotationResult DetectRotationalSymmetry(const PreparedMesh& mesh,
   result.candidateAxes = static_cast<int>(axes.size());
   const std::vector<int> sample = SampleVertices(mesh, ScanSampleSize);
   std::vector<ScanEntry> scanned;
+  auto report = [&](double p) { return !options.progress || options.progress(p); };
+  // The scan takes about two thirds of the time, the fits the rest.
   std::vector<ScanEntry> perAxis(axes.size());
-  RunTasksInParallel(axes.size(),
-    [&](size_t a)
-    { perAxis[a] = ScanAxis(mesh, *meshFaces, clamped, sample, static_cast<int>(a), axes[a]); });
+  const size_t batch = 2; // axes scanned in parallel between progress reports
+  for (size_t first = 0; first < axes.size(); first += batch)
+  {
+    const size_t count = std::min(batch, axes.size() - first);
+    RunTasksInParallel(count,
+      [&](size_t i)
+      {
+        const size_t a = first + i;
+        perAxis[a] = ScanAxis(mesh, *meshFaces, clamped, sample, static_cast<int>(a), axes[a]);
+      });
+    if (!report(0.65 * static_cast<double>(first + count) / axes.size()))
+    {
+      result.aborted = true;
+      return result;
+    }
+  }
   for (const ScanEntry& entry : perAxis)
     if (entry.order >= 2)
       scanned.push_back(entry);
@@ -355,6 +370,11 @@ RotationResult DetectRotationalSymmetry(const PreparedMesh& mesh,
       if (first || trial.found)
         best = std::move(trial);
       first = false;
+      if (!report(0.65 + 0.35 * (fits + 1) / MaximumFits))
+      {
+        result.aborted = true;
+        return result;
+      }
     }
   // A canonical direction: largest component positive; the origin nearest the centroid.
   int k = 0;

@@ -7,6 +7,7 @@
 #include "FaceTree.h"
 #include "Plane.h"
 
+#include <functional>
 #include <vector>
 
 namespace foldingmeshes
@@ -42,12 +43,16 @@ struct RotationOptions
   /// axis). The surface's principal axes through its area centroid are always candidates.
   std::vector<Plane> mirrorPlanes;
   int maximumIterations = 30; ///< Gauss-Newton steps of the axis fit
+  /// Called with progress in [0,1] after the scan of each pair of candidate axes and each
+  /// fit; return false to abort (RotationResult::aborted, order 0).
+  std::function<bool(double)> progress;
 };
 
 struct RotationResult
 {
-  bool found = false; ///< the rule of DetectRotationalSymmetry holds
-  int order = 0;      ///< k (0: no candidate axis had any order)
+  bool found = false;   ///< the rule of DetectRotationalSymmetry holds
+  bool aborted = false; ///< the progress callback asked to stop
+  int order = 0;        ///< k (0: no candidate axis had any order)
   RotationAxis axis;
   /// Every order 2 .. maximumOrder passed the scan on the best axis: a surface of
   /// revolution within epsilon (order is then maximumOrder).

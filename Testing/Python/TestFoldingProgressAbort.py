@@ -3,8 +3,9 @@
 
 What a ParaView progress bar and its Abort rely on, checked on the wrapped classes:
 
-- a full run of vtkSymmetryPlaneDetector, vtkFoldingTreeBuilder and vtkFoldingTreeUnfolder
-  on the dino reports several ProgressEvents with non-decreasing values in [0, 1], some of
+- a full run of vtkSymmetryPlaneDetector (also with DetectRotation: the bar moves during the
+  rotation search too, and an abort there leaves no rotation result), vtkFoldingTreeBuilder
+  and vtkFoldingTreeUnfolder on the dino reports several ProgressEvents with non-decreasing values in [0, 1], some of
   them strictly between 0 and 1 (the bar moves during the run), ending at 1;
 - setting AbortExecute from a progress observer early in the builder's run stops it
   cleanly: Update() returns without a crash, much sooner than the full run, the tree is the
@@ -94,6 +95,27 @@ def main(mesh_file):
     recorder = ProgressRecorder(detector)
     detector.Update()
     check_progress("detector", recorder.values)
+
+    # With DetectRotation the rotation search continues the bar after the plane search, and
+    # an abort during it ends the run without a crash and without rotation results.
+    detector = vtkSymmetryPlaneDetector()
+    detector.SetInputData(mesh)
+    detector.DetectRotationOn()
+    recorder = ProgressRecorder(detector)
+    detector.Update()
+    check_progress("detector with rotation", recorder.values)
+    check(any(0.4 < v < 1.0 for v in recorder.values),
+          "detector with rotation: progress reported during the rotation search")
+    check(detector.GetOutput(2).GetNumberOfPoints() == 2, "detector with rotation: axis glyph")
+    aborting = vtkSymmetryPlaneDetector()
+    aborting.SetInputData(mesh)
+    aborting.DetectRotationOn()
+    recorder = ProgressRecorder(aborting, abort_after=0.5)
+    aborting.GetExecutive().Update()
+    check(recorder.aborted_at is not None, "detector with rotation: abort requested at %s"
+          % recorder.aborted_at)
+    check(aborting.GetRotationOrder() == 0 and aborting.GetOutput(2).GetNumberOfPoints() == 0,
+          "detector with rotation: an abort during the rotation search leaves no rotation result")
 
     builder = vtkFoldingTreeBuilder()
     builder.SetInputData(mesh)
