@@ -188,8 +188,12 @@ bool WriteDetectOutputs(vtkSymmetryPlaneDetector* detector, DetectArguments& arg
     args.picture.clear();
     return true;
   }
-  auto window = foldingmeshes::MakeSymmetryScene(
-    detector->GetOutput(0), detector->GetOutput(1), 800, 600, args.upAxis);
+  auto window = foldingmeshes::MakeSymmetryScene(detector->GetOutput(0),
+    detector->GetOutput(1),
+    800,
+    600,
+    args.upAxis,
+    detector->GetDetectRotation() ? detector->GetOutput(2) : nullptr);
   if (!foldingmeshes::WritePicture(window, args.picture, error))
   {
     std::cerr << "foldingmeshes: " << error << "\n";

@@ -83,7 +83,8 @@ vtkSmartPointer<vtkRenderWindow> MakeSymmetryScene(vtkPolyData* labelledMesh,
   vtkPolyData* planeGlyph,
   int width,
   int height,
-  int upAxis)
+  int upAxis,
+  vtkPolyData* axisGlyph)
 {
   vtkNew<vtkLookupTable> colors;
   colors->SetNumberOfTableValues(3);
@@ -178,6 +179,23 @@ vtkSmartPointer<vtkRenderWindow> MakeSymmetryScene(vtkPolyData* labelledMesh,
   window->SetMultiSamples(0);
   window->SetSize(width, height);
   window->AddRenderer(renderer);
+  if (axisGlyph && axisGlyph->GetNumberOfPoints() > 0)
+  {
+    // The axis runs through the inside of the mesh: drawn in a layer over it, same camera.
+    vtkNew<vtkPolyDataMapper> axisMapper;
+    axisMapper->SetInputData(axisGlyph);
+    axisMapper->ScalarVisibilityOff();
+    vtkNew<vtkActor> axisActor;
+    axisActor->SetMapper(axisMapper);
+    axisActor->GetProperty()->SetColor(0.85, 0.15, 0.1);
+    axisActor->GetProperty()->SetLineWidth(4.0);
+    vtkNew<vtkRenderer> overlay;
+    overlay->SetLayer(1);
+    overlay->SetActiveCamera(camera);
+    overlay->AddActor(axisActor);
+    window->SetNumberOfLayers(2);
+    window->AddRenderer(overlay);
+  }
   return window;
 }
 

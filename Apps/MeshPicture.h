@@ -20,13 +20,15 @@ namespace foldingmeshes
  * the paper's Figure 2) and, when given, the plane glyph as a translucent blue quad. The
  * camera looks at the mesh obliquely across the plane so both halves are visible. Up:
  * `upAxis` (0, 1, 2: +X, +Y, +Z; files differ in which axis is up), or with -1 the longest
- * axis of the mesh's box among those lying in the plane.
+ * axis of the mesh's box among those lying in the plane. With `axisGlyph` (the detector's
+ * rotation axis line, output 2) that line too, thick and red, drawn over the mesh.
  */
 vtkSmartPointer<vtkRenderWindow> MakeSymmetryScene(vtkPolyData* labelledMesh,
   vtkPolyData* planeGlyph,
   int width,
   int height,
-  int upAxis = -1);
+  int upAxis = -1,
+  vtkPolyData* axisGlyph = nullptr);
 
 /**
  * A render window (off-screen, fixed size, no multisampling) showing `mesh` coloured by its
