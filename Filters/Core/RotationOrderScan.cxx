@@ -55,15 +55,14 @@ public:
     Known& k = this->Memo[t];
     if (k.exact || (k.below && k.threshold <= threshold))
       return k.value;
-    const double angle = t.Angle();
+    const AxisTurn turn(this->Axis, t.Angle());
     const double needed = threshold * this->SampleArea;
     double passed = 0.0, left = this->SampleArea;
     for (int v : this->Sample)
     {
       const double a = this->Mesh.vertexAreas[v];
       left -= a;
-      if (TurnedHit(this->Mesh, this->Faces, this->Axis, angle, v, this->CosLimit, this->Tolerance)
-            .face >= 0)
+      if (TurnedHit(this->Mesh, this->Faces, turn, v, this->CosLimit, this->Tolerance).face >= 0)
         passed += a;
       if (passed + left < needed)
       {
@@ -180,18 +179,14 @@ std::vector<int> SampleVertices(const PreparedMesh& mesh, int count)
 
 FaceTree::Hit TurnedHit(const PreparedMesh& mesh,
   const FaceTree& faces,
-  const RotationAxis& axis,
-  double angle,
+  const AxisTurn& turn,
   int v,
   double cosLimit,
   double maxDistance,
   int hint)
 {
-  return faces.ClosestCompatibleFace(axis.Rotate(mesh.points[v], angle),
-    axis.RotateDirection(mesh.vertexNormals[v], angle),
-    cosLimit,
-    maxDistance,
-    hint);
+  return faces.ClosestCompatibleFace(
+    turn.Point(mesh.points[v]), turn.Direction(mesh.vertexNormals[v]), cosLimit, maxDistance, hint);
 }
 
 ScanEntry ScanAxis(const PreparedMesh& mesh,

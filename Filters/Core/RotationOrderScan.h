@@ -36,8 +36,7 @@ std::vector<int> SampleVertices(const PreparedMesh& mesh, int count);
 /// Closest compatible face of the turned vertex v (its normal turned too), within maxDistance.
 FaceTree::Hit TurnedHit(const PreparedMesh& mesh,
   const FaceTree& faces,
-  const RotationAxis& axis,
-  double angle,
+  const AxisTurn& turn,
   int v,
   double cosLimit,
   double maxDistance,

@@ -126,16 +126,17 @@ RotationAxis MovedAxis(const RotationAxis& axis,
 /**
  * Gauss-Newton on the axis for the turns of `order`: every sampled vertex, turned, should lie
  * on the tangent plane of its closest compatible point (numeric derivatives of the turned
- * point with respect to the four axis parameters). Geman-McClure weights times vertex area,
+ * point with respect to the four axis parameters), on the vertices `sample`. Geman-McClure
+ * weights times vertex area,
  * sigma = 3 epsilon for the first half of the steps, then epsilon. Returns the steps taken.
  */
 int RefineAxis(const PreparedMesh& mesh,
   const FaceTree& faces,
   const RotationOptions& options,
+  const std::vector<int>& sample,
   int order,
   RotationAxis& axis)
 {
-  const std::vector<int> sample = SampleVertices(mesh, FitSampleSize);
   const std::vector<Turn> turns = TurnsOfOrder(order);
   const double cosLimit = std::cos(options.compatibilityAngle * Pi / 180.0);
   const double diagonal = mesh.diagonal;
@@ -147,6 +148,31 @@ int RefineAxis(const PreparedMesh& mesh,
     for (int it = 0; it < phaseSteps; ++it)
     {
       const double sigma = (phase == 0 ? 3.0 : 1.0) * options.epsilon;
+      const Vec3 e1 = axis.direction.unitOrthogonal();
+      const Vec3 e2 = axis.direction.cross(e1);
+      const double h[4] = { 1e-6, 1e-6, 1e-6 * diagonal, 1e-6 * diagonal };
+      // Per turn: the turn about the axis, then about the axis moved by +h and -h in each
+      // parameter (the numeric derivatives), each matrix computed once per step.
+      std::vector<std::array<AxisTurn, 9>> turned;
+      for (const Turn& t : turns)
+      {
+        const double angle = t.Angle();
+        auto moved = [&](int p, double sign)
+        {
+          Eigen::Vector4d dx = Eigen::Vector4d::Zero();
+          dx[p] = sign * h[p];
+          return AxisTurn(MovedAxis(axis, e1, e2, dx), angle);
+        };
+        turned.push_back({ AxisTurn(axis, angle),
+          moved(0, 1),
+          moved(0, -1),
+          moved(1, 1),
+          moved(1, -1),
+          moved(2, 1),
+          moved(2, -1),
+          moved(3, 1),
+          moved(3, -1) });
+      }
       ForRanges(rows,
         64,
         [&](vtkIdType begin, vtkIdType end)
@@ -154,15 +180,11 @@ int RefineAxis(const PreparedMesh& mesh,
           for (vtkIdType r = begin; r < end; ++r)
             hits[r] = TurnedHit(mesh,
               faces,
-              axis,
-              turns[r % turns.size()].Angle(),
+              turned[r % turns.size()][0],
               sample[r / turns.size()],
               cosLimit,
               2.0 * sigma);
         });
-      const Vec3 e1 = axis.direction.unitOrthogonal();
-      const Vec3 e2 = axis.direction.cross(e1);
-      const double h[4] = { 1e-6, 1e-6, 1e-6 * diagonal, 1e-6 * diagonal };
       Eigen::Matrix4d jtj = Eigen::Matrix4d::Zero();
       Eigen::Vector4d jte = Eigen::Vector4d::Zero();
       for (int r = 0; r < rows; ++r)
@@ -171,17 +193,15 @@ int RefineAxis(const PreparedMesh& mesh,
         if (hit.face < 0)
           continue;
         const int v = sample[r / turns.size()];
-        const double angle = turns[r % turns.size()].Angle();
+        const std::array<AxisTurn, 9>& turn = turned[r % turns.size()];
         const double w = GemanMcClureWeight(hit.distance, sigma) * mesh.vertexAreas[v];
         const Vec3& m = mesh.faceNormals[hit.face];
-        const double e = m.dot(axis.Rotate(mesh.points[v], angle) - hit.point);
+        const double e = m.dot(turn[0].Point(mesh.points[v]) - hit.point);
         Eigen::Vector4d j;
         for (int p = 0; p < 4; ++p)
         {
-          Eigen::Vector4d dx = Eigen::Vector4d::Zero();
-          dx[p] = h[p];
-          const Vec3 plus = MovedAxis(axis, e1, e2, dx).Rotate(mesh.points[v], angle);
-          const Vec3 minus = MovedAxis(axis, e1, e2, -dx).Rotate(mesh.points[v], angle);
+          const Vec3 plus = turn[1 + 2 * p].Point(mesh.points[v]);
+          const Vec3 minus = turn[2 + 2 * p].Point(mesh.points[v]);
           j[p] = m.dot(plus - minus) / (2.0 * h[p]);
         }
         jtj += w * j * j.transpose();
@@ -221,6 +241,9 @@ void EvaluateOnMesh(const PreparedMesh& mesh,
 {
   const std::vector<Turn> turns = TurnsOfOrder(order);
   const double cosLimit = std::cos(options.compatibilityAngle * Pi / 180.0);
+  std::vector<AxisTurn> turned;
+  for (const Turn& t : turns)
+    turned.emplace_back(result.axis, t.Angle());
   const int n = mesh.NumberOfPoints();
   result.distance.assign(n, std::numeric_limits<double>::infinity());
   ForRanges(n,
@@ -232,15 +255,9 @@ void EvaluateOnMesh(const PreparedMesh& mesh,
         if (!(mesh.vertexAreas[v] > 0.0))
           continue;
         double d = 0.0;
-        for (const Turn& t : turns)
+        for (const AxisTurn& turn : turned)
           d = std::max(d,
-            TurnedHit(mesh,
-              faces,
-              result.axis,
-              t.Angle(),
-              static_cast<int>(v),
-              cosLimit,
-              3.0 * options.epsilon)
+            TurnedHit(mesh, faces, turn, static_cast<int>(v), cosLimit, 3.0 * options.epsilon)
               .distance);
         result.distance[v] = d;
       }
@@ -275,12 +292,18 @@ void EvaluateOnMesh(const PreparedMesh& mesh,
 
 Vec3 RotationAxis::Rotate(const Vec3& p, double angle) const
 {
-  return this->origin + Eigen::AngleAxisd(angle, this->direction) * (p - this->origin);
+  return AxisTurn(*this, angle).Point(p);
 }
 
 Vec3 RotationAxis::RotateDirection(const Vec3& v, double angle) const
 {
-  return Eigen::AngleAxisd(angle, this->direction) * v;
+  return AxisTurn(*this, angle).Direction(v);
+}
+
+AxisTurn::AxisTurn(const RotationAxis& axis, double angle)
+  : matrix(Eigen::AngleAxisd(angle, axis.direction).toRotationMatrix())
+  , origin(axis.origin)
+{
 }
 
 double AxisAngleDegrees(const RotationAxis& a, const RotationAxis& b)
@@ -353,6 +376,7 @@ RotationResult DetectRotationalSymmetry(const PreparedMesh& mesh,
   if (scanned.empty())
     return result;
 
+  const std::vector<int> fitSample = SampleVertices(mesh, FitSampleSize);
   RotationResult best;
   bool first = true;
   int fits = 0;
@@ -365,7 +389,7 @@ RotationResult DetectRotationalSymmetry(const PreparedMesh& mesh,
       trial.order = scanned[c].orders[o];
       trial.continuous = o == 0 && scanned[c].continuous;
       trial.axis = axes[scanned[c].axis];
-      trial.iterations = RefineAxis(mesh, *meshFaces, clamped, trial.order, trial.axis);
+      trial.iterations = RefineAxis(mesh, *meshFaces, clamped, fitSample, trial.order, trial.axis);
       EvaluateOnMesh(mesh, *meshFaces, clamped, trial.order, trial);
       if (first || trial.found)
         best = std::move(trial);

@@ -7,6 +7,8 @@
 #include "FaceTree.h"
 #include "Plane.h"
 
+#include <Eigen/Core>
+
 #include <functional>
 #include <vector>
 
@@ -25,6 +27,18 @@ struct RotationAxis
   Vec3 Rotate(const Vec3& p, double angle) const;
   /// A direction turned the same way.
   Vec3 RotateDirection(const Vec3& v, double angle) const;
+};
+
+/// A turn by a fixed angle about an axis, its matrix computed once (RotationAxis::Rotate
+/// computes it on every call): for loops that turn many points by the same turn.
+struct AxisTurn
+{
+  AxisTurn(const RotationAxis& axis, double angle);
+  Vec3 Point(const Vec3& p) const { return this->origin + this->matrix * (p - this->origin); }
+  Vec3 Direction(const Vec3& v) const { return this->matrix * v; }
+
+  Eigen::Matrix3d matrix;
+  Vec3 origin;
 };
 
 /// Angle between two axes' directions in degrees, ignoring orientation (0..90).
