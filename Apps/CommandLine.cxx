@@ -74,6 +74,10 @@ original and stored faces, compression, tree height, folds, leaves and time.
   --min-faces N            leaf when a region has fewer than N faces (default 50)
   --method robust|paper    every node's detection, as for detect (default robust)
   --separate-parts         as for detect: regions and components never span separate parts
+  --rotation               rotation nodes: where no fold lies above, keep one sector of a
+                           rotational symmetry of order k (a turn by 360/k) and fold on
+                           within it (default off; docs/builder.md, "Rotation nodes")
+  --max-rotation-order N   largest order tried with --rotation (default 64, range 2..360)
   --seed N                 seed of the candidate sampling, as for detect (default 1)
   --tight-symmetry         fold only clear symmetries (RMS mirror distance <= 0.35 epsilon);
                            default: every epsilon-symmetric region of >= 10% area, as the paper

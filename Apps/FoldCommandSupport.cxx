@@ -8,11 +8,11 @@
 #include <vtkCommand.h>
 #include <vtkDataArray.h>
 #include <vtkExecutive.h>
+#include <vtkExpatSafeXMLMultiBlockDataReader.h>
 #include <vtkFieldData.h>
+#include <vtkFoldingTreeCompactReader.h>
 #include <vtkNew.h>
 #include <vtkRenderWindow.h>
-#include <vtkExpatSafeXMLMultiBlockDataReader.h>
-#include <vtkFoldingTreeCompactReader.h>
 #include <vtkXMLMultiBlockDataWriter.h>
 
 #include <algorithm>
@@ -81,9 +81,12 @@ FoldSettings ParseFoldArguments(int argc, char* argv[])
       f.noVerifyBound = true;
     else if (arg == "--separate-parts")
       f.separateParts = true;
+    else if (arg == "--rotation")
+      f.rotationNodes = true;
+    else if (arg == "--max-rotation-order")
+      f.maxRotationOrder = ParseInteger(arg, value("--max-rotation-order"), 2, 360);
     else if (arg == "--sampled-search-above")
-      f.sampledSearchAboveFaces =
-        ParseInteger(arg, value("--sampled-search-above"), 0, 1000000000);
+      f.sampledSearchAboveFaces = ParseInteger(arg, value("--sampled-search-above"), 0, 1000000000);
     else if (arg == "--keep-projected-points")
       f.keepProjectedPoints = true;
     else if (arg == "--keep-copy-density")
@@ -177,6 +180,9 @@ void ConfigureBuilder(vtkFoldingTreeBuilder* builder, const FoldSettings& f)
     builder->VerifyBoundOff();
   if (f.separateParts)
     builder->ConnectNearbyPartsOff();
+  builder->SetRotationNodes(f.rotationNodes);
+  if (f.maxRotationOrder)
+    builder->SetMaximumRotationOrder(*f.maxRotationOrder);
 }
 
 /// A number of the tree's "Tree" information block (block 1), or `fallback`.

@@ -33,14 +33,16 @@ struct FoldSettings
   std::optional<int> method;
   std::optional<int> randomSeed;
   std::optional<int> sampledSearchAboveFaces;
-  bool tightSymmetry = false;       // --tight-symmetry: RequireTightSymmetry on
-  bool noVerifyBound = false;       // --no-verify-bound: VerifyBound off
-  bool separateParts = false;       // --separate-parts: ConnectNearbyParts off
-  int upAxis = -1;                  // the picture's up axis (--up; -1: auto)
-  bool keepProjectedPoints = false; // roundtrip's unfolder: RemoveProjectedPoints off
-  bool keepCopyDensity = false;     // roundtrip's unfolder: MatchDiscardedDensity off
-  bool noStitch = false;            // roundtrip's unfolder: Stitch off
-  bool noCloseHoles = false;        // roundtrip's unfolder: CloseHoles off
+  bool tightSymmetry = false;          // --tight-symmetry: RequireTightSymmetry on
+  bool noVerifyBound = false;          // --no-verify-bound: VerifyBound off
+  bool separateParts = false;          // --separate-parts: ConnectNearbyParts off
+  bool rotationNodes = false;          // --rotation: RotationNodes on
+  std::optional<int> maxRotationOrder; // --max-rotation-order
+  int upAxis = -1;                     // the picture's up axis (--up; -1: auto)
+  bool keepProjectedPoints = false;    // roundtrip's unfolder: RemoveProjectedPoints off
+  bool keepCopyDensity = false;        // roundtrip's unfolder: MatchDiscardedDensity off
+  bool noStitch = false;               // roundtrip's unfolder: Stitch off
+  bool noCloseHoles = false;           // roundtrip's unfolder: CloseHoles off
 };
 
 /// The arguments of fold / unfold / roundtrip; throws std::runtime_error on a bad one.
@@ -62,7 +64,8 @@ bool WriteTree(vtkMultiBlockDataSet* tree, const std::string& path, std::string&
 vtkSmartPointer<vtkMultiBlockDataSet> ReadTree(const std::string& path, std::string& error);
 
 /// Writes a picture of `mesh` coloured by the cell array `arrayName`, up along `upAxis`
-/// (MakeCategoryScene); skipped without a display (the returned path is then empty). False (with error) when it cannot be written.
+/// (MakeCategoryScene); skipped without a display (the returned path is then empty). False (with
+/// error) when it cannot be written.
 bool WriteCategoryPicture(vtkPolyData* mesh,
   const char* arrayName,
   int upAxis,

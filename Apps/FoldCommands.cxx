@@ -68,6 +68,7 @@ int Fold(int argc, char* argv[])
   const double compression = TreeValue(tree, "Compression");
   const int height = static_cast<int>(TreeValue(tree, "TreeHeight"));
   const int folds = static_cast<int>(TreeValue(tree, "NumberOfFolds"));
+  const int rotations = static_cast<int>(TreeValue(tree, "NumberOfRotations"));
   const int leaves = static_cast<int>(TreeValue(tree, "NumberOfLeaves"));
   const int nodes = static_cast<int>(TreeValue(tree, "NumberOfNodes"));
   const double epsilon = TreeValue(tree, "RootEpsilon");
@@ -77,19 +78,21 @@ int Fold(int argc, char* argv[])
   const int rounds = static_cast<int>(TreeValue(tree, "VerificationRounds"));
   if (f.json)
   {
-    std::printf("{\n  \"mesh\": %s,\n  \"originalFaces\": %d,\n  \"storedFaces\": %d,\n"
-                "  \"compression\": %.6f,\n  \"treeHeight\": %d,\n  \"folds\": %d,\n"
-                "  \"leaves\": %d,\n  \"nodes\": %d,\n  \"rootEpsilon\": %.9g,\n"
-                "  \"verifiedBound\": %.9g,\n  \"pinnedFaces\": %d,\n"
-                "  \"verificationRounds\": %d,\n"
-                "  \"buildSeconds\": %.3f,\n  \"seconds\": %.3f,\n"
-                "  \"outputs\": {\"tree\": %s, \"segmentation\": %s, \"picture\": %s}\n}\n",
+    std::printf(
+      "{\n  \"mesh\": %s,\n  \"originalFaces\": %d,\n  \"storedFaces\": %d,\n"
+      "  \"compression\": %.6f,\n  \"treeHeight\": %d,\n  \"folds\": %d,\n"
+      "  \"rotations\": %d,\n  \"leaves\": %d,\n  \"nodes\": %d,\n  \"rootEpsilon\": %.9g,\n"
+      "  \"verifiedBound\": %.9g,\n  \"pinnedFaces\": %d,\n"
+      "  \"verificationRounds\": %d,\n"
+      "  \"buildSeconds\": %.3f,\n  \"seconds\": %.3f,\n"
+      "  \"outputs\": {\"tree\": %s, \"segmentation\": %s, \"picture\": %s}\n}\n",
       JsonString(f.meshPath).c_str(),
       original,
       stored,
       compression,
       height,
       folds,
+      rotations,
       leaves,
       nodes,
       epsilon,
@@ -108,9 +111,11 @@ int Fold(int argc, char* argv[])
     std::printf(
       "faces:                   %d original, %d stored (non-redundant)\n", original, stored);
     std::printf("compression:             %.1f%%\n", 100.0 * compression);
-    std::printf("tree:                    height %d, %d folds, %d leaves, %d nodes\n",
+    std::printf("tree:                    height %d, %d folds, %d rotations, %d leaves, %d "
+                "nodes\n",
       height,
       folds,
+      rotations,
       leaves,
       nodes);
     std::printf("root epsilon:            %.6g\n", epsilon);
@@ -290,8 +295,8 @@ void PrintUnfoldText(const UnfoldSummary& r)
 {
   std::printf("tree:                    %s (%lld bytes)\n", r.treePath.c_str(), r.inputBytes);
   if (r.quantizationError > 0)
-    std::printf("quantisation:            points moved up to %.6g (inside the bound)\n",
-      r.quantizationError);
+    std::printf(
+      "quantisation:            points moved up to %.6g (inside the bound)\n", r.quantizationError);
   std::printf("faces:                   %lld (%lld points)\n", r.faces, r.points);
   std::printf("projected points:        %d removed, %d left%s\n",
     r.removedProjected,

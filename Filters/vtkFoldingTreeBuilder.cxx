@@ -50,6 +50,8 @@ foldingmeshes::FoldingTreeOptions FoldingTreeOptionsOf(vtkFoldingTreeBuilder* se
     ? foldingmeshes::KeepSide::FewerFaces
     : foldingmeshes::KeepSide::MoreFaces;
   options.connectNearbyParts = self->GetConnectNearbyParts();
+  options.rotationNodes = self->GetRotationNodes();
+  options.maximumRotationOrder = self->GetMaximumRotationOrder();
   options.trace = foldingmeshes::DebugTrace(self);
   options.progress = [self](double p)
   {
@@ -263,6 +265,8 @@ void vtkFoldingTreeBuilder::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "RequireTightSymmetry: " << this->RequireTightSymmetry << "\n";
   os << indent << "VerifyBound: " << this->VerifyBound << "\n";
   os << indent << "ConnectNearbyParts: " << this->ConnectNearbyParts << "\n";
+  os << indent << "RotationNodes: " << this->RotationNodes << "\n";
+  os << indent << "MaximumRotationOrder: " << this->MaximumRotationOrder << "\n";
   os << indent << "Method: " << (this->Method == PAPER ? "Paper" : "Robust") << "\n";
   os << indent << "SampledSearchAboveFaces: " << this->SampledSearchAboveFaces << "\n";
   os << indent << "RandomSeed: " << this->RandomSeed << "\n";

@@ -17,7 +17,8 @@
  * - top level: block 0 = the root node, block 1 = "Tree", a vtkPolyData holding one marker
  *   point (the centroid of the stored points, no cell) whose field data holds OriginalFaces,
  * OriginalPoints, DroppedFaces, StoredFaces, StoredPoints, Compression (1 - stored/original),
- * TreeHeight, NumberOfNodes, NumberOfLeaves, NumberOfFolds, MaximumFoldsOnPath, OriginalArea,
+ * TreeHeight, NumberOfNodes, NumberOfLeaves, NumberOfFolds, NumberOfRotations,
+ * MaximumFoldsOnPath, OriginalArea,
  * BuildSeconds, RootEpsilon, Diagonal, Aborted, VerifiedBound, PinnedFaces and
  * VerificationRounds (see VerifyBound; optional on reading), InputNonManifoldEdges (vtkIdType, 3
  * components per edge of the input used by more than two faces: its input point ids a < b and
@@ -29,7 +30,7 @@
  * type k: the name of its active scalars, vectors, normals, tcoords, tensors, global ids,
  * pedigree ids, ...; "k:" for none) and "InputPointsDataType" (VTK type id of its points).
  * - every node block is named after its node index i (preorder, as in the core tree):
- *   "Leaf i", "Fold i (depth d)", "Segmentation i (depth d)".
+ *   "Leaf i", "Fold i (depth d)", "Segmentation i (depth d)", "Rotation i (depth d, order k)".
  * - a leaf is a vtkPolyData (the leaf mesh: double points, triangles) carrying every point
  *   and cell array of the triangulated input (values copied by original id, active point
  *   attributes kept; unnamed arrays named "UnnamedPointArray<k>" / "UnnamedCellArray<k>";
@@ -58,8 +59,8 @@
  *   plane covering the child's projection (10% margin; the unfolder ignores its geometry;
  *   an outline so that a surface view of the tree does not hide the leaves), its cell
  *   labelled "FoldingLeafId" = the folding node's index (the active cell scalars, as on the
- *   leaves, so ParaView colours the whole tree by FoldingLeafId) whose field data holds the node's metadata:
- *   FoldingNodeKind = 1, the common node arrays above, FoldingPlaneOrigin,
+ *   leaves, so ParaView colours the whole tree by FoldingLeafId) whose field data holds the node's
+ * metadata: FoldingNodeKind = 1, the common node arrays above, FoldingPlaneOrigin,
  *   FoldingPlaneNormal (3 components, the normal points into the kept half),
  *   FoldingDiscardedFaces, FoldingProjectedPoints, FoldingDiscardedOriginalFaces.
  * - a segmentation node is a vtkMultiBlockDataSet of its children (fold(S) first) followed by
@@ -68,6 +69,13 @@
  *   Metadata lives on polydata blocks because XML multiblock writers drop the field data of
  *   composite nodes, and those blocks are not empty because vtkXMLMultiBlockDataWriter skips
  *   data sets without points.
+ * - a rotation node (RotationNodes) is a vtkMultiBlockDataSet of two blocks: 0 = the child
+ *   subtree (one sector of 360/k degrees), 1 = "Axis", a vtkPolyData line along the axis over
+ *   the subtree's extent (10% margin; labelled "FoldingLeafId" like the plane outlines) whose
+ *   field data holds FoldingNodeKind = 3, the common node arrays, FoldingAxisOrigin,
+ *   FoldingAxisDirection (3 components, unit; turns are right-handed about it),
+ *   FoldingRotationOrder (k, 2..360), FoldingDiscardedFaces, FoldingDiscardedOriginalFaces.
+ *   The sector's seam vertices carry the node's depth in TearMask.
  * - readers identify nodes by structure and FoldingNodeKind, not by block names; node indices
  *   come from FoldingNodeIndex (see vtkFoldingTreeIO.h).
  *
@@ -81,12 +89,15 @@
  * "FoldingDepth" (depth of that leaf, or of the folding node that removed the face),
  * "FoldingRole" (0 kept in a leaf, 1 removed by a fold - mirrored away, or collapsed by the
  * projection onto the plane -, 2 kept and touching a segmentation boundary (a vertex with a
- * tear bit), -1 not stored: an input triangle with a repeated vertex). Active scalars: FoldingLeafId
- * (the input's point arrays are kept, but none is active, so viewers colour by leaf).
+ * segmentation's tear bit), 3 removed by a rotation node (its leaf: the one holding the face
+ * it is a turned copy of), -1 not stored: an input triangle with a repeated vertex). Active
+ * scalars: FoldingLeafId (the input's point arrays are kept, but none is active, so viewers colour
+ * by leaf).
  *
  * Bad input (no points, no polygons, invalid mesh) and bad parameters (NaN, which the clamping
  * setters let through; a tolerance length that is not positive and finite) are reported with
- * vtkErrorMacro and the request fails. An abort (AbortExecute) keeps the tree built so far (Aborted = 1).
+ * vtkErrorMacro and the request fails. An abort (AbortExecute) keeps the tree built so far (Aborted
+ * = 1).
  *
  * Parallel runs (pvbatch or pvserver under MPI): when Controller (by default the global
  * controller) has more than one process and the pipeline asks for one of several pieces
@@ -227,6 +238,23 @@ public:
   ///@}
 
   ///@{
+  /**
+   * Rotation nodes (default off; issue 22): where no fold lies above a region, look for a
+   * rotational symmetry of order k (2..MaximumRotationOrder, default 64, range 2..360) and,
+   * when turning one sector of 360/k degrees k times reproduces the whole region within
+   * epsilon / 2, store that sector only (a node of kind 3 with FoldingAxisOrigin,
+   * FoldingAxisDirection and FoldingRotationOrder); the sector is built with epsilon / 2 and
+   * may fold again (a dihedral part becomes rotation + fold). Surfaces of revolution get the
+   * largest k whose sector has whole faces. The rule: docs/builder.md, "Rotation nodes".
+   */
+  vtkSetMacro(RotationNodes, bool);
+  vtkGetMacro(RotationNodes, bool);
+  vtkBooleanMacro(RotationNodes, bool);
+  vtkSetClampMacro(MaximumRotationOrder, int, 2, 360);
+  vtkGetMacro(MaximumRotationOrder, int);
+  ///@}
+
+  ///@{
   /** Symmetry detection: ROBUST (default, several starts) or PAPER (one start). */
   vtkSetClampMacro(Method, int, ROBUST, PAPER);
   vtkGetMacro(Method, int);
@@ -293,6 +321,8 @@ protected:
   bool RequireTightSymmetry = false;
   bool VerifyBound = true;
   bool ConnectNearbyParts = true;
+  bool RotationNodes = false;
+  int MaximumRotationOrder = 64; // the core's DefaultMaximumRotationOrder
   int Method = ROBUST;
   int SampledSearchAboveFaces = 1000;
   int RandomSeed = 1;

@@ -145,7 +145,6 @@ vtkSmartPointer<vtkPolyData> CarriedInput(vtkPolyData* input, std::vector<std::s
   return carried;
 }
 
-
 /// The input's field arrays, active attribute names and point precision on the "Tree" block.
 void AddInputRecord(vtkPolyData* carried, vtkFieldData* fd)
 {
@@ -221,6 +220,40 @@ void BuildPlaneGlyph(const std::vector<Vec3>& points,
   glyph->GetCellData()->SetScalars(label);
 }
 
+/// A rotation node's glyph: a line along its axis over the extent of the subtree's points
+/// (a 10% margin), labelled like the plane glyphs.
+void BuildAxisGlyph(const std::vector<Vec3>& points,
+  const RotationAxis& axis,
+  double diagonal,
+  int nodeIndex,
+  vtkPolyData* glyph)
+{
+  double lo = 0.0, hi = 0.0;
+  for (size_t i = 0; i < points.size(); ++i)
+  {
+    const double t = (points[i] - axis.origin).dot(axis.direction);
+    lo = i == 0 ? t : std::min(lo, t);
+    hi = i == 0 ? t : std::max(hi, t);
+  }
+  const double margin = 0.1 * (hi - lo) + 1e-3 * diagonal;
+  vtkNew<vtkPoints> ends;
+  ends->SetDataTypeToDouble();
+  for (double t : { lo - margin, hi + margin })
+  {
+    const Vec3 p = axis.origin + t * axis.direction;
+    ends->InsertNextPoint(p.x(), p.y(), p.z());
+  }
+  vtkNew<vtkCellArray> line;
+  const vtkIdType ids[2] = { 0, 1 };
+  line->InsertNextCell(2, ids);
+  glyph->SetPoints(ends);
+  glyph->SetLines(line);
+  vtkNew<vtkIntArray> label;
+  label->SetName("FoldingLeafId");
+  label->InsertNextValue(nodeIndex);
+  glyph->GetCellData()->SetScalars(label);
+}
+
 /**
  * One point (no cell) at the centroid of `points`: XML multiblock writers skip data sets
  * without points, so the metadata blocks "Node" and "Tree" carry this marker point.
@@ -261,6 +294,10 @@ std::string BlockName(const FoldingTree& tree, int index)
       break;
     case FoldingNodeKind::Segmentation:
       os << "Segmentation " << index << " (depth " << node.depth << ")";
+      break;
+    case FoldingNodeKind::Rotation:
+      os << "Rotation " << index << " (depth " << node.depth << ", order " << node.rotationOrder
+         << ")";
       break;
   }
   return os.str();
@@ -432,6 +469,16 @@ struct Writer
     {
       SetMarkerPoint(points, meta);
     }
+    else if (node.kind == FoldingNodeKind::Rotation)
+    {
+      BuildAxisGlyph(points, node.axis, this->Tree.diagonal, index, meta);
+      vtkFieldData* fd = meta->GetFieldData();
+      AddDouble(fd, "FoldingAxisOrigin", node.axis.origin.data(), 3);
+      AddDouble(fd, "FoldingAxisDirection", node.axis.direction.data(), 3);
+      AddInt(fd, "FoldingRotationOrder", node.rotationOrder);
+      AddInt(fd, "FoldingDiscardedFaces", node.discardedFaces);
+      AddIntList(fd, "FoldingDiscardedOriginalFaces", node.discardedOriginalFaces);
+    }
     else
     {
       BuildPlaneGlyph(points, node.plane, this->Tree.diagonal, index, meta);
@@ -443,8 +490,10 @@ struct Writer
       AddIntList(fd, "FoldingDiscardedOriginalFaces", node.discardedOriginalFaces);
     }
     block->SetBlock(b, meta);
-    block->GetMetaData(b)->Set(
-      vtkCompositeDataSet::NAME(), node.kind == FoldingNodeKind::Folding ? "Plane" : "Node");
+    block->GetMetaData(b)->Set(vtkCompositeDataSet::NAME(),
+      node.kind == FoldingNodeKind::Folding      ? "Plane"
+        : node.kind == FoldingNodeKind::Rotation ? "Axis"
+                                                 : "Node");
     return block;
   }
 
@@ -537,6 +586,7 @@ bool FoldingTreeToMultiBlock(const FoldingTree& tree,
   AddInt(fd, "NumberOfNodes", tree.NumberOfNodes());
   AddInt(fd, "NumberOfLeaves", tree.NumberOfLeaves());
   AddInt(fd, "NumberOfFolds", tree.NumberOfFolds());
+  AddInt(fd, "NumberOfRotations", tree.NumberOfRotations());
   AddInt(fd, "MaximumFoldsOnPath", tree.MaximumFoldsOnPath());
   AddDouble(fd, "OriginalArea", &tree.originalArea);
   AddDouble(fd, "BuildSeconds", &tree.buildSeconds);

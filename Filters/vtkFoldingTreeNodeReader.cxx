@@ -77,14 +77,16 @@ bool Reader::Double(vtkFieldData* fd, const char* name, const std::string& where
   vtkDataArray* a = fd ? vtkDataArray::SafeDownCast(fd->GetAbstractArray(name)) : nullptr;
   if (!a || a->GetNumberOfComponents() != n || a->GetNumberOfTuples() < 1)
     return this->Fail(where,
-      std::string("missing field array \"") + name + "\" (" + std::to_string(n) +
-        " component(s))");
+      std::string("missing field array \"") + name + "\" (" + std::to_string(n) + " component(s))");
   for (int k = 0; k < n; ++k)
     v[k] = a->GetComponent(0, k);
   return true;
 }
 
-bool Reader::IntList(vtkFieldData* fd, const char* name, const std::string& where, std::vector<int>& v)
+bool Reader::IntList(vtkFieldData* fd,
+  const char* name,
+  const std::string& where,
+  std::vector<int>& v)
 {
   v.clear();
   vtkAbstractArray* a = fd ? fd->GetAbstractArray(name) : nullptr;
@@ -131,8 +133,7 @@ bool Reader::Metadata(vtkFieldData* fd, const std::string& where, FoldingNodeKin
   if (fd->GetAbstractArray("DetectionRun") && this->Int(fd, "DetectionRun", where, run))
     node.detectionRun = run != 0;
   long long starts = 0;
-  if (fd->GetAbstractArray("DetectionStarts") &&
-    this->Int(fd, "DetectionStarts", where, starts))
+  if (fd->GetAbstractArray("DetectionStarts") && this->Int(fd, "DetectionStarts", where, starts))
     node.detectionStarts = static_cast<int>(starts);
   if (fd->GetAbstractArray("DetectionSeconds"))
     this->Double(fd, "DetectionSeconds", where, &node.detectionSeconds);
@@ -149,8 +150,8 @@ bool Reader::Node(vtkDataObject* object, const std::string& where, int parent, i
   if (!mb)
     return this->Fail(where,
       std::string("a ") + object->GetClassName() +
-        " block, expected vtkPolyData (leaf) or vtkMultiBlockDataSet (folding or "
-        "segmentation node)");
+        " block, expected vtkPolyData (leaf) or vtkMultiBlockDataSet (folding, "
+        "segmentation or rotation node)");
   const unsigned int nb = mb->GetNumberOfBlocks();
   vtkPolyData* last = nb > 0 ? vtkPolyData::SafeDownCast(mb->GetBlock(nb - 1)) : nullptr;
   const char* lastName = nb > 0 && mb->HasMetaData(nb - 1)
@@ -159,7 +160,7 @@ bool Reader::Node(vtkDataObject* object, const std::string& where, int parent, i
   if (!last)
     return this->Fail(where,
       "an inner node whose last block is not its metadata polydata (\"Plane\" for a "
-      "folding node, \"Node\" for a segmentation node)");
+      "folding node, \"Node\" for a segmentation node, \"Axis\" for a rotation node)");
   long long kind = -1;
   vtkFieldData* fd = last->GetFieldData();
   if (!fd || !fd->GetAbstractArray("FoldingNodeKind") ||
@@ -179,8 +180,7 @@ bool Reader::Node(vtkDataObject* object, const std::string& where, int parent, i
   {
     if (nb != 2)
       return this->Fail(where,
-        "a folding node must have exactly two blocks (child, plane), found " +
-          std::to_string(nb));
+        "a folding node must have exactly two blocks (child, plane), found " + std::to_string(nb));
     Item item;
     if (!this->ReadFoldingMetadata(fd, where, item) || !this->CheckDepth(item, where, depth))
       return false;
@@ -200,11 +200,23 @@ bool Reader::Node(vtkDataObject* object, const std::string& where, int parent, i
     item.Parent = parent;
     this->Items[self] = std::move(item);
   }
+  else if (kind == static_cast<int>(FoldingNodeKind::Rotation))
+  {
+    if (nb != 2)
+      return this->Fail(where,
+        "a rotation node must have exactly two blocks (child, axis), found " + std::to_string(nb));
+    Item item;
+    if (!this->ReadRotationMetadata(fd, where, item) || !this->CheckDepth(item, where, depth))
+      return false;
+    item.Parent = parent;
+    this->Items[self] = std::move(item);
+  }
   else
   {
     return this->Fail(where,
       "wrong node kind " + std::to_string(kind) +
-        " in the metadata block of a composite node (1 folding, 2 segmentation expected)");
+        " in the metadata block of a composite node (1 folding, 2 segmentation, 3 rotation "
+        "expected)");
   }
   for (unsigned int b = 0; b + 1 < nb; ++b)
   {
@@ -224,8 +236,8 @@ bool Reader::ReadFoldingMetadata(vtkFieldData* fd, const std::string& where, Ite
     return false;
   if (!this->Double(fd, "FoldingPlaneOrigin", where, item.Node.plane.origin.data(), 3) ||
     !this->Double(fd, "FoldingPlaneNormal", where, item.Node.plane.normal.data(), 3))
-    return this->Fail(where,
-      "folding node without its plane metadata: " + this->Error.substr(where.size() + 2));
+    return this->Fail(
+      where, "folding node without its plane metadata: " + this->Error.substr(where.size() + 2));
   long long discarded = 0, projected = 0;
   if (fd->GetAbstractArray("FoldingDiscardedFaces") &&
     this->Int(fd, "FoldingDiscardedFaces", where, discarded))
@@ -237,12 +249,36 @@ bool Reader::ReadFoldingMetadata(vtkFieldData* fd, const std::string& where, Ite
     fd, "FoldingDiscardedOriginalFaces", where, item.Node.discardedOriginalFaces);
 }
 
+/// A rotation node's metadata: the common one, its axis and order, what the sector left out.
+bool Reader::ReadRotationMetadata(vtkFieldData* fd, const std::string& where, Item& item)
+{
+  if (!this->Metadata(fd, where, FoldingNodeKind::Rotation, item))
+    return false;
+  long long order = 0;
+  if (!this->Double(fd, "FoldingAxisOrigin", where, item.Node.axis.origin.data(), 3) ||
+    !this->Double(fd, "FoldingAxisDirection", where, item.Node.axis.direction.data(), 3) ||
+    !this->Int(fd, "FoldingRotationOrder", where, order))
+    return this->Fail(
+      where, "rotation node without its axis metadata: " + this->Error.substr(where.size() + 2));
+  if (order < 2 || order > MaximumRotationNodeOrder)
+    return this->Fail(where,
+      "FoldingRotationOrder " + std::to_string(order) + " is out of range (2 .. " +
+        std::to_string(MaximumRotationNodeOrder) + ")");
+  item.Node.rotationOrder = static_cast<int>(order);
+  long long discarded = 0;
+  if (fd->GetAbstractArray("FoldingDiscardedFaces") &&
+    this->Int(fd, "FoldingDiscardedFaces", where, discarded))
+    item.Node.discardedFaces = static_cast<int>(discarded);
+  return this->IntList(
+    fd, "FoldingDiscardedOriginalFaces", where, item.Node.discardedOriginalFaces);
+}
+
 bool Reader::CheckDepth(const Item& item, const std::string& where, int depth)
 {
   if (item.Node.depth != depth)
     return this->Fail(where,
-      "FoldingNodeDepth " + std::to_string(item.Node.depth) +
-        " does not match the block's depth " + std::to_string(depth));
+      "FoldingNodeDepth " + std::to_string(item.Node.depth) + " does not match the block's depth " +
+        std::to_string(depth));
   return true;
 }
 
@@ -305,9 +341,7 @@ bool Reader::ReadLeafGeometry(vtkPolyData* leaf, const std::string& where, Foldi
 }
 
 /// The per-point input ids, masks and Projected flags, the per-triangle input ids.
-bool Reader::ReadRequiredLeafArrays(vtkPolyData* leaf,
-  const std::string& where,
-  FoldingLeafMesh& m)
+bool Reader::ReadRequiredLeafArrays(vtkPolyData* leaf, const std::string& where, FoldingLeafMesh& m)
 {
   const vtkIdType np = static_cast<vtkIdType>(m.points.size());
   const vtkIdType nt = static_cast<vtkIdType>(m.triangles.size());
@@ -371,9 +405,7 @@ bool Reader::ReadRequiredLeafArrays(vtkPolyData* leaf,
 }
 
 /// ErrorBudget, InputBoundary and InputBorderNeighbors (older files lack them).
-bool Reader::ReadOptionalLeafArrays(vtkPolyData* leaf,
-  const std::string& where,
-  FoldingLeafMesh& m)
+bool Reader::ReadOptionalLeafArrays(vtkPolyData* leaf, const std::string& where, FoldingLeafMesh& m)
 {
   const vtkIdType np = static_cast<vtkIdType>(m.points.size());
   vtkPointData* pd = leaf->GetPointData();

@@ -57,6 +57,7 @@ struct Reader
 
 private:
   bool ReadFoldingMetadata(vtkFieldData* fd, const std::string& where, Item& item);
+  bool ReadRotationMetadata(vtkFieldData* fd, const std::string& where, Item& item);
   bool ReadLeafGeometry(vtkPolyData* leaf, const std::string& where, FoldingLeafMesh& m);
   bool ReadRequiredLeafArrays(vtkPolyData* leaf, const std::string& where, FoldingLeafMesh& m);
   bool ReadOptionalLeafArrays(vtkPolyData* leaf, const std::string& where, FoldingLeafMesh& m);

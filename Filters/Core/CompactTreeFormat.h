@@ -8,7 +8,8 @@
 //                       CompactPointSymbols.h) instead of being a Draco attribute
 //          8   u32      size T of the zlib-compressed tree section, u32 its raw size
 //         16   T bytes  tree section (zlib): counts, lengths, quantisation, nodes in preorder
-//                       (kind, leaf reason, children, epsilon / root epsilon, fold planes),
+//                       (kind, leaf reason, children, epsilon / root epsilon, fold planes,
+//                       rotation axes and orders),
 //                       leaves' point / triangle counts, the palette of point data, and
 //                       (flag bit 1) each point's palette symbol, leaf by leaf, border first
 //     16 + T   u32      size D of the Draco section, then D bytes: one Draco mesh of every

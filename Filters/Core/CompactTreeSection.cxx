@@ -126,7 +126,8 @@ void WriteTreeSection(const FoldingTree& tree,
   w.F64(coding.origin.z());
   w.F64(coding.range);
   w.U8(static_cast<uint8_t>(coding.bits));
-  // Nodes in preorder: kind and leaf reason, children, epsilon, statistics, planes, leaf sizes.
+  // Nodes in preorder: kind and leaf reason, children, epsilon, statistics, planes, rotation
+  // axes and orders (kind 3), leaf sizes.
   w.VarUInt(tree.nodes.size());
   for (size_t i = 0; i < tree.nodes.size(); ++i)
   {
@@ -148,6 +149,16 @@ void WriteTreeSection(const FoldingTree& tree,
       w.F64(node.plane.normal.dot(node.plane.origin - coding.origin));
       w.VarUInt(static_cast<uint64_t>(std::max(0, node.discardedFaces)));
       w.VarUInt(static_cast<uint64_t>(std::max(0, node.projectedPoints)));
+    }
+    if (node.kind == FoldingNodeKind::Rotation)
+    {
+      // Double precision: a turn moves a point by its radius times the direction's error.
+      for (int k = 0; k < 3; ++k)
+        w.F64(node.axis.origin[k]);
+      for (int k = 0; k < 3; ++k)
+        w.F64(node.axis.direction[k]);
+      w.VarUInt(static_cast<uint64_t>(node.rotationOrder));
+      w.VarUInt(static_cast<uint64_t>(std::max(0, node.discardedFaces)));
     }
     if (node.kind == FoldingNodeKind::Leaf)
     {
@@ -233,7 +244,7 @@ void ReadTreeSection(ByteReader& r,
     FoldingNode& node = tree.nodes[i];
     const uint8_t kindAndReason = r.U8();
     const int kind = kindAndReason & 3, reason = kindAndReason >> 2;
-    if (kind > static_cast<int>(FoldingNodeKind::Segmentation) ||
+    if (kind > static_cast<int>(FoldingNodeKind::Rotation) ||
       reason > static_cast<int>(LeafReason::Aborted))
       throw CompactFormatError("tree section: unknown node kind or leaf reason");
     node.kind = static_cast<FoldingNodeKind>(kind);
@@ -276,6 +287,21 @@ void ReadTreeSection(ByteReader& r,
       node.plane.origin = node.plane.Project(centre);
       node.discardedFaces = static_cast<int>(r.Count(MaximumCount - 1, "discarded faces"));
       node.projectedPoints = static_cast<int>(r.Count(MaximumCount - 1, "projected points"));
+    }
+    if (node.kind == FoldingNodeKind::Rotation)
+    {
+      for (int k = 0; k < 3; ++k)
+        node.axis.origin[k] = r.F64();
+      for (int k = 0; k < 3; ++k)
+        node.axis.direction[k] = r.F64();
+      if (!node.axis.origin.allFinite() || !node.axis.direction.allFinite() ||
+        std::abs(node.axis.direction.norm() - 1.0) > 1e-6)
+        throw CompactFormatError("tree section: invalid rotation axis");
+      const size_t order = r.Count(MaximumRotationNodeOrder, "rotation order");
+      if (order < 2)
+        throw CompactFormatError("tree section: rotation order below 2");
+      node.rotationOrder = static_cast<int>(order);
+      node.discardedFaces = static_cast<int>(r.Count(MaximumCount - 1, "discarded faces"));
     }
     if (node.kind == FoldingNodeKind::Leaf)
     {

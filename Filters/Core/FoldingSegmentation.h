@@ -14,7 +14,8 @@ enum class FoldingFaceRole
 {
   Kept = 0,         ///< stored in a leaf
   MirroredAway = 1, ///< removed by a fold; a mirror copy of a stored face stands for it
-  Boundary = 2      ///< stored in a leaf, with a vertex on a segmentation boundary (tear)
+  Boundary = 2,     ///< stored in a leaf, with a vertex on a segmentation boundary (tear)
+  TurnedAway = 3    ///< removed by a rotation node; a turned copy of a stored face stands for it
 };
 
 struct FoldingSegmentation

@@ -17,6 +17,8 @@ const char* ToString(FoldingNodeKind kind)
       return "Folding";
     case FoldingNodeKind::Segmentation:
       return "Segmentation";
+    case FoldingNodeKind::Rotation:
+      return "Rotation";
   }
   return "Unknown";
 }
@@ -98,6 +100,14 @@ int FoldingTree::NumberOfFolds() const
   int count = 0;
   for (const FoldingNode& node : this->nodes)
     count += node.kind == FoldingNodeKind::Folding;
+  return count;
+}
+
+int FoldingTree::NumberOfRotations() const
+{
+  int count = 0;
+  for (const FoldingNode& node : this->nodes)
+    count += node.kind == FoldingNodeKind::Rotation;
   return count;
 }
 
@@ -200,23 +210,48 @@ std::string FoldingTree::Validate() const
         if (node.children.size() < 2)
           return os.str() + "a segmentation node must have at least two children";
         break;
+      case FoldingNodeKind::Rotation:
+        if (node.children.size() != 1)
+          return os.str() + "a rotation node must have exactly one child";
+        if (!node.axis.origin.allFinite() || !node.axis.direction.allFinite() ||
+          std::abs(node.axis.direction.norm() - 1.0) > 1e-6)
+          return os.str() + "invalid rotation axis (direction must be unit length)";
+        if (node.rotationOrder < 2 || node.rotationOrder > MaximumRotationNodeOrder)
+          return os.str() + "rotation order out of range (2 .. 360)";
+        break;
+      default:
+        return os.str() + "unknown node kind";
     }
   }
 
   // Level flags: bit d of a leaf's planeMask stands for the folding node at depth d on its
-  // path, bit d of its tearMask for the segmentation node there (the builder sets no others).
+  // path, bit d of its tearMask for the segmentation or rotation node there (a rotation's
+  // seams; the builder sets no others).
   // The bounding box of the stored points, to check the diagonal against.
   Vec3 lo = Vec3::Constant(std::numeric_limits<double>::max()), hi = -lo;
   int foldsOnPath = 0;
+  double sectorsOnPath = 1.0; // product of the rotation orders on a path
   for (int i = 0; i < n; ++i)
   {
     const FoldingNode& node = this->nodes[i];
     if (node.kind != FoldingNodeKind::Leaf)
       continue;
     uint64_t folds = 0, segmentations = 0;
+    double sectors = 1.0;
     for (int a = node.parent; a >= 0; a = this->nodes[a].parent)
-      (this->nodes[a].kind == FoldingNodeKind::Folding ? folds : segmentations) |= uint64_t(1)
-        << this->nodes[a].depth;
+    {
+      const FoldingNode& above = this->nodes[a];
+      if (above.kind == FoldingNodeKind::Folding)
+        folds |= uint64_t(1) << above.depth;
+      else if (above.kind == FoldingNodeKind::Segmentation)
+        segmentations |= uint64_t(1) << above.depth;
+      else if (above.kind == FoldingNodeKind::Rotation)
+      {
+        segmentations |= uint64_t(1) << above.depth; // the seams between its sectors
+        sectors *= above.rotationOrder;
+      }
+    }
+    sectorsOnPath = std::max(sectorsOnPath, sectors);
     const FoldingLeafMesh& m = node.mesh;
     for (int v = 0; v < m.NumberOfPoints(); ++v)
     {
@@ -225,7 +260,7 @@ std::string FoldingTree::Validate() const
         os.str("");
         os << "node " << i << " (Leaf): point " << v
            << " has a PlaneMask or TearMask bit for a level without a folding or "
-              "segmentation node above the leaf";
+              "segmentation (or rotation) node above the leaf";
         return os.str();
       }
       lo = lo.cwiseMin(m.points[v]);
@@ -235,17 +270,18 @@ std::string FoldingTree::Validate() const
   }
   // The stored points lie within the input's bounding box (points projected onto fold planes
   // within epsilon of it), and every fold keeps a half whose diameter is at least a fifth of
-  // its region's: the extent of the stored points bounds the diagonal from both sides - from
+  // its region's (a rotation node of order k a sector at least 1/k of it): the extent of the
+  // stored points bounds the diagonal from both sides - from
   // below only when no input triangle was dropped (the diagonal is the input triangles', and a
   // dropped triangle with a repeated vertex may lie far from the stored ones).
   const double extent = (hi - lo).norm();
   if (extent > 4.0 * this->diagonal + 4.0 * this->rootEpsilon ||
     (this->numberOfDroppedFaces == 0 &&
-      this->diagonal > 8.0 * std::pow(5.0, foldsOnPath) * extent))
+      this->diagonal > 8.0 * std::pow(5.0, foldsOnPath) * sectorsOnPath * extent))
   {
     os.str("");
-    os << "the diagonal " << this->diagonal
-       << " does not match the extent of the stored points " << extent;
+    os << "the diagonal " << this->diagonal << " does not match the extent of the stored points "
+       << extent;
     return os.str();
   }
   return std::string();

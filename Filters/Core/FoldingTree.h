@@ -1,9 +1,11 @@
 // The folding tree of the paper's section 4.1: leaves hold mesh data, folding nodes a mirror
-// plane and one child, segmentation nodes children whose regions partition the parent's faces.
+// plane and one child, segmentation nodes children whose regions partition the parent's faces;
+// rotation nodes (issue 22) an axis, an order k and one child, one sector of 360/k degrees.
 #ifndef foldingmeshes_FoldingTree_h
 #define foldingmeshes_FoldingTree_h
 
 #include "Plane.h"
+#include "RotationAxis.h"
 
 #include <cstdint>
 #include <string>
@@ -19,9 +21,13 @@ constexpr int MaximumFoldingTreeLevels = 64;
 enum class FoldingNodeKind
 {
   Leaf,
-  Folding,     ///< one child (the kept half) and a plane
-  Segmentation ///< children 0..n: fold(S) first, then one subtree per remaining component Ri
+  Folding,      ///< one child (the kept half) and a plane
+  Segmentation, ///< children 0..n: fold(S) first, then one subtree per remaining component Ri
+  Rotation      ///< one child (one sector of 360/k degrees), an axis and an order k
 };
+
+/// The largest order a rotation node may have (FoldingNode::rotationOrder).
+constexpr int MaximumRotationNodeOrder = 360;
 
 /// Why the builder made a leaf (None for inner nodes).
 enum class LeafReason
@@ -74,8 +80,9 @@ struct MirroredFlag
  * Level flags (bit d = the node at depth d on the path from the root to this leaf):
  * - tearMask: the paper's tear stack. Bit d is set when the vertex lay on a segmentation
  *   boundary of the segmentation node at depth d (it was used by faces of two different
- *   children of that node). It keeps the bit through folds (paper §4.3: it inherits).
- *   Tear vertices removed by folds are recorded in mirroredFlags (see MirroredFlag).
+ *   children of that node), or on a seam of the sector kept by the rotation node at depth d
+ *   (the unfolder stitches the turned copies there). It keeps the bit through folds (paper §4.3: it
+ * inherits). Tear vertices removed by folds are recorded in mirroredFlags (see MirroredFlag).
  * - planeMask: bit d is set when the vertex lies on the plane of the folding node at depth d
  *   (it was projected or snapped onto it, see FoldingTreeBuilder.h). The unfolder merges
  *   these vertices with their mirror images, which closes the fold line. Fold-line vertices
@@ -108,7 +115,7 @@ struct FoldingNode
 {
   FoldingNodeKind kind = FoldingNodeKind::Leaf;
   int parent = -1;           ///< node index, -1 for the root
-  std::vector<int> children; ///< node indices (Folding: exactly one; Segmentation: >= 2)
+  std::vector<int> children; ///< node indices (Folding, Rotation: one; Segmentation: >= 2)
   int depth = 0;             ///< root 0
   double epsilon = 0.0;      ///< absolute tolerance this node was built with
   int foldsAbove = 0;        ///< folding nodes strictly above this node
@@ -123,13 +130,19 @@ struct FoldingNode
   int discardedFaces = 0;  ///< faces removed by the fold (mirrored away, or collapsed)
   int projectedPoints = 0; ///< points moved from the discarded side onto the plane
   std::vector<int> discardedOriginalFaces; ///< sorted input ids of the removed faces
+                                           ///< (rotation nodes: the other k - 1 sectors)
+
+  // Rotation nodes: the child is one sector; the unfolder turns it k - 1 times by 360/k
+  // degrees about the axis (right-handed about its direction) and welds the seams.
+  RotationAxis axis;
+  int rotationOrder = 0; ///< k, 2 .. MaximumRotationNodeOrder
 
   // Detection statistics (Folding and Segmentation nodes, and NoSymmetry leaves).
   double symmetricAreaFraction = 0.0; ///< area(S) / area(region) after trimming
   bool detectionRun = false;
-  int detectionStarts = 0;        ///< starts the detection tried (SymmetryResult::startsTried)
-  double detectionSeconds = 0.0;  ///< wall time of the detection at this node (a measurement:
-                                  ///< differs between runs, like FoldingTree::buildSeconds)
+  int detectionStarts = 0;       ///< starts the detection tried (SymmetryResult::startsTried)
+  double detectionSeconds = 0.0; ///< wall time of the detection at this node (a measurement:
+                                 ///< differs between runs, like FoldingTree::buildSeconds)
 
   // Leaves.
   LeafReason leafReason = LeafReason::None;
@@ -196,6 +209,8 @@ struct FoldingTree
   int Height() const;
   /// Folding nodes in the tree, and the most on one root-to-leaf path.
   int NumberOfFolds() const;
+  /// Rotation nodes in the tree.
+  int NumberOfRotations() const;
   int MaximumFoldsOnPath() const;
   /// Indices of the leaves, in preorder.
   std::vector<int> Leaves() const;

@@ -167,10 +167,6 @@ void Builder::RecordInputEdges(const WorkMesh& w)
   std::sort(this->Tree.inputNonManifoldEdges.begin(), this->Tree.inputNonManifoldEdges.end());
 }
 
-namespace
-{
-/// Input-degenerate faces (never in S: detection ignores them) follow S when all their
-/// vertices are vertices of S.
 void AddDegenerateFaces(const WorkMesh& w, const PreparedMesh& pm, std::vector<char>& S)
 {
   std::vector<char> inS(w.points.size(), 0);
@@ -184,6 +180,8 @@ void AddDegenerateFaces(const WorkMesh& w, const PreparedMesh& pm, std::vector<c
       S[f] = 1;
 }
 
+namespace
+{
 /// Tear vertices of the segmentation at `depth`: used by faces of two different children (S
 /// is child 0, remaining component c is child 1 + c, labels per face).
 void MarkTears(WorkMesh& w, const std::vector<char>& S, const std::vector<int>& labels, int depth)
@@ -280,7 +278,6 @@ int Builder::Build(WorkMesh w, int parent, int depth, double eps, int folds, uin
   int provenSide = 0;
   std::vector<char> S =
     this->ChooseSymmetricRegion(w, pm, *regionFaces, result, eps, pathFolds, plane, provenSide);
-  regionFaces.reset();
   AddDegenerateFaces(w, pm, S);
   const double sArea = RegionArea(pm, S);
   int sFaces = 0;
@@ -296,9 +293,72 @@ int Builder::Build(WorkMesh w, int parent, int depth, double eps, int folds, uin
       sFaces >= (O.useMinimumFaces ? std::max(1, O.minimumFaces) : 1);
     meaningful = meaningful && !this->IsAncestorPlane(plane, pathFolds, RegionCentroid(pm, S), eps);
   }
+  // A rotation node instead (FoldingTreeRotation.cxx), where no fold lies above: of the whole
+  // region, or of its rotational region (child 0 of a segmentation).
+  RotationPlan rotation;
+  const bool rotates = pathFolds == 0 &&
+    this->PlanRotation(
+      index, w, pm, *regionFaces, result, meaningful && sFaces == nf, depth, eps, rotation);
+  regionFaces.reset();
+  const SymmetricChild fold = [&](int at, WorkMesh region, int atDepth)
+  { this->Fold(at, std::move(region), plane, atDepth, eps, folds, pathFolds, provenSide); };
+  if (!rotates)
+  {
+    if (!meaningful)
+      return this->MakeLeaf(index, w, LeafReason::NoSymmetry), index;
+    this->Segment(index, std::move(w), pm, S, depth, eps, folds, pathFolds, fold);
+    return index;
+  }
+  const SymmetricChild turn = [&](int at, WorkMesh region, int atDepth)
+  { this->Rotate(at, std::move(region), rotation, atDepth, eps, folds); };
+  const std::vector<char> turned =
+    rotation.region.empty() ? std::vector<char>(nf, 1) : rotation.region;
   if (!meaningful)
-    return this->MakeLeaf(index, w, LeafReason::NoSymmetry), index;
+  {
+    this->Segment(index, std::move(w), pm, turned, depth, eps, folds, pathFolds, turn);
+    return index;
+  }
+  // Both: the subtree that stores fewer faces (ties: the fold's, the paper's). Each is built
+  // in full, the rotation's first; the nodes from `index` on are the subtree (preorder).
+  const FoldingNode fresh = this->Tree.nodes[index];
+  const double done = this->DoneFaces;
+  this->Segment(index, w, pm, turned, depth, eps, folds, pathFolds, turn);
+  const int turnedFaces = this->SubtreeStoredFaces(index);
+  std::vector<FoldingNode> turnedNodes(this->Tree.nodes.begin() + index, this->Tree.nodes.end());
+  const double turnedDone = this->DoneFaces;
+  this->Tree.nodes.resize(index);
+  this->Tree.nodes.push_back(fresh);
+  this->DoneFaces = done;
+  this->Segment(index, std::move(w), pm, S, depth, eps, folds, pathFolds, fold);
+  if (turnedFaces < this->SubtreeStoredFaces(index))
+  {
+    this->Tree.nodes.resize(index);
+    this->Tree.nodes.insert(this->Tree.nodes.end(), turnedNodes.begin(), turnedNodes.end());
+    this->DoneFaces = turnedDone;
+  }
+  return index;
+}
 
+int Builder::SubtreeStoredFaces(int index) const
+{
+  int faces = 0;
+  for (int i = index; i < this->Tree.NumberOfNodes(); ++i)
+    if (this->Tree.nodes[i].kind == FoldingNodeKind::Leaf)
+      faces += this->Tree.nodes[i].mesh.NumberOfFaces();
+  return faces;
+}
+
+void Builder::Segment(int index,
+  WorkMesh w,
+  const PreparedMesh& pm,
+  const std::vector<char>& S,
+  int depth,
+  double eps,
+  int folds,
+  uint64_t pathFolds,
+  const SymmetricChild& symmetric)
+{
+  const int nf = w.NumberOfFaces();
   std::vector<char> rest(nf, 0);
   for (int f = 0; f < nf; ++f)
     rest[f] = !S[f];
@@ -306,11 +366,11 @@ int Builder::Build(WorkMesh w, int parent, int depth, double eps, int folds, uin
   const int n = LabelConnectedRegions(pm, rest, labels);
   if (n == 0)
   {
-    this->Fold(index, std::move(w), plane, depth, eps, folds, pathFolds, provenSide);
-    return index;
+    symmetric(index, std::move(w), depth);
+    return;
   }
 
-  node.kind = FoldingNodeKind::Segmentation;
+  this->Tree.nodes[index].kind = FoldingNodeKind::Segmentation;
   MarkTears(w, S, labels, depth);
   WorkMesh ws = Extract(w, S);
   std::vector<WorkMesh> regions(n);
@@ -322,15 +382,15 @@ int Builder::Build(WorkMesh w, int parent, int depth, double eps, int folds, uin
     for (int r = 0; r < n; ++r)
       regions[r] = ExtractFaces(w, facesOf[r]);
   }
-  // fold(S): a folding node one level down, then the remaining components.
+  // fold(S) (or its rotation): a folding (rotation) node one level down, then the remaining
+  // components.
   {
-    const int foldIndex = this->NewNode(index, depth + 1, eps, folds, ws);
-    this->Tree.nodes[foldIndex].symmetricAreaFraction = 1.0;
-    this->Fold(foldIndex, std::move(ws), plane, depth + 1, eps, folds, pathFolds, provenSide);
+    const int child = this->NewNode(index, depth + 1, eps, folds, ws);
+    this->Tree.nodes[child].symmetricAreaFraction = 1.0;
+    symmetric(child, std::move(ws), depth + 1);
   }
   for (int r = 0; r < n; ++r)
     this->Build(std::move(regions[r]), index, depth + 1, eps, folds, pathFolds);
-  return index;
 }
 }
 

@@ -25,8 +25,9 @@
 #define foldingmeshes_FoldingTreeBuilder_h
 
 #include "FoldingTree.h"
-#include "Trace.h"
+#include "RotationalSymmetry.h"
 #include "SymmetryDetection.h"
+#include "Trace.h"
 
 #include <functional>
 #include <string>
@@ -164,6 +165,17 @@ struct FoldingTreeOptions
    * are snapped onto it (and flagged in planeMask) so the unfolder closes the fold line.
    */
   double planeSnapFraction = 0.01;
+  /**
+   * Rotation nodes (issue 22): at a node with no fold and no rotation above it, find the
+   * region's rotational symmetry (DetectRotationalSymmetry, orders 2 .. maximumRotationOrder)
+   * and, when turning one sector of 360/k degrees k times reproduces the whole region within
+   * epsilon / 2, keep that sector only (FoldingNodeKind::Rotation; its subtree is built with
+   * epsilon / 2 and may fold again: a dihedral part becomes rotation + fold). Taken when k >= 3,
+   * or k = 2 and the mirror plane's S is not the whole region. The rule for the order, the
+   * sector cut and the seams: FoldingTreeRotation.cxx. Off by default (issue 22 measures it).
+   */
+  bool rotationNodes = false;
+  int maximumRotationOrder = DefaultMaximumRotationOrder;
 
   /// Called with overall progress in [0,1]; return false to abort (the tree built so far is
   /// returned with `aborted` set; unfinished regions become Aborted leaves).

@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <functional>
 #include <map>
 #include <memory>
 #include <vector>
@@ -26,6 +27,26 @@ bool KeepsPositiveSide(const std::vector<Vec3>& points,
   const std::vector<Triangle>& triangles,
   const Plane& plane,
   KeepSide keepSide);
+
+/// Input-degenerate faces (never in S: detection ignores them) follow S when all their
+/// vertices are vertices of S.
+void AddDegenerateFaces(const WorkMesh& w, const PreparedMesh& pm, std::vector<char>& S);
+
+/// A rotation node's sector, planned (Builder::PlanRotation) before the node is made.
+struct RotationPlan
+{
+  RotationAxis axis;
+  int order = 0;
+  /// Per face of w: the rotational region (a segmentation's child 0); empty: the whole region.
+  std::vector<char> region;
+  int regionFaces = 0;
+  /// Per face / point of the planned region: the sector, its points with the seams made to
+  /// meet, the seam vertices, and what the turned copies charge each kept point's budget.
+  std::vector<char> keep;
+  std::vector<Vec3> points;
+  std::vector<char> seam;
+  std::vector<double> charge;
+};
 
 class Builder
 {
@@ -137,6 +158,26 @@ private:
 
   bool IsAncestorPlane(const Plane& p, uint64_t pathFolds, const Vec3& at, double eps) const;
 
+  /// Builds the symmetric region of node `at` (its region, at depth atDepth): a fold or a
+  /// rotation (Builder::Segment's child 0, or the node itself when S is the whole region).
+  using SymmetricChild = std::function<void(int at, WorkMesh region, int atDepth)>;
+  /**
+   * Node `index` with symmetric region S: `symmetric` on the node itself when S is the whole
+   * region, else a segmentation node with child 0 = `symmetric` on S and one subtree per
+   * remaining component (paper 4.2; the tear bits of the node's depth on their boundaries).
+   */
+  void Segment(int index,
+    WorkMesh w,
+    const PreparedMesh& pm,
+    const std::vector<char>& S,
+    int depth,
+    double eps,
+    int folds,
+    uint64_t pathFolds,
+    const SymmetricChild& symmetric);
+  /// Faces the leaves of the subtree of `index` store (its nodes: index .. the last, preorder).
+  int SubtreeStoredFaces(int index) const;
+
   /// Builds the subtree of region w; returns its node index.
   int Build(WorkMesh w, int parent, int depth, double eps, int folds, uint64_t pathFolds);
 
@@ -170,6 +211,33 @@ private:
     const Plane& plane,
     int depth,
     uint64_t pathFolds) const;
+
+  /**
+   * Rotation nodes (FoldingTreeOptions::rotationNodes; the rule is in FoldingTreeRotation.cxx):
+   * whether node `index` (region w, prepared as pm, with its face tree and the plane
+   * detection's result) may keep one sector of a rotation - of the whole region, or (plan.region)
+   * of its rotational region, child 0 of a segmentation. wholeMirror: the mirror plane's S is
+   * the whole region (then order 2 is left to the fold).
+   */
+  bool PlanRotation(int index,
+    const WorkMesh& w,
+    const PreparedMesh& pm,
+    const FaceTree& regionFaces,
+    const SymmetryResult& planes,
+    bool wholeMirror,
+    int depth,
+    double eps,
+    RotationPlan& plan) const;
+  bool PlanSector(const RotationResult& r,
+    const WorkMesh& region,
+    const std::vector<int>& orders,
+    double eps,
+    RotationPlan& plan,
+    std::vector<int>* covered) const;
+  /// Turns node `index` (region w: the region PlanSector planned on) into a rotation node
+  /// and builds the sector below it.
+  void Rotate(int index, WorkMesh w, const RotationPlan& plan, int depth, double eps, int folds);
+  bool HasRotationAbove(int index) const;
 
   /// Turns node `index` (region w) into a folding node and builds the kept half below it.
   /// provenSide: +1 / -1, the side of `plane` whose faces the trim proved (their mirror

@@ -29,6 +29,10 @@ Piece Unfolder::Unfold(int index)
       piece = this->Unfold(node.children[0]);
       this->Reflect(node, piece);
       break;
+    case FoldingNodeKind::Rotation:
+      piece = this->Unfold(node.children[0]);
+      this->Turn(index, piece);
+      break;
     case FoldingNodeKind::Segmentation:
     {
       std::vector<int> childOfPoint;
@@ -197,6 +201,53 @@ void Unfolder::Reflect(const FoldingNode& node, Piece& piece)
   this->Result.foldExcessFaces += std::max(0, FoldExcessFaces(node, piece));
 }
 
+/// The sector turned k - 1 times by 360/k degrees about the axis (copies keep their
+/// orientation), then the seams between the sectors stitched like a segmentation's: the
+/// builder flagged the seam vertices with the node's tear bit and made them meet.
+void Unfolder::Turn(int index, Piece& piece)
+{
+  const FoldingNode& node = this->Tree.nodes[index];
+  const int k = node.rotationOrder;
+  const Piece sector = piece;
+  std::vector<int> sectorOf(piece.points.size(), 0);
+  for (int j = 1; j < k; ++j)
+  {
+    const AxisTurn turn(node.axis, 2.0 * EIGEN_PI * j / k);
+    std::map<int, int> turnedCopy;
+    for (int c : sector.faceCopy)
+      turnedCopy[c] = -1;
+    for (int c : sector.pointCopy)
+      turnedCopy[c] = -1;
+    for (auto& entry : turnedCopy)
+    {
+      UnfoldCopy copy = this->Result.copies[entry.first];
+      copy.linear = turn.matrix * copy.linear;
+      copy.translation = turn.Point(copy.translation);
+      entry.second = static_cast<int>(this->Result.copies.size());
+      this->Result.copies.push_back(copy);
+    }
+    Piece turned = sector;
+    for (Vec3& p : turned.points)
+      p = turn.Point(p);
+    for (int& c : turned.pointCopy)
+      c = turnedCopy[c];
+    for (int& c : turned.faceCopy)
+      c = turnedCopy[c];
+    piece.Append(turned);
+    sectorOf.insert(sectorOf.end(), sector.points.size(), j);
+  }
+  SeamReport seam;
+  seam.node = index;
+  seam.depth = node.depth;
+  if (this->Options.stitch)
+    this->Stitch(node, piece, sectorOf, seam);
+  else
+    this->CountTears(node, piece, seam);
+  this->Result.seams.push_back(seam);
+  if (this->Options.stitch && this->Options.removeProjectedPoints)
+    this->Result.removedProjectedPoints += this->RemoveProjectedPoints(&node, piece, nullptr);
+}
+
 void Unfolder::CountTears(const FoldingNode& node, Piece& piece, SeamReport& seam)
 {
   std::vector<char> isTear(piece.points.size());
@@ -301,7 +352,9 @@ void StoreResult(Piece& piece, UnfoldedMesh& result)
  *    are the plane and the copy known. A segmentation node stitches its children's seams
  *    (Stitch -> StitchVertices: proposals, clusters, placement within the error budgets,
  *    merge, zipper, gap filling, constrained Laplacian smoothing), then removes the projected
- *    points whose rings the seams closed.
+ *    points whose rings the seams closed. A rotation node (issue 22) turns its child's result
+ *    k - 1 times by 360/k degrees about its axis (Turn; orientation kept) and stitches the seams
+ *    between neighbouring sectors the same way (the sectors play the children).
  * 2. The weld (WeldBoundaries): open edges between copies of different subtrees meet only at
  *    the root, so the last stitch runs over the whole mesh, within the budgets left.
  * 3. The repair (Repair: degenerate and non-manifold faces dropped, orientation made

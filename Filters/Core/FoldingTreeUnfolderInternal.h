@@ -267,6 +267,7 @@ public:
 private:
   Piece FromLeaf(int index);
   void Reflect(const FoldingNode& node, Piece& piece);
+  void Turn(int index, Piece& piece);
   void CountTears(const FoldingNode& node, Piece& piece, SeamReport& seam);
   static void Consume(Piece& piece, int code);
 

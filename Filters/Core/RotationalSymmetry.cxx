@@ -290,35 +290,6 @@ void EvaluateOnMesh(const PreparedMesh& mesh,
 }
 }
 
-Vec3 RotationAxis::Rotate(const Vec3& p, double angle) const
-{
-  return AxisTurn(*this, angle).Point(p);
-}
-
-Vec3 RotationAxis::RotateDirection(const Vec3& v, double angle) const
-{
-  return AxisTurn(*this, angle).Direction(v);
-}
-
-AxisTurn::AxisTurn(const RotationAxis& axis, double angle)
-  : matrix(Eigen::AngleAxisd(angle, axis.direction).toRotationMatrix())
-  , origin(axis.origin)
-{
-}
-
-double AxisAngleDegrees(const RotationAxis& a, const RotationAxis& b)
-{
-  const double c = std::min(1.0, std::abs(a.direction.dot(b.direction)));
-  return std::acos(c) * 180.0 / Pi;
-}
-
-double AxisOffsetAt(const RotationAxis& a, const RotationAxis& b, const Vec3& at)
-{
-  const Vec3 onA = a.origin + (at - a.origin).dot(a.direction) * a.direction;
-  const Vec3 r = onA - b.origin;
-  return (r - r.dot(b.direction) * b.direction).norm();
-}
-
 RotationResult DetectRotationalSymmetry(const PreparedMesh& mesh,
   const RotationOptions& options,
   const FaceTree* meshFaces)
@@ -363,14 +334,16 @@ RotationResult DetectRotationalSymmetry(const PreparedMesh& mesh,
   for (const ScanEntry& entry : perAxis)
     if (entry.order >= 2)
       scanned.push_back(entry);
-  // Most faces saved first; ties (within 2% of the area) to the higher order, then the
-  // earlier candidate.
+  // Most faces saved (or, rankByArea, the largest area) first; ties (within 2% of the area)
+  // to the higher order, then the earlier candidate.
+  const bool byArea = options.rankByArea;
   std::stable_sort(scanned.begin(),
     scanned.end(),
-    [](const ScanEntry& x, const ScanEntry& y)
+    [byArea](const ScanEntry& x, const ScanEntry& y)
     {
-      if (std::abs(x.Saved() - y.Saved()) > 0.02)
-        return x.Saved() > y.Saved();
+      const double a = byArea ? x.area : x.Saved(), b = byArea ? y.area : y.Saved();
+      if (std::abs(a - b) > 0.02)
+        return a > b;
       return x.order > y.order;
     });
   if (scanned.empty())

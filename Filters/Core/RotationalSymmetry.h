@@ -6,6 +6,7 @@
 
 #include "FaceTree.h"
 #include "Plane.h"
+#include "RotationAxis.h"
 
 #include <Eigen/Core>
 
@@ -16,35 +17,6 @@ namespace foldingmeshes
 {
 /// The largest order the detector tries by default (RotationOptions::maximumOrder).
 constexpr int DefaultMaximumRotationOrder = 64;
-
-/// A line in space: the axis of a rotation.
-struct RotationAxis
-{
-  Vec3 origin = Vec3::Zero();     ///< a point of the axis
-  Vec3 direction = Vec3::UnitZ(); ///< unit length
-
-  /// p turned by `angle` radians about the axis (right-handed about `direction`).
-  Vec3 Rotate(const Vec3& p, double angle) const;
-  /// A direction turned the same way.
-  Vec3 RotateDirection(const Vec3& v, double angle) const;
-};
-
-/// A turn by a fixed angle about an axis, its matrix computed once (RotationAxis::Rotate
-/// computes it on every call): for loops that turn many points by the same turn.
-struct AxisTurn
-{
-  AxisTurn(const RotationAxis& axis, double angle);
-  Vec3 Point(const Vec3& p) const { return this->origin + this->matrix * (p - this->origin); }
-  Vec3 Direction(const Vec3& v) const { return this->matrix * v; }
-
-  Eigen::Matrix3d matrix;
-  Vec3 origin;
-};
-
-/// Angle between two axes' directions in degrees, ignoring orientation (0..90).
-double AxisAngleDegrees(const RotationAxis& a, const RotationAxis& b);
-/// Distance between the axes at the point of `a` nearest to `at`.
-double AxisOffsetAt(const RotationAxis& a, const RotationAxis& b, const Vec3& at);
 
 struct RotationOptions
 {
@@ -57,6 +29,11 @@ struct RotationOptions
   /// axis). The surface's principal axes through its area centroid are always candidates.
   std::vector<Plane> mirrorPlanes;
   int maximumIterations = 30; ///< Gauss-Newton steps of the axis fit
+  /// Rank the scanned axes by the area their order maps onto itself (ties within 2% of the
+  /// area: the higher order) instead of by the faces a fold would save (area * (1 - 1/k)): a
+  /// caller that needs the whole region symmetric (the builder's rotation nodes) wants the
+  /// axis of the largest region, not a high order on part of it.
+  bool rankByArea = false;
   /// Called with progress in [0,1] after the scan of each pair of candidate axes and each
   /// fit; return false to abort (RotationResult::aborted, order 0).
   std::function<bool(double)> progress;

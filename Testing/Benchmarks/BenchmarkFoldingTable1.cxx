@@ -14,7 +14,8 @@
 //
 //   BenchmarkFoldingTable1 [--threads N] [--keep fewer] [--tree] [--no-unfold]
 //                          [--no-close-holes] [--hole-tolerance F] [--keep-projected-points]
-//                          [--keep-copy-density] [--tolerance F] MESH_OR_FOLDER...
+//                          [--keep-copy-density] [--tolerance F] [--rotation]
+//                          MESH_OR_FOLDER...
 //
 // --keep fewer: the builder keeps the half with fewer faces; --tree prints each tree's outline
 // (node kind, depth, faces, area share, symmetric area fraction, the detection's wall time and
@@ -25,7 +26,7 @@
 // --keep-copy-density: the mirrored copies keep the kept half's density (MatchDiscardedDensity
 // off);
 // --tolerance: the root epsilon as a fraction of the diagonal (the builder's Tolerance,
-// default 0.02).
+// default 0.02); --rotation: the builder's RotationNodes on (issue 22).
 #include "MeshComparison.h"
 #include "MeshIO.h"
 #include "vtkFoldingTreeBuilder.h"
@@ -110,6 +111,7 @@ struct Settings
   bool matchDiscardedDensity = true;
   double holeToleranceScale = -1.0; // < 0: the filter's default
   double tolerance = -1.0;          // root epsilon / diagonal; < 0: the builder's default
+  bool rotationNodes = false;
 };
 
 void PrintOutline(vtkMultiBlockDataSet* blocks)
@@ -148,6 +150,13 @@ void PrintOutline(vtkMultiBlockDataSet* blocks)
         node.plane.normal.y(),
         node.plane.normal.z(),
         node.discardedFaces);
+    if (node.kind == foldingmeshes::FoldingNodeKind::Rotation)
+      std::printf(" axis (%6.3f %6.3f %6.3f) order %d discarded %d",
+        node.axis.direction.x(),
+        node.axis.direction.y(),
+        node.axis.direction.z(),
+        node.rotationOrder,
+        node.discardedFaces);
     if (node.kind == foldingmeshes::FoldingNodeKind::Leaf)
       std::printf(
         " stored %d (%s)", node.mesh.NumberOfFaces(), foldingmeshes::ToString(node.leafReason));
@@ -170,6 +179,7 @@ void Run(const std::string& path, vtkPolyData* mesh, const Settings& settings)
     builder->SetKeepSide(vtkFoldingTreeBuilder::FEWER_FACES);
   if (settings.tolerance >= 0.0)
     builder->SetTolerance(settings.tolerance);
+  builder->SetRotationNodes(settings.rotationNodes);
   const auto t0 = Clock::now();
   builder->Update();
   const double build = std::chrono::duration<double>(Clock::now() - t0).count();
@@ -299,6 +309,8 @@ int main(int argc, char* argv[])
     }
     else if (arg == "--keep" && i + 1 < argc)
       settings.keepFewer = std::string(argv[++i]) == "fewer";
+    else if (arg == "--rotation")
+      settings.rotationNodes = true;
     else if (arg == "--tree")
       settings.printTree = true;
     else if (arg == "--no-unfold")

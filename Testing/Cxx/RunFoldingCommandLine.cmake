@@ -8,7 +8,8 @@
 # 4b. `foldingmeshes unfold TREE --original MESH` reports the roundtrip's Hausdorff distance;
 # 4c. `--up` takes auto, x, y or z on detect, fold and unfold (exit 0 with z), anything else
 #     exits 1 and names the option;
-# 4d. out-of-range numbers exit 1 on detect and fold; detect --rotation prints the rotation
+# 4d. out-of-range numbers exit 1 on detect and fold; fold --rotation counts rotation nodes in
+#     its JSON; detect --rotation prints the rotation
 #     and writes STEM_axis.vtp; --min-faces, --method, --seed and
 #     --separate-parts reach the builder; roundtrip --no-stitch --no-close-holes leaves seams open;
 # 4e. a triangle referring to a point that does not exist: detect, fold and roundtrip exit 2,
@@ -198,7 +199,8 @@ foreach (bad IN ITEMS "detect;--candidates;abc;--candidates needs an integer"
     "detect;--max-rotation-order;1;--max-rotation-order needs an integer"
     "fold;--min-faces;0;--min-faces needs an integer"
     "fold;--seed;x;--seed needs an integer"
-    "fold;--method;fast;--method must be robust or paper")
+    "fold;--method;fast;--method must be robust or paper"
+    "fold;--max-rotation-order;361;--max-rotation-order needs an integer")
   list(GET bad 0 command)
   list(GET bad 1 option)
   list(GET bad 2 value)
@@ -218,6 +220,14 @@ if (NOT rc EQUAL 0 OR NOT out MATCHES "\"rotation\": {\"origin\": \\[[^]]+\\], \
     OR NOT EXISTS "${WORK_DIR}/rotation/${stem}_axis.vtp")
   message(FATAL_ERROR "detect --rotation (exit ${rc}) should print the rotation and write "
     "${stem}_axis.vtp: ${out}${err}")
+endif ()
+# fold --rotation reaches the builder (the dino has no rotational symmetry: no rotation node,
+# the same tree) and the JSON counts rotation nodes.
+execute_process(COMMAND "${FOLDINGMESHES}" fold "${MESH}" --rotation --json --quiet
+  --outdir "${WORK_DIR}/fold_rotation" RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+if (NOT rc EQUAL 0 OR NOT out MATCHES "\"rotations\": 0,")
+  message(FATAL_ERROR "fold --rotation on the dino should give no rotation node (exit ${rc}): "
+    "${out}${err}")
 endif ()
 execute_process(COMMAND "${FOLDINGMESHES}" fold "${MESH}" --min-faces 1000000000 --json --quiet
   --outdir "${WORK_DIR}/minfaces" RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)

@@ -73,6 +73,7 @@ CLI_OPTIONS = {
     ("fold", "--min-faces"): ("vtkFoldingTreeBuilder", "MinimumFaces"),
     ("fold", "--seed"): ("vtkFoldingTreeBuilder", "RandomSeed"),
     ("fold", "--sampled-search-above"): ("vtkFoldingTreeBuilder", "SampledSearchAboveFaces"),
+    ("fold", "--max-rotation-order"): ("vtkFoldingTreeBuilder", "MaximumRotationOrder"),
 }
 
 

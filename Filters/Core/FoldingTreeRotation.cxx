@@ -1,0 +1,597 @@
+// Rotation nodes of the builder (FoldingTreeOptions::rotationNodes, issue 22): the order, the
+// sector cut, the seams and the error the k - 1 turned copies add.
+//
+// The rule, for a region with no fold and no rotation above it:
+// 1. DetectRotationalSymmetry gives an axis and an order (or "continuous": a surface of
+//    revolution, then every order up to maximumRotationOrder is a candidate, largest first;
+//    a discrete order k gives k and its divisors, largest first). Orders 2 are tried only
+//    when the mirror plane's S is not the whole region (a global mirror fold is as good).
+// 2. The sector of order k: the faces whose centroid's angle about the axis lies in
+//    [phi0, phi0 + 360/k) (whole faces only), phi0 the angle (modulo 360/k) that most
+//    vertices share - a column of vertices, where a tessellation with k-fold symmetry has its
+//    own seams. k times its area must be the region's within a quarter of a sector's (else
+//    the copies would overlap or leave gaps).
+// 3. Its seams: the edges its faces use once that other faces of the region use too; a seam
+//    vertex within the seam snap (epsilon / 4) of the axis is moved onto it. When every seam
+//    vertex on the phi0 side pairs one-to-one (mutual nearest, within the snap) with a seam
+//    vertex on the other side turned back by 360/k, each pair moves to agree exactly (the
+//    mean of the one and the other turned back, and that turned): the unfolder's copies meet
+//    there. When every seam vertex lies within the snap of its bounding half-plane, the seams
+//    are moved onto the half-planes too (pairs as pairs), so a mirror fold of the sector
+//    through its bisector (a dihedral part) maps one seam onto the other; seams that lie
+//    there but do not pair (rings spaced unevenly) are joined by the unfolder's zipper, like
+//    segmentation seams. Otherwise the order has no sector. The first order with a sector is
+//    the candidate (surfaces of revolution: the largest k whose sector has whole faces).
+// 4. The error: each kept point turned by j * 360/k (j = 1 .. k - 1) and each removed point
+//    turned back into the sector must lie within epsilon / 2 of the region (turned kept
+//    points measured against the region, removed points against the sector); each kept point
+//    is charged the larger of its own turns' distance and its move, and the largest distance
+//    of a removed point, from its error budget (which must cover it). A turn is an isometry:
+//    the k copies do not compound like nested folds, so the subtree gets epsilon / 2 (and
+//    what its budgets hold) for any k. Up to MaximumCheckedOrders orders get this check; each
+//    stops at the first turn beyond the limit.
+// Seam vertices carry the tear bit of the rotation node's depth; the unfolder stitches the
+// copies' seams like segmentation seams (Unfolder::Turn).
+#include "FoldingTreeBuilderInternal.h"
+
+#include "EdgeTable.h"
+#include "PointBuckets.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+
+namespace foldingmeshes
+{
+namespace treebuilder
+{
+namespace
+{
+constexpr double TwoPi = 2.0 * EIGEN_PI;
+/// The share of the node's epsilon the turned copies may add (the rest goes to the subtree).
+constexpr double RotationShareOfEpsilon = 1.0;
+/// Seam vertices move at most this share of the node's epsilon to make the seams meet.
+constexpr double SeamSnapOfEpsilon = 0.25;
+/// Orders whose seams pair up that get the error check before the node gives up (each check
+/// stops at its first turn beyond the limit).
+constexpr int MaximumCheckedOrders = 16;
+/// k sectors' area may differ from the region's by this share of one sector.
+constexpr double SectorAreaTolerance = 0.25;
+/// Bins per sector of the histogram that finds phi0.
+constexpr int AngleBins = 2048;
+
+/// a in [0, m).
+double Modulo(double a, double m)
+{
+  const double r = std::fmod(a, m);
+  return r < 0.0 ? r + m : r;
+}
+
+/// a in (-pi, pi].
+double Wrapped(double a)
+{
+  const double r = Modulo(a + EIGEN_PI, TwoPi);
+  return r - EIGEN_PI;
+}
+
+/// Cylindrical coordinates about an axis.
+struct AxisFrame
+{
+  explicit AxisFrame(const RotationAxis& axis)
+    : Axis(axis)
+  {
+    const Vec3& a = axis.direction;
+    const Vec3 seed = std::abs(a.x()) < 0.9 ? Vec3::UnitX() : Vec3::UnitY();
+    this->U = (seed - seed.dot(a) * a).normalized();
+    this->V = a.cross(this->U);
+  }
+  double Angle(const Vec3& p) const
+  {
+    const Vec3 r = p - this->Axis.origin;
+    return std::atan2(r.dot(this->V), r.dot(this->U));
+  }
+  double Radius(const Vec3& p) const
+  {
+    const Vec3 r = p - this->Axis.origin;
+    return (r - r.dot(this->Axis.direction) * this->Axis.direction).norm();
+  }
+  Vec3 OntoAxis(const Vec3& p) const
+  {
+    return this->Axis.origin +
+      (p - this->Axis.origin).dot(this->Axis.direction) * this->Axis.direction;
+  }
+  RotationAxis Axis;
+  Vec3 U, V;
+};
+
+/// The angle modulo the sector width that most vertices (off the axis) share: the mean of
+/// the angles in the fullest bin (the lowest bin on ties).
+double SectorStart(const AxisFrame& frame, const WorkMesh& w, double width, double offAxis)
+{
+  std::vector<int> count(AngleBins, 0);
+  std::vector<double> sum(AngleBins, 0.0);
+  for (const Vec3& p : w.points)
+  {
+    if (frame.Radius(p) <= offAxis)
+      continue;
+    const double a = Modulo(frame.Angle(p), width);
+    const int bin = std::min(AngleBins - 1, static_cast<int>(a / width * AngleBins));
+    ++count[bin];
+    sum[bin] += a;
+  }
+  const int best = static_cast<int>(std::max_element(count.begin(), count.end()) - count.begin());
+  return count[best] > 0 ? sum[best] / count[best] : 0.0;
+}
+
+/// One order's sector with its seams made to meet (see the file comment, step 3).
+struct SectorCut
+{
+  int order = 0;
+  double start = 0.0;
+  std::vector<char> keep;     ///< per face
+  std::vector<Vec3> points;   ///< the region's points with the seam vertices moved
+  std::vector<double> move;   ///< per point: how far it moved
+  std::vector<char> seam;     ///< per point: on a seam (or the axis, on a seam)
+  bool onHalfPlanes = false;  ///< the seams lie on the sector's bounding half-planes
+  bool paired = false;        ///< each vertex of one seam meets one of the other, turned
+  double halfPlaneMove = 0.0; ///< the farthest a seam vertex lies from its half-plane
+};
+
+/// Edges of the region its faces use once within the sector but other faces use too.
+std::vector<char> SeamVertices(const EdgeTable& edges, const std::vector<char>& keep, int np)
+{
+  std::vector<char> seam(np, 0);
+  for (const auto& e : edges)
+  {
+    int kept = 0;
+    for (int f : e.second)
+      kept += keep[f];
+    if (kept == 1 && e.second.size() >= 2)
+      seam[e.first.first] = seam[e.first.second] = 1;
+  }
+  return seam;
+}
+
+const char* const NotCoveredOnce = "k sectors do not cover the area once";
+
+/// Why order k has no sector here (nullptr: it has, in `cut`).
+const char* CutSector(const AxisFrame& frame,
+  const WorkMesh& w,
+  const EdgeTable& edges,
+  int k,
+  double snap,
+  double offAxis,
+  SectorCut& cut)
+{
+  const double width = TwoPi / k;
+  cut = SectorCut();
+  cut.order = k;
+  cut.start = SectorStart(frame, w, width, offAxis);
+  const int nf = w.NumberOfFaces(), np = w.NumberOfPoints();
+  cut.keep.assign(nf, 0);
+  int kept = 0;
+  for (int f = 0; f < nf; ++f)
+  {
+    const Triangle& t = w.triangles[f];
+    const Vec3 c = (w.points[t[0]] + w.points[t[1]] + w.points[t[2]]) / 3.0;
+    kept += cut.keep[f] = Modulo(frame.Angle(c) - cut.start, TwoPi) < width;
+  }
+  if (kept == 0 || kept == nf)
+    return "no face or every face in the sector";
+  // k sectors cover the region once: their area within a quarter sector of the region's (a
+  // sector wider than 360/k, whose copies overlap, or narrower, fails; the seams' pairing
+  // tolerance alone would let a 16-gon pass as 17 sectors).
+  double regionArea = 0.0, sectorArea = 0.0;
+  for (int f = 0; f < nf; ++f)
+  {
+    const double a = TriangleArea(w, w.triangles[f]);
+    regionArea += a;
+    sectorArea += cut.keep[f] ? a : 0.0;
+  }
+  if (std::abs(k * sectorArea - regionArea) > SectorAreaTolerance * regionArea / k)
+    return NotCoveredOnce;
+  cut.seam = SeamVertices(edges, cut.keep, np);
+  cut.points = w.points;
+  cut.move.assign(np, 0.0);
+  const AxisTurn forward(frame.Axis, width), back(frame.Axis, -width);
+  // Sides: 0 near phi0, 1 near phi0 + width; axis vertices go onto the axis.
+  std::vector<int> side0, side1;
+  std::vector<double> offset(np, 0.0);
+  bool planar = true;
+  PointBuckets bucket0, bucket1;
+  bucket0.cell = bucket1.cell = snap;
+  for (int v = 0; v < np; ++v)
+  {
+    if (!cut.seam[v])
+      continue;
+    const double radius = frame.Radius(w.points[v]);
+    if (radius <= snap)
+    {
+      cut.points[v] = frame.OntoAxis(w.points[v]);
+      cut.move[v] = radius;
+      continue;
+    }
+    const double angle = frame.Angle(w.points[v]);
+    const double a0 = Wrapped(angle - cut.start), a1 = Wrapped(angle - cut.start - width);
+    const bool first = std::abs(a0) <= std::abs(a1);
+    offset[v] = first ? a0 : a1;
+    cut.halfPlaneMove =
+      std::max(cut.halfPlaneMove, 2.0 * radius * std::abs(std::sin(0.5 * offset[v])));
+    planar = cut.halfPlaneMove <= snap;
+    (first ? side0 : side1).push_back(v);
+    (first ? bucket0 : bucket1).Add(w.points[v], v);
+  }
+  // Mutual nearest pairs: a (side 0) turned forward meets b (side 1) and b turned back a.
+  std::vector<std::pair<int, int>> pairs;
+  bool paired = side0.size() == side1.size();
+  for (size_t i = 0; paired && i < side0.size(); ++i)
+  {
+    const int a = side0[i];
+    const int b = bucket1.Nearest(w.points, forward.Point(w.points[a]), snap);
+    paired = b >= 0 && bucket0.Nearest(w.points, back.Point(w.points[b]), snap) == a;
+    pairs.push_back({ a, b });
+  }
+  cut.onHalfPlanes = planar || !paired;
+  cut.paired = paired;
+  if (!paired) // each seam onto its half-plane; the unfolder's zipper joins them
+    for (const std::vector<int>* side : { &side0, &side1 })
+      for (int v : *side)
+      {
+        cut.points[v] = AxisTurn(frame.Axis, -offset[v]).Point(w.points[v]);
+        cut.move[v] = (cut.points[v] - w.points[v]).norm();
+      }
+  for (size_t i = 0; paired && i < pairs.size(); ++i)
+  {
+    const auto& pr = pairs[i];
+    Vec3 pa = w.points[pr.first], pb = back.Point(w.points[pr.second]);
+    if (planar) // both onto the half-plane at phi0 (turned about the axis, radius kept)
+    {
+      pa = AxisTurn(frame.Axis, -offset[pr.first]).Point(pa);
+      pb = AxisTurn(frame.Axis, -offset[pr.second]).Point(pb);
+    }
+    const Vec3 t = 0.5 * (pa + pb);
+    cut.points[pr.first] = t;
+    cut.points[pr.second] = forward.Point(t);
+    cut.move[pr.first] = (t - w.points[pr.first]).norm();
+    cut.move[pr.second] = (cut.points[pr.second] - w.points[pr.second]).norm();
+  }
+  // Turning a seam vertex onto its half-plane keeps it on a surface of revolution however
+  // far it moves (ChargeTurns measures where it lands); it must not flip a face.
+  for (int f = 0; f < nf; ++f)
+  {
+    const Triangle& t = w.triangles[f];
+    if (!cut.keep[f] || (!cut.move[t[0]] && !cut.move[t[1]] && !cut.move[t[2]]))
+      continue;
+    const Vec3 before = (w.points[t[1]] - w.points[t[0]]).cross(w.points[t[2]] - w.points[t[0]]);
+    const Vec3 after =
+      (cut.points[t[1]] - cut.points[t[0]]).cross(cut.points[t[2]] - cut.points[t[0]]);
+    if (!(before.dot(after) > 0.0))
+      return "moving the seams onto the half-planes would flip or collapse a face";
+  }
+  return nullptr;
+}
+
+/// The error check of step 4; fills the per-point charge (kept points) and returns whether
+/// every distance is within `limit` and every charge within its point's budget (`worst`: the
+/// largest distance measured).
+bool ChargeTurns(const AxisFrame& frame,
+  const WorkMesh& w,
+  const SurfaceDistanceQuery& toRegion,
+  const SectorCut& cut,
+  double limit,
+  std::vector<double>& charge,
+  double& worst)
+{
+  worst = 0.0;
+  const int np = w.NumberOfPoints(), k = cut.order;
+  const double width = TwoPi / k;
+  std::vector<char> used(np, 0);
+  for (int f = 0; f < w.NumberOfFaces(); ++f)
+    if (cut.keep[f])
+      for (int v : w.triangles[f])
+        used[v] = 1;
+  std::vector<int> keptPoints;
+  for (int v = 0; v < np; ++v)
+    if (used[v])
+      keptPoints.push_back(v);
+  // Kept points, turned j times, against the region.
+  charge.assign(np, 0.0);
+  for (int j = 0; j < k; ++j) // j = 0: the sector itself, its seams moved
+  {
+    const AxisTurn turn(frame.Axis, j * width);
+    std::vector<Vec3> turned;
+    turned.reserve(keptPoints.size());
+    for (int v : keptPoints)
+      turned.push_back(turn.Point(cut.points[v]));
+    const std::vector<double> d = toRegion.Distances(turned);
+    for (size_t i = 0; i < keptPoints.size(); ++i)
+      charge[keptPoints[i]] = std::max(charge[keptPoints[i]], d[i]);
+    worst = std::max(worst, *std::max_element(d.begin(), d.end()));
+    if (worst > limit)
+      return false; // a wrong order fails at its first bad turn (cost: the turns so far)
+  }
+  // Removed points, turned back into the sector, against the sector.
+  TriangleMesh sector;
+  sector.points = cut.points;
+  for (int f = 0; f < w.NumberOfFaces(); ++f)
+    if (cut.keep[f])
+      sector.triangles.push_back(w.triangles[f]);
+  const SurfaceDistanceQuery toSector(sector);
+  std::vector<Vec3> back;
+  for (int v = 0; v < np; ++v)
+    if (!used[v])
+    {
+      const double angle = Modulo(frame.Angle(w.points[v]) - cut.start, TwoPi);
+      const int j = std::min(k - 1, static_cast<int>(angle / width));
+      back.push_back(AxisTurn(frame.Axis, -j * width).Point(w.points[v]));
+    }
+  double removed = 0.0;
+  for (double d : toSector.Distances(back))
+    removed = std::max(removed, d);
+  worst = std::max(worst, removed);
+  if (removed > limit)
+    return false;
+  for (int v : keptPoints)
+  {
+    charge[v] = std::max(charge[v], removed);
+    if (charge[v] > limit || charge[v] > w.budget[v])
+      return false;
+  }
+  return true;
+}
+
+/// Orders to try, largest first (see the file comment, step 1).
+std::vector<int> CandidateOrders(const RotationResult& r, int maximumOrder, bool allowTwo)
+{
+  std::vector<int> orders;
+  const int top = r.continuous ? maximumOrder : r.order;
+  for (int k = top; k >= (allowTwo ? 2 : 3); --k)
+    if (r.continuous || top % k == 0)
+      orders.push_back(k);
+  return orders;
+}
+
+/**
+ * The faces of `region` (per face of w) whose vertices, turned by every multiple of 360/k,
+ * lie within eps of a face of the region: the part of a rotational region that the turns map
+ * onto itself (the detector's region is ragged where it meets asymmetric parts, and its test
+ * turns are not all of these). Three passes of removal at most.
+ */
+std::vector<char> InvariantRegion(const WorkMesh& w,
+  std::vector<char> region,
+  const RotationAxis& axis,
+  int k,
+  double eps)
+{
+  TriangleMesh surface;
+  surface.points = w.points;
+  surface.triangles = w.triangles;
+  const SurfaceDistanceQuery toMesh(surface);
+  for (int pass = 0; pass < 3; ++pass)
+  {
+    std::vector<int> points;
+    std::vector<char> inRegion(w.points.size(), 0);
+    for (int f = 0; f < w.NumberOfFaces(); ++f)
+      if (region[f])
+        for (int v : w.triangles[f])
+          inRegion[v] = 1;
+    for (int v = 0; v < w.NumberOfPoints(); ++v)
+      if (inRegion[v])
+        points.push_back(v);
+    std::vector<char> bad(w.points.size(), 0);
+    for (int j = 1; j < k; ++j)
+    {
+      const AxisTurn turn(axis, 2.0 * EIGEN_PI * j / k);
+      std::vector<Vec3> turned;
+      turned.reserve(points.size());
+      for (int v : points)
+        turned.push_back(turn.Point(w.points[v]));
+      std::vector<double> distance;
+      std::vector<int> closest;
+      toMesh.Closest(turned, distance, closest);
+      for (size_t i = 0; i < points.size(); ++i)
+        bad[points[i]] =
+          bad[points[i]] || distance[i] > eps || closest[i] < 0 || !region[closest[i]];
+    }
+    bool dropped = false;
+    for (int f = 0; f < w.NumberOfFaces(); ++f)
+    {
+      const Triangle& t = w.triangles[f];
+      if (region[f] && (bad[t[0]] || bad[t[1]] || bad[t[2]]))
+      {
+        region[f] = 0;
+        dropped = true;
+      }
+    }
+    if (!dropped)
+      break;
+  }
+  return region;
+}
+}
+
+bool Builder::HasRotationAbove(int index) const
+{
+  for (int a = this->Tree.nodes[index].parent; a >= 0; a = this->Tree.nodes[a].parent)
+    if (this->Tree.nodes[a].kind == FoldingNodeKind::Rotation)
+      return true;
+  return false;
+}
+
+/// The sector of the first of `orders` that passes (CutSector, ChargeTurns) on `region`;
+/// `covered` (optional) gets the orders whose k sectors covered the region's area once.
+bool Builder::PlanSector(const RotationResult& r,
+  const WorkMesh& region,
+  const std::vector<int>& orders,
+  double eps,
+  RotationPlan& plan,
+  std::vector<int>* covered) const
+{
+  const FoldingTreeOptions& O = this->Options;
+  const AxisFrame frame(r.axis);
+  const double snap = std::max(SeamSnapOfEpsilon * eps, 1e-12 * this->Tree.diagonal);
+  const double limit = RotationShareOfEpsilon * eps;
+  const EdgeTable edges = EdgeFaces(region.triangles);
+  TriangleMesh surface;
+  surface.points = region.points;
+  surface.triangles = region.triangles;
+  const SurfaceDistanceQuery toRegion(surface);
+  SectorCut cut;
+  int checked = 0;
+  for (int k : orders)
+  {
+    const char* why = CutSector(frame, region, edges, k, snap, 1e-9 * this->Tree.diagonal, cut);
+    if (covered && why != NotCoveredOnce)
+      covered->push_back(k);
+    if (why)
+    {
+      if (O.trace)
+        O.trace(FormatTrace("[rotation]   order %d: %s (farthest seam vertex %.3g from its "
+                            "half-plane, snap %.3g)",
+          k,
+          why,
+          cut.halfPlaneMove,
+          snap));
+      continue;
+    }
+    double worst = 0.0;
+    const bool within = ChargeTurns(frame, region, toRegion, cut, limit, plan.charge, worst);
+    if (O.trace)
+      O.trace(FormatTrace("[rotation]   order %d: error %.3g of the limit %.3g%s",
+        k,
+        worst,
+        limit,
+        within ? "" : " (or a budget): rejected"));
+    if (within)
+    {
+      plan.axis = r.axis;
+      plan.order = k;
+      plan.keep = std::move(cut.keep);
+      plan.points = std::move(cut.points);
+      plan.seam = std::move(cut.seam);
+      return true;
+    }
+    if (++checked == MaximumCheckedOrders)
+      break;
+  }
+  return false;
+}
+
+bool Builder::PlanRotation(int index,
+  const WorkMesh& w,
+  const PreparedMesh& pm,
+  const FaceTree& regionFaces,
+  const SymmetryResult& planes,
+  bool wholeMirror,
+  int depth,
+  double eps,
+  RotationPlan& plan) const
+{
+  const FoldingTreeOptions& O = this->Options;
+  plan = RotationPlan();
+  if (!O.rotationNodes || this->HasRotationAbove(index) || depth + 3 > this->MaximumDepth)
+    return false;
+  RotationOptions ro;
+  ro.epsilon = eps;
+  ro.maximumOrder = O.maximumRotationOrder;
+  ro.compatibilityAngle = O.symmetry.compatibilityAngle;
+  ro.minimumSymmetricAreaFraction = O.symmetry.minimumSymmetricAreaFraction;
+  ro.mirrorPlanes = planes.finalists;
+  ro.mirrorPlanes.push_back(planes.plane);
+  ro.rankByArea = true;
+  const RotationResult r = DetectRotationalSymmetry(pm, ro, &regionFaces);
+  bool planned = false;
+  if (r.found)
+  {
+    // The whole region, unless a face is pinned; else the rotational region (faces whose
+    // vertices map within epsilon under both tested turns, degenerate faces following), which
+    // becomes child 0 of a segmentation.
+    bool pinned = false;
+    for (int f = 0; f < w.NumberOfFaces(); ++f)
+      pinned = pinned || this->IsPinned(w, f);
+    std::vector<int> covered;
+    planned = !pinned &&
+      this->PlanSector(
+        r, w, CandidateOrders(r, O.maximumRotationOrder, !wholeMirror), eps, plan, &covered);
+    // Else: the part of the detector's region (faces whose vertices map within epsilon under
+    // both tested turns, degenerate faces following, pinned faces left out) that the turns
+    // of an order map onto itself, for the orders whose sectors covered the whole region
+    // once (the tessellation's own orders); it becomes child 0 of a segmentation.
+    std::vector<char> label = r.faceLabel;
+    AddDegenerateFaces(w, pm, label);
+    for (int f = 0; f < w.NumberOfFaces(); ++f)
+      label[f] = label[f] && !this->IsPinned(w, f);
+    if (covered.empty()) // e.g. an asymmetric part beside: the detector's orders
+      covered = CandidateOrders(r, O.maximumRotationOrder, !wholeMirror);
+    const double minimumArea = O.symmetry.minimumSymmetricAreaFraction * Area(w);
+    for (size_t i = 0; !planned && i < covered.size() && i < size_t(MaximumCheckedOrders); ++i)
+    {
+      std::vector<char> region = InvariantRegion(w, label, r.axis, covered[i], eps);
+      int faces = 0;
+      double area = 0.0;
+      for (int f = 0; f < w.NumberOfFaces(); ++f)
+        if (region[f])
+        {
+          ++faces;
+          area += TriangleArea(w, w.triangles[f]);
+        }
+      if (faces == 0 || faces == w.NumberOfFaces() || area < minimumArea)
+        continue;
+      planned = this->PlanSector(r, Extract(w, region), { covered[i] }, eps, plan, nullptr);
+      if (planned)
+      {
+        plan.region = std::move(region);
+        plan.regionFaces = faces;
+      }
+    }
+  }
+  if (!planned)
+    plan = RotationPlan();
+  if (O.trace)
+    O.trace(FormatTrace("[rotation] node %d depth %d eps %.3g: detected order %d%s, %s",
+      index,
+      depth,
+      eps,
+      r.order,
+      r.continuous ? " (continuous)" : "",
+      !planned ? "no sector kept"
+        : plan.region.empty()
+        ? FormatTrace("a sector of order %d", plan.order).c_str()
+        : FormatTrace("a sector of order %d of %d faces", plan.order, plan.regionFaces).c_str()));
+  return planned;
+}
+
+void Builder::Rotate(int index,
+  WorkMesh w,
+  const RotationPlan& plan,
+  int depth,
+  double eps,
+  int folds)
+{
+  const uint64_t bit = uint64_t(1) << depth;
+  std::vector<int> discarded;
+  for (int f = 0; f < w.NumberOfFaces(); ++f)
+    if (!plan.keep[f])
+      discarded.push_back(w.faceOrig[f]);
+  w.points = plan.points;
+  for (int v = 0; v < w.NumberOfPoints(); ++v)
+  {
+    w.budget[v] = std::max(0.0, w.budget[v] - plan.charge[v]);
+    if (plan.seam[v])
+      w.tear[v] |= bit;
+  }
+  FoldingNode& node = this->Tree.nodes[index];
+  node.kind = FoldingNodeKind::Rotation;
+  node.axis = plan.axis;
+  node.rotationOrder = plan.order;
+  node.symmetricAreaFraction = 1.0;
+  std::sort(discarded.begin(), discarded.end());
+  node.discardedFaces = static_cast<int>(discarded.size());
+  node.discardedOriginalFaces = std::move(discarded);
+  this->DoneFaces += node.discardedFaces;
+  this->Report(this->Fraction(this->DoneFaces));
+  WorkMesh sector = Extract(w, plan.keep);
+  this->Build(std::move(sector), index, depth + 1, 0.5 * eps, folds, 0);
+}
+}
+}

@@ -1,0 +1,214 @@
+// Rotation nodes of the folding tree (issue 22; FoldingTreeOptions::rotationNodes) on
+// procedural shapes whose axis and order are exact by construction (RotationTestShapes.h),
+// each moved by a seeded rigid motion:
+// - twisted k-fold vases, k = 2..12 (no mirror plane): the root is a rotation node of order
+//   k about the moved z axis (within 0.5 degrees, 0.5% of the diagonal), the tree stores at
+//   most 1/k of the faces plus a seam's worth, and unfold(fold(M)) is closed, consistently and
+//   outward oriented (same volume within 1%), within epsilon of M (brute-force Hausdorff,
+//   independent of the builder's own proof, which must hold too);
+// - the same with noise of 0.05 epsilon per coordinate;
+// - a surface of revolution with rings of 48 vertices: "continuous", the order is the largest
+//   whose sector has whole faces (48), and the sector is folded again below it;
+// - a vase beside a separate box: the vase is a remaining region of the root's segmentation
+//   and becomes a rotation node of its own;
+// - with rotation nodes off, or on a shape with no rotational symmetry (a lumpy vase), no
+//   rotation node.
+// Run with FOLDINGMESHES_TRACE set to see the builder's decisions.
+//
+//   TestFoldingTreeRotation
+#include "CoreTestUtilities.h"
+#include "RotationTestShapes.h"
+
+#include "FoldingTreeBuilder.h"
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+#include <vector>
+
+using namespace foldingmeshes;
+using namespace rotationtest;
+
+namespace
+{
+double Diagonal(const TriangleMesh& m)
+{
+  Vec3 lo = m.points[0], hi = m.points[0];
+  for (const Vec3& p : m.points)
+  {
+    lo = lo.cwiseMin(p);
+    hi = hi.cwiseMax(p);
+  }
+  return (hi - lo).norm();
+}
+
+TriangleMesh Moved(TriangleMesh m, const Eigen::Isometry3d& motion)
+{
+  for (Vec3& p : m.points)
+    p = motion * p;
+  return m;
+}
+
+/// Adds noise of `amount` per coordinate (seeded, uniform).
+void AddNoise(TriangleMesh& m, double amount, unsigned seed)
+{
+  std::mt19937 g(seed);
+  for (Vec3& p : m.points)
+    p += amount * Vec3(Uniform(g), Uniform(g), Uniform(g));
+}
+
+int CountRotationNodes(const FoldingTree& tree, int& first)
+{
+  int count = 0;
+  first = -1;
+  for (int i = 0; i < tree.NumberOfNodes(); ++i)
+    if (tree.nodes[i].kind == FoldingNodeKind::Rotation)
+    {
+      if (first < 0)
+        first = i;
+      ++count;
+    }
+  return count;
+}
+
+/// Folds m (rotation nodes on unless `rotation` is false) and checks the round trip (closed
+/// and oriented, volume, Hausdorff within epsilon, the proved bound); returns the tree.
+FoldingTree FoldAndCheck(const char* name, const TriangleMesh& m, bool rotation = true)
+{
+  const double epsilon = 0.02 * Diagonal(m);
+  FoldingTreeOptions o;
+  o.rotationNodes = rotation;
+  if (std::getenv("FOLDINGMESHES_TRACE")) // the builder's decisions, for a failing case
+    o.trace = [](const std::string& line) { std::printf("%s\n", line.c_str()); };
+  const FoldingTree tree = coretest::Fold(m, epsilon, o);
+  EXPECT(tree.Validate().empty(), name << ": invalid tree: " << tree.Validate());
+  const UnfoldedMesh u = coretest::Unfold(tree);
+  // Closed and oriented where rotation nodes are on (with them off, the mirror folds of the
+  // chiral vases leave a few open seam edges: issue 21's open seams, not this test's subject).
+  const coretest::EdgeStats edges = coretest::CountEdges(u.triangles);
+  EXPECT(!rotation || (edges.open == 0 && edges.nonManifold == 0 && edges.misoriented == 0),
+    name << ": unfolded mesh not closed and oriented: " << edges.open << " open, "
+         << edges.nonManifold << " non-manifold, " << edges.misoriented << " misoriented edges");
+  const double v0 = coretest::SignedVolume(m.points, m.triangles);
+  const double v1 = coretest::SignedVolume(u.points, u.triangles);
+  EXPECT(std::abs(v1 - v0) <= 0.01 * std::abs(v0),
+    name << ": volume " << v1 << " instead of " << v0 << " (orientation or shape lost)");
+  const double h = coretest::Hausdorff(m, u);
+  EXPECT(h <= epsilon, name << ": Hausdorff distance " << h << " above epsilon " << epsilon);
+  EXPECT(tree.verifiedBound >= 0.0 && tree.verifiedBound <= epsilon,
+    name << ": proved bound " << tree.verifiedBound << " (epsilon " << epsilon << ")");
+  std::printf("%-28s faces %6d -> %5d (%.1f%%), nodes %3d, Hausdorff %.3g eps, bound %.3g eps\n",
+    name,
+    tree.numberOfOriginalFaces,
+    tree.StoredFaces(),
+    100.0 * tree.Compression(),
+    tree.NumberOfNodes(),
+    h / epsilon,
+    tree.verifiedBound / epsilon);
+  return tree;
+}
+
+/// The rotation node `index` has order k about the z axis moved by `motion`.
+void CheckAxis(const char* name,
+  const FoldingTree& tree,
+  int index,
+  int k,
+  const Eigen::Isometry3d& motion)
+{
+  REQUIRE(index >= 0, name << ": no rotation node");
+  const FoldingNode& node = tree.nodes[index];
+  EXPECT(node.rotationOrder == k, name << ": order " << node.rotationOrder << " instead of " << k);
+  RotationAxis truth;
+  truth.origin = motion * Vec3(0, 0, 1);
+  truth.direction = motion.linear() * Vec3::UnitZ();
+  const double angle = AxisAngleDegrees(node.axis, truth);
+  const double offset = AxisOffsetAt(node.axis, truth, truth.origin) / tree.diagonal;
+  EXPECT(angle < 0.5 && offset < 0.005,
+    name << ": axis off by " << angle << " degrees, " << offset << " diagonals");
+}
+
+void TwistedVases(bool noisy)
+{
+  for (int k = 2; k <= 12; ++k)
+  {
+    VaseShape s;
+    s.order = k;
+    s.amplitude = 0.25;
+    const int segments = k * ((48 + k - 1) / k);
+    const Eigen::Isometry3d motion = Motion(100 + k);
+    TriangleMesh m = Moved(MakeVase(s, segments, 24), motion);
+    if (noisy)
+      AddNoise(m, 0.05 * 0.02 * Diagonal(m), 7 + k);
+    char name[64];
+    std::snprintf(name, sizeof(name), "twisted vase k=%d%s", k, noisy ? " noisy" : "");
+    const FoldingTree tree = FoldAndCheck(name, m);
+    int first = -1;
+    const int rotations = CountRotationNodes(tree, first);
+    EXPECT(rotations == 1 && first == 0,
+      name << ": " << rotations << " rotation nodes, the first at " << first
+           << " (expected one, the root)");
+    CheckAxis(name, tree, first, k, motion);
+    // One sector of faces, plus the faces along one seam (twice a ring's faces / k, rounded).
+    const int sector = static_cast<int>(m.triangles.size()) / k;
+    EXPECT(tree.StoredFaces() <= sector + 2 * 24 + 4,
+      name << ": stores " << tree.StoredFaces() << " faces, one sector has " << sector);
+  }
+}
+
+void Revolution()
+{
+  VaseShape s; // amplitude 0: a surface of revolution
+  const Eigen::Isometry3d motion = Motion(31);
+  const TriangleMesh m = Moved(MakeVase(s, 48, 24), motion);
+  const FoldingTree tree = FoldAndCheck("revolution, 48 segments", m);
+  int first = -1;
+  CountRotationNodes(tree, first);
+  CheckAxis("revolution, 48 segments", tree, first, 48, motion);
+  EXPECT(tree.Compression() >= 0.95,
+    "revolution: compression " << tree.Compression() << " below 95% (one 48th is 97.9%)");
+}
+
+void VaseBesideBox()
+{
+  VaseShape s;
+  s.order = 5;
+  s.amplitude = 0.25;
+  TriangleMesh m = MakeVase(s, 50, 24);
+  AddBox(m, Vec3(2.5, 0, 1), 0.8);
+  const Eigen::Isometry3d motion = Motion(55);
+  m = Moved(m, motion);
+  const FoldingTree tree = FoldAndCheck("k=5 vase beside a box", m);
+  int first = -1;
+  const int rotations = CountRotationNodes(tree, first);
+  EXPECT(rotations == 1 && first > 0,
+    "vase beside a box: " << rotations << " rotation nodes, the first at " << first
+                          << " (expected one, below the root)");
+  CheckAxis("vase beside a box", tree, first, 5, motion);
+}
+
+void NoRotation()
+{
+  VaseShape s;
+  s.order = 6;
+  s.amplitude = 0.25;
+  const TriangleMesh m = Moved(MakeVase(s, 48, 24), Motion(9));
+  int first = -1;
+  const FoldingTree off = FoldAndCheck("k=6 vase, rotation off", m, false);
+  EXPECT(CountRotationNodes(off, first) == 0, "rotation off: a rotation node was made");
+  VaseShape lumpy;
+  lumpy.lumpy = true;
+  const FoldingTree tree = FoldAndCheck("lumpy vase", Moved(MakeVase(lumpy, 48, 24), Motion(12)));
+  EXPECT(CountRotationNodes(tree, first) == 0, "lumpy vase: a rotation node was made");
+}
+}
+
+int main()
+{
+  TwistedVases(false);
+  TwistedVases(true);
+  Revolution();
+  VaseBesideBox();
+  NoRotation();
+  return coretest::Finish("TestFoldingTreeRotation");
+}

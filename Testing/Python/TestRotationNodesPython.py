@@ -1,0 +1,202 @@
+#!/usr/bin/env python3
+"""TestRotationNodesPython: rotation nodes of the folding tree (issue 22) from Python.
+
+A closed 6-fold twisted vase (no mirror plane), folded by foldingmeshes.vtkFoldingTreeBuilder
+with RotationNodes on:
+- the root is a rotation node: its "Axis" block carries FoldingNodeKind 3, FoldingAxisOrigin and
+  FoldingAxisDirection (3 components each, the direction along the vase's axis) and
+  FoldingRotationOrder 6, and draws the axis as a line; the tree stores about a sixth;
+- the tree saved as .vtm (inline binary) and as .fmz reads back and unfolds within the root
+  epsilon of the vase (vtkFoldingTreeUnfolder's proved HausdorffToOriginalBound), closed;
+- RotationNodes off (the default) gives no rotation node;
+- a malformed rotation node (order 1; no FoldingAxisDirection) is rejected with an error that
+  names it.
+
+Run with /usr/bin/python3 and PYTHONPATH=<build>/lib/python3/dist-packages:
+    TestRotationNodesPython.py TEMP_DIR
+"""
+
+import math
+import os
+import sys
+
+from vtkmodules.util.misc import calldata_type
+from vtkmodules.vtkCommonCore import VTK_STRING, vtkPoints
+from vtkmodules.vtkCommonDataModel import vtkCellArray, vtkPolyData
+from vtkmodules.vtkFiltersCore import vtkFeatureEdges
+from vtkmodules.vtkIOXML import vtkXMLMultiBlockDataWriter
+
+from foldingmeshes import (vtkExpatSafeXMLMultiBlockDataReader, vtkFoldingTreeBuilder,
+                           vtkFoldingTreeCompactReader, vtkFoldingTreeCompactWriter,
+                           vtkFoldingTreeUnfolder)
+
+failures = []
+ORDER = 6
+
+
+def check(condition, message):
+    print(("ok:   " if condition else "FAIL: ") + message)
+    if not condition:
+        failures.append(message)
+
+
+def twisted_vase(order, segments=48, rings=24):
+    """r = R(z) (1 + 0.25 cos(k theta + 0.9 z)) about the z axis, closed by two poles."""
+    points = vtkPoints()
+    polys = vtkCellArray()
+    for j in range(rings):
+        z = 2.0 * (j + 0.5) / rings
+        profile = 0.55 + 0.22 * math.sin(1.7 * z + 0.4) + 0.08 * z
+        for i in range(segments):
+            theta = 2.0 * math.pi * i / segments
+            r = profile * (1.0 + 0.25 * math.cos(order * theta + 0.9 * z))
+            points.InsertNextPoint(r * math.cos(theta), r * math.sin(theta), z)
+    bottom = points.InsertNextPoint(0, 0, 0)
+    top = points.InsertNextPoint(0, 0, 2)
+
+    def at(j, i):
+        return j * segments + i % segments
+    for j in range(rings - 1):
+        for i in range(segments):
+            polys.InsertNextCell(3, (at(j, i), at(j, i + 1), at(j + 1, i + 1)))
+            polys.InsertNextCell(3, (at(j, i), at(j + 1, i + 1), at(j + 1, i)))
+    for i in range(segments):
+        polys.InsertNextCell(3, (bottom, at(0, i + 1), at(0, i)))
+        polys.InsertNextCell(3, (top, at(rings - 1, i), at(rings - 1, i + 1)))
+    mesh = vtkPolyData()
+    mesh.SetPoints(points)
+    mesh.SetPolys(polys)
+    return mesh
+
+
+def field(data, name, component=0):
+    array = data.GetFieldData().GetArray(name) if data is not None else None
+    return array.GetComponent(0, component) if array is not None else None
+
+
+def axis_block(tree):
+    """The root node's metadata block (its last block) when the root is an inner node."""
+    root = tree.GetBlock(0)
+    if root is None or not root.IsA("vtkMultiBlockDataSet"):
+        return None
+    return root.GetBlock(root.GetNumberOfBlocks() - 1)
+
+
+def open_edges(mesh):
+    edges = vtkFeatureEdges()
+    edges.SetInputData(mesh)
+    edges.BoundaryEdgesOn()
+    edges.FeatureEdgesOff()
+    edges.ManifoldEdgesOff()
+    edges.NonManifoldEdgesOn()
+    edges.Update()
+    return edges.GetOutput().GetNumberOfCells()
+
+
+def unfold_and_check(source, vase, epsilon, label):
+    unfolder = vtkFoldingTreeUnfolder()
+    unfolder.SetInputConnection(source)
+    unfolder.SetOriginalData(vase)
+    unfolder.Update()
+    mesh = unfolder.GetOutput()
+    bound = field(mesh, "HausdorffToOriginalBound")
+    check(bound is not None and bound <= epsilon,
+          "%s: unfolded within the root epsilon: proved Hausdorff %s, epsilon %s"
+          % (label, bound, epsilon))
+    check(mesh.GetNumberOfCells() > 0 and open_edges(mesh) == 0,
+          "%s: unfolded closed (%d cells, %d open or non-manifold edges)"
+          % (label, mesh.GetNumberOfCells(), open_edges(mesh)))
+
+
+def error_catcher(messages):
+    """An ErrorEvent observer that appends the error's text to `messages`."""
+    @calldata_type(VTK_STRING)
+    def on_error(caller, event, message):
+        messages.append(str(message))
+    return on_error
+
+
+def expect_rejected(tree, damage, must_contain, label):
+    """A deep copy of `tree` with its root's axis block damaged: the unfolder fails, naming it."""
+    from vtkmodules.vtkCommonDataModel import vtkMultiBlockDataSet
+    copy = vtkMultiBlockDataSet()
+    copy.DeepCopy(tree)
+    damage(axis_block(copy))
+    unfolder = vtkFoldingTreeUnfolder()
+    messages = []
+    unfolder.AddObserver("ErrorEvent", error_catcher(messages))
+    unfolder.SetInputData(copy)
+    unfolder.Update()
+    text = "\n".join(messages)
+    check(unfolder.GetOutput().GetNumberOfCells() == 0 and must_contain in text,
+          "%s: rejected, the error names it (%r in the error)" % (label, must_contain))
+
+
+def main(temp_dir):
+    os.makedirs(temp_dir, exist_ok=True)
+    vase = twisted_vase(ORDER)
+    builder = vtkFoldingTreeBuilder()
+    builder.SetInputData(vase)
+    check(not builder.GetRotationNodes() and builder.GetMaximumRotationOrder() == 64,
+          "defaults: RotationNodes off, MaximumRotationOrder 64")
+    builder.Update()
+    off = axis_block(builder.GetOutputDataObject(0))
+    check(off is None or field(off, "FoldingNodeKind") != 3, "RotationNodes off: no rotation root")
+
+    builder.RotationNodesOn()
+    builder.Update()
+    tree = builder.GetOutputDataObject(0)
+    info = tree.GetBlock(1)
+    epsilon = field(info, "RootEpsilon")
+    block = axis_block(tree)
+    check(block is not None and field(block, "FoldingNodeKind") == 3,
+          "the root is a rotation node (FoldingNodeKind 3)")
+    check(field(block, "FoldingRotationOrder") == ORDER,
+          "FoldingRotationOrder %s" % field(block, "FoldingRotationOrder"))
+    direction = [field(block, "FoldingAxisDirection", c) for c in range(3)]
+    origin = [field(block, "FoldingAxisOrigin", c) for c in range(3)]
+    check(None not in direction and abs(abs(direction[2]) - 1.0) < 1e-4,
+          "FoldingAxisDirection along z: %s" % direction)
+    check(None not in origin and math.hypot(origin[0], origin[1]) < 0.01,
+          "FoldingAxisOrigin on the z axis: %s" % origin)
+    check(block is not None and block.GetNumberOfLines() == 1, "the Axis block draws a line")
+    stored = builder.GetStoredFaces()
+    check(stored <= vase.GetNumberOfCells() // ORDER + 60,
+          "stores %d of %d faces (a sixth: %d)" % (stored, vase.GetNumberOfCells(),
+                                                   vase.GetNumberOfCells() // ORDER))
+    unfold_and_check(builder.GetOutputPort(0), vase, epsilon, "in memory")
+
+    vtm = os.path.join(temp_dir, "TestRotationNodesPython.vtm")
+    writer = vtkXMLMultiBlockDataWriter()
+    writer.SetInputData(tree)
+    writer.SetDataModeToBinary()
+    writer.SetFileName(vtm)
+    check(writer.Write() == 1, "wrote " + vtm)
+    reader = vtkExpatSafeXMLMultiBlockDataReader()
+    reader.SetFileName(vtm)
+    unfold_and_check(reader.GetOutputPort(), vase, epsilon, ".vtm")
+
+    fmz = os.path.join(temp_dir, "TestRotationNodesPython.fmz")
+    compact = vtkFoldingTreeCompactWriter()
+    compact.SetInputData(tree)
+    compact.SetFileName(fmz)
+    check(compact.Write() == 1, "wrote %s (%d bytes)" % (fmz, compact.GetBytesWritten()))
+    compact_reader = vtkFoldingTreeCompactReader()
+    compact_reader.SetFileName(fmz)
+    compact_reader.Update()
+    read_block = axis_block(compact_reader.GetOutput())
+    check(field(read_block, "FoldingRotationOrder") == ORDER, ".fmz keeps the rotation node")
+    unfold_and_check(compact_reader.GetOutputPort(), vase, epsilon, ".fmz")
+
+    expect_rejected(tree, lambda b: b.GetFieldData().GetArray("FoldingRotationOrder").SetTuple1(0, 1),
+                    "FoldingRotationOrder 1", "order 1")
+    expect_rejected(tree, lambda b: b.GetFieldData().RemoveArray("FoldingAxisDirection"),
+                    "rotation node without its axis metadata", "no FoldingAxisDirection")
+
+    print("TestRotationNodesPython: %s" % ("%d failure(s)" % len(failures) if failures
+                                           else "all checks passed"))
+    return 1 if failures else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv[1] if len(sys.argv) > 1 else "."))
