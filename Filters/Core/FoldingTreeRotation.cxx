@@ -55,6 +55,9 @@ constexpr double SeamSnapOfEpsilon = 0.25;
 /// Orders whose seams pair up that get the error check before the node gives up (each check
 /// stops at its first turn beyond the limit).
 constexpr int MaximumCheckedOrders = 16;
+/// Orders whose invariant part of the detector's region gets a sector planned (the first of
+/// those whose k sectors covered the whole region once, else the detector's, largest first).
+constexpr int MaximumRegionOrders = 4;
 /// k sectors' area may differ from the region's by this share of one sector.
 constexpr double SectorAreaTolerance = 0.25;
 /// Bins per sector of the histogram that finds phi0.
@@ -352,10 +355,11 @@ std::vector<int> CandidateOrders(const RotationResult& r, int maximumOrder, bool
 }
 
 /**
- * The faces of `region` (per face of w) whose vertices, turned by every multiple of 360/k,
- * lie within eps of a face of the region: the part of a rotational region that the turns map
- * onto itself (the detector's region is ragged where it meets asymmetric parts, and its test
- * turns are not all of these). Three passes of removal at most.
+ * The faces of `region` (per face of w) whose vertices, turned by 360/k and by floor(k/2)
+ * 360/k (the detector's test turns; ChargeTurns then checks every turn), lie within eps of a
+ * face of the region: the part of a rotational region that the turns map onto itself (the
+ * detector's region is ragged where it meets asymmetric parts). Three passes of removal at
+ * most.
  */
 std::vector<char> InvariantRegion(const WorkMesh& w,
   std::vector<char> region,
@@ -379,7 +383,10 @@ std::vector<char> InvariantRegion(const WorkMesh& w,
       if (inRegion[v])
         points.push_back(v);
     std::vector<char> bad(w.points.size(), 0);
-    for (int j = 1; j < k; ++j)
+    std::vector<int> turns = { 1 }; // the detector's two test turns (ChargeTurns checks all)
+    if (k / 2 > 1)
+      turns.push_back(k / 2);
+    for (int j : turns)
     {
       const AxisTurn turn(axis, 2.0 * EIGEN_PI * j / k);
       std::vector<Vec3> turned;
@@ -524,7 +531,7 @@ bool Builder::PlanRotation(int index,
     if (covered.empty()) // e.g. an asymmetric part beside: the detector's orders
       covered = CandidateOrders(r, O.maximumRotationOrder, !wholeMirror);
     const double minimumArea = O.symmetry.minimumSymmetricAreaFraction * Area(w);
-    for (size_t i = 0; !planned && i < covered.size() && i < size_t(MaximumCheckedOrders); ++i)
+    for (size_t i = 0; !planned && i < covered.size() && i < size_t(MaximumRegionOrders); ++i)
     {
       std::vector<char> region = InvariantRegion(w, label, r.axis, covered[i], eps);
       int faces = 0;
