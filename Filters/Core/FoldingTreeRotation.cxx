@@ -542,6 +542,12 @@ bool Builder::PlanRotation(int index,
           ++faces;
           area += TriangleArea(w, w.triangles[f]);
         }
+      if (O.trace)
+        O.trace(FormatTrace("[rotation]   order %d: the turns map %d faces (%.1f%% of the area) "
+                            "onto the rotational region",
+          covered[i],
+          faces,
+          100.0 * area / Area(w)));
       if (faces == 0 || faces == w.NumberOfFaces() || area < minimumArea)
         continue;
       planned = this->PlanSector(r, Extract(w, region), { covered[i] }, eps, plan, nullptr);
