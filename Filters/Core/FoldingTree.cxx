@@ -218,6 +218,9 @@ std::string FoldingTree::Validate() const
           return os.str() + "invalid rotation axis (direction must be unit length)";
         if (node.rotationOrder < 2 || node.rotationOrder > MaximumRotationNodeOrder)
           return os.str() + "rotation order out of range (2 .. 360)";
+        for (int a = node.parent; a >= 0; a = this->nodes[a].parent)
+          if (this->nodes[a].kind == FoldingNodeKind::Rotation)
+            return os.str() + "a rotation node below another rotation node (not supported)";
         break;
       default:
         return os.str() + "unknown node kind";

@@ -320,6 +320,18 @@ int Builder::Build(WorkMesh w, int parent, int depth, double eps, int folds, uin
   }
   // Both: the subtree that stores fewer faces (ties: the fold's, the paper's). Each is built
   // in full, the rotation's first; the nodes from `index` on are the subtree (preorder).
+  // Within one of them (a remaining component with its own rotation), the faces each saves
+  // at its own node decide instead, so that the builds do not multiply down a chain.
+  if (this->BuildingAlternatives > 0)
+  {
+    const int regionFaces = rotation.region.empty() ? nf : rotation.regionFaces;
+    if (regionFaces * (1.0 - 1.0 / rotation.order) > 0.5 * sFaces)
+      this->Segment(index, std::move(w), pm, turned, depth, eps, folds, pathFolds, turn);
+    else
+      this->Segment(index, std::move(w), pm, S, depth, eps, folds, pathFolds, fold);
+    return index;
+  }
+  ++this->BuildingAlternatives;
   const FoldingNode fresh = this->Tree.nodes[index];
   const double done = this->DoneFaces;
   this->Segment(index, w, pm, turned, depth, eps, folds, pathFolds, turn);
@@ -330,7 +342,16 @@ int Builder::Build(WorkMesh w, int parent, int depth, double eps, int folds, uin
   this->Tree.nodes.push_back(fresh);
   this->DoneFaces = done;
   this->Segment(index, std::move(w), pm, S, depth, eps, folds, pathFolds, fold);
-  if (turnedFaces < this->SubtreeStoredFaces(index))
+  const int foldedFaces = this->SubtreeStoredFaces(index);
+  --this->BuildingAlternatives;
+  if (O.trace)
+    O.trace(FormatTrace("[rotation] node %d: the rotation's subtree stores %d faces, the "
+                        "fold's %d: the %s's kept (node numbers above from the other one)",
+      index,
+      turnedFaces,
+      foldedFaces,
+      turnedFaces < foldedFaces ? "rotation" : "fold"));
+  if (turnedFaces < foldedFaces)
   {
     this->Tree.nodes.resize(index);
     this->Tree.nodes.insert(this->Tree.nodes.end(), turnedNodes.begin(), turnedNodes.end());
@@ -411,6 +432,9 @@ std::string CheckBuildInput(const TriangleMesh& input,
     return "minimumAreaFraction must be within [0, 1]";
   if (!(options.planeSnapFraction >= 0.0 && options.planeSnapFraction < 1.0))
     return "planeSnapFraction must be within [0, 1)";
+  if (options.rotationNodes &&
+    (options.maximumRotationOrder < 2 || options.maximumRotationOrder > MaximumRotationNodeOrder))
+    return "maximumRotationOrder must be within [2, 360]";
   if (input.points.empty() || input.triangles.empty())
     return "the input mesh is empty";
   const int np = static_cast<int>(input.points.size());

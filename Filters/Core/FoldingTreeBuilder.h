@@ -168,11 +168,12 @@ struct FoldingTreeOptions
   /**
    * Rotation nodes (issue 22): at a node with no fold and no rotation above it, find the
    * region's rotational symmetry (DetectRotationalSymmetry, orders 2 .. maximumRotationOrder)
-   * and, when turning one sector of 360/k degrees k times reproduces the whole region within
-   * epsilon / 2, keep that sector only (FoldingNodeKind::Rotation; its subtree is built with
-   * epsilon / 2 and may fold again: a dihedral part becomes rotation + fold). Taken when k >= 3,
-   * or k = 2 and the mirror plane's S is not the whole region. The rule for the order, the
-   * sector cut and the seams: FoldingTreeRotation.cxx. Off by default (issue 22 measures it).
+   * and, when turning one sector of 360/k degrees k times reproduces the region (or the part
+   * of it the turns map onto itself) within epsilon and the error budgets, keep that sector only
+   * (FoldingNodeKind::Rotation; its subtree is built with epsilon / 2 and may fold again: a
+   * dihedral part becomes rotation + fold). Where a fold passes too, both subtrees are built and
+   * the one storing fewer faces kept (ties: the fold). The rule for the order, the sector cut
+   * and the seams: FoldingTreeRotation.cxx. Off by default (docs/benchmarks.md: +38% build time).
    */
   bool rotationNodes = false;
   int maximumRotationOrder = DefaultMaximumRotationOrder;

@@ -46,6 +46,10 @@ struct RotationPlan
   std::vector<Vec3> points;
   std::vector<char> seam;
   std::vector<double> charge;
+  /// The sector's faces were cut along its bounding half-planes (FoldingTreeRotation.cxx,
+  /// step 3b): Rotate cuts the region it gets the same way; start: the sector's first angle.
+  bool cutFaces = false;
+  double start = 0.0;
 };
 
 class Builder
@@ -286,6 +290,8 @@ private:
   std::vector<char> InputBoundary;
   int MaximumDepth = 48;
   double DoneFaces = 0.0;
+  /// > 0 while Build builds the alternatives of a node (rotation and fold) to compare them.
+  int BuildingAlternatives = 0;
   double LastProgress = 0.0;
 };
 }

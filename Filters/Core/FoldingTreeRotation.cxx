@@ -12,24 +12,33 @@
 //    own seams. k times its area must be the region's within a quarter of a sector's (else
 //    the copies would overlap or leave gaps).
 // 3. Its seams: the edges its faces use once that other faces of the region use too; a seam
-//    vertex within the seam snap (epsilon / 4) of the axis is moved onto it. When every seam
-//    vertex on the phi0 side pairs one-to-one (mutual nearest, within the snap) with a seam
-//    vertex on the other side turned back by 360/k, each pair moves to agree exactly (the
-//    mean of the one and the other turned back, and that turned): the unfolder's copies meet
-//    there. When every seam vertex lies within the snap of its bounding half-plane, the seams
-//    are moved onto the half-planes too (pairs as pairs), so a mirror fold of the sector
-//    through its bisector (a dihedral part) maps one seam onto the other; seams that lie
-//    there but do not pair (rings spaced unevenly) are joined by the unfolder's zipper, like
-//    segmentation seams. Otherwise the order has no sector. The first order with a sector is
-//    the candidate (surfaces of revolution: the largest k whose sector has whole faces).
-// 4. The error: each kept point turned by j * 360/k (j = 1 .. k - 1) and each removed point
-//    turned back into the sector must lie within epsilon / 2 of the region (turned kept
-//    points measured against the region, removed points against the sector); each kept point
-//    is charged the larger of its own turns' distance and its move, and the largest distance
-//    of a removed point, from its error budget (which must cover it). A turn is an isometry:
-//    the k copies do not compound like nested folds, so the subtree gets epsilon / 2 (and
-//    what its budgets hold) for any k. Up to MaximumCheckedOrders orders get this check; each
-//    stops at the first turn beyond the limit.
+//    vertex on the axis (within 1e-6 of the diagonal) is moved onto it. When every seam vertex
+//    on the phi0 side pairs one-to-one (mutual nearest, within the seam snap of epsilon / 4)
+//    with a seam vertex on the other side turned back by 360/k, each pair moves to agree
+//    exactly (the mean of the one and the other turned back, and that turned): the unfolder's
+//    copies meet there; when every seam vertex lies within the snap of its bounding half-plane,
+//    the pairs are moved onto the half-planes too, so a mirror fold of the sector through its
+//    bisector (a dihedral part) maps one seam onto the other. Seams that do not pair are turned
+//    about the axis onto their half-planes (a surface of revolution keeps its points; step 4
+//    measures where they land) and joined by the unfolder's zipper, like segmentation seams.
+//    No moved face may flip.
+// 3b. When the whole faces cover the region once but their seams fail step 3 (triangles that
+//    span much of a sector: the bearing's CAD fans, rings spaced unevenly), the faces are cut
+//    along the two half-planes (SplitAtHalfPlanes; the pieces keep their input face) and step
+//    3 is tried on the cut region, whose seams lie on the half-planes, as long as k such
+//    sectors hold at most twice the region's faces (the pieces multiply with k).
+//    The first order with a sector is the candidate (surfaces of revolution: the largest k
+//    whose sector keeps the bound).
+// 4. The error: each kept point turned by j * 360/k (j = 0 .. k - 1; j = 0 measures where the
+//    seams moved it) and each removed point turned back into the sector must lie within
+//    epsilon of the region (turned kept points measured against the region, removed points
+//    against the sector), and so must the centroids and edge midpoints of the kept faces whose
+//    seam vertices moved; each kept point is charged the largest distance of its own turns and
+//    faces, and the largest distance of a removed point, from its error budget (which must
+//    cover it). A turn is an isometry: the k copies do not compound like nested folds, so the
+//    subtree gets epsilon / 2, like a fold's half (and what its budgets hold), for any k; the
+//    builder's verification (verifyBound) proves the whole. Up to MaximumCheckedOrders orders
+//    get this check; each stops at the first turn beyond the limit.
 // Seam vertices carry the tear bit of the rotation node's depth; the unfolder stitches the
 // copies' seams like segmentation seams (Unfolder::Turn).
 #include "FoldingTreeBuilderInternal.h"
@@ -39,6 +48,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <map>
 #include <numeric>
 
 namespace foldingmeshes
@@ -58,6 +69,12 @@ constexpr int MaximumCheckedOrders = 16;
 /// Orders whose invariant part of the detector's region gets a sector planned (the first of
 /// those whose k sectors covered the whole region once, else the detector's, largest first).
 constexpr int MaximumRegionOrders = 4;
+/// Seam vertices this many times offAxis (1e-9 of the diagonal) from the axis are moved onto
+/// it; farther ones are seam vertices like any other (the stitcher joins the copies' poles).
+constexpr double OnAxisOfOffAxis = 1000.0;
+/// k sectors may hold at most this many times the region's faces (faces cut along the
+/// half-planes add pieces).
+constexpr double MaximumFaceGrowth = 2.0;
 /// k sectors' area may differ from the region's by this share of one sector.
 constexpr double SectorAreaTolerance = 0.25;
 /// Bins per sector of the histogram that finds phi0.
@@ -155,7 +172,111 @@ std::vector<char> SeamVertices(const EdgeTable& edges, const std::vector<char>& 
   return seam;
 }
 
+/**
+ * w with every face that crosses the half-plane at angle `angle` about the axis cut along it:
+ * a new point where an edge crosses (shared by the faces of that edge), the face cut into two
+ * or three triangles of the same orientation and input face. A new point takes the input id,
+ * flags and budget of the edge's nearer end (its tear and plane flags: those both ends have;
+ * the smaller budget). Crossings within `tiny` of an end use the end.
+ */
+WorkMesh SplitAtHalfPlane(const AxisFrame& frame, const WorkMesh& w, double angle, double tiny)
+{
+  const Vec3 normal = -std::sin(angle) * frame.U + std::cos(angle) * frame.V;
+  const Vec3 along = std::cos(angle) * frame.U + std::sin(angle) * frame.V;
+  const Vec3& o = frame.Axis.origin;
+  std::vector<double> s(w.points.size());
+  for (int v = 0; v < w.NumberOfPoints(); ++v)
+  {
+    s[v] = normal.dot(w.points[v] - o);
+    if (std::abs(s[v]) <= tiny)
+      s[v] = 0.0;
+  }
+  WorkMesh out = w;
+  out.triangles.clear();
+  out.faceOrig.clear();
+  std::map<std::pair<int, int>, int> crossing;
+  auto cut = [&](int a, int b) -> int
+  {
+    const auto key = std::make_pair(std::min(a, b), std::max(a, b));
+    auto it = crossing.find(key);
+    if (it != crossing.end())
+      return it->second;
+    const double t = s[a] / (s[a] - s[b]);
+    const int nearer = t < 0.5 ? a : b;
+    out.AppendPoint(w, nearer);
+    const int id = out.NumberOfPoints() - 1;
+    out.points[id] = w.points[a] + t * (w.points[b] - w.points[a]);
+    out.tear[id] = w.tear[a] & w.tear[b];
+    out.onPlane[id] = w.onPlane[a] & w.onPlane[b];
+    out.projected[id] = 0;
+    out.mirrorFlags[id].clear();
+    out.budget[id] = std::min(w.budget[a], w.budget[b]);
+    crossing.emplace(key, id);
+    return id;
+  };
+  for (int f = 0; f < w.NumberOfFaces(); ++f)
+  {
+    const Triangle& t = w.triangles[f];
+    auto keep = [&](const Triangle& piece)
+    {
+      out.triangles.push_back(piece);
+      out.faceOrig.push_back(w.faceOrig[f]);
+    };
+    // The rotation of t whose first vertex is alone on its side (or on the plane).
+    int lone = -1;
+    for (int i = 0; i < 3 && lone < 0; ++i)
+    {
+      const double a = s[t[i]], b = s[t[(i + 1) % 3]], c = s[t[(i + 2) % 3]];
+      if ((a > 0 && b < 0 && c < 0) || (a < 0 && b > 0 && c > 0) ||
+        (a == 0 && ((b > 0 && c < 0) || (b < 0 && c > 0))))
+        lone = i;
+    }
+    if (lone < 0)
+    {
+      keep(t);
+      continue;
+    }
+    const int a = t[lone], b = t[(lone + 1) % 3], c = t[(lone + 2) % 3];
+    // Only where the edges cross the half-plane, not the opposite one (decided per edge, so
+    // the two faces of an edge agree).
+    auto onHalfPlane = [&](int p, int q)
+    {
+      const double u = s[p] / (s[p] - s[q]);
+      return along.dot(w.points[p] + u * (w.points[q] - w.points[p]) - o) > 0.0;
+    };
+    if (s[a] == 0.0 ? !onHalfPlane(b, c) : (!onHalfPlane(a, b) || !onHalfPlane(c, a)))
+    {
+      keep(t);
+      continue;
+    }
+    if (s[a] == 0.0) // through vertex a: two triangles
+    {
+      const int bc = cut(b, c);
+      keep({ a, b, bc });
+      keep({ a, bc, c });
+      continue;
+    }
+    const int ab = cut(a, b), ca = cut(c, a);
+    keep({ a, ab, ca });
+    keep({ ab, b, c });
+    keep({ ab, c, ca });
+  }
+  return out;
+}
+
 const char* const NotCoveredOnce = "k sectors do not cover the area once";
+const char* const NoSector = "no face or every face in the sector";
+const char* const TooManyPieces = "k sectors would hold more than twice the region's faces";
+
+/// SplitAtHalfPlane at both half-planes of the sector [start, start + width).
+WorkMesh SplitAtHalfPlanes(const AxisFrame& frame,
+  const WorkMesh& w,
+  double start,
+  double width,
+  double tiny)
+{
+  return SplitAtHalfPlane(frame, SplitAtHalfPlane(frame, w, start, tiny), start + width, tiny);
+}
 
 /// Why order k has no sector here (nullptr: it has, in `cut`).
 const char* CutSector(const AxisFrame& frame,
@@ -164,12 +285,14 @@ const char* CutSector(const AxisFrame& frame,
   int k,
   double snap,
   double offAxis,
-  SectorCut& cut)
+  SectorCut& cut,
+  double start = std::numeric_limits<double>::quiet_NaN(),
+  int regionFaces = -1)
 {
   const double width = TwoPi / k;
   cut = SectorCut();
   cut.order = k;
-  cut.start = SectorStart(frame, w, width, offAxis);
+  cut.start = std::isnan(start) ? SectorStart(frame, w, width, offAxis) : start;
   const int nf = w.NumberOfFaces(), np = w.NumberOfPoints();
   cut.keep.assign(nf, 0);
   int kept = 0;
@@ -180,7 +303,11 @@ const char* CutSector(const AxisFrame& frame,
     kept += cut.keep[f] = Modulo(frame.Angle(c) - cut.start, TwoPi) < width;
   }
   if (kept == 0 || kept == nf)
-    return "no face or every face in the sector";
+    return NoSector;
+  // Faces cut along the half-planes multiply: k sectors may hold at most twice as many faces
+  // than the region had (the unfolded mesh stays about as fine as the input).
+  if (k * static_cast<double>(kept) > MaximumFaceGrowth * (regionFaces < 0 ? nf : regionFaces))
+    return TooManyPieces;
   // k sectors cover the region once: their area within a quarter sector of the region's (a
   // sector wider than 360/k, whose copies overlap, or narrower, fails; the seams' pairing
   // tolerance alone would let a 16-gon pass as 17 sectors).
@@ -208,7 +335,7 @@ const char* CutSector(const AxisFrame& frame,
     if (!cut.seam[v])
       continue;
     const double radius = frame.Radius(w.points[v]);
-    if (radius <= snap)
+    if (radius <= OnAxisOfOffAxis * offAxis) // on the axis (a pole): every turn keeps it
     {
       cut.points[v] = frame.OntoAxis(w.points[v]);
       cut.move[v] = radius;
@@ -263,11 +390,14 @@ const char* CutSector(const AxisFrame& frame,
   for (int f = 0; f < nf; ++f)
   {
     const Triangle& t = w.triangles[f];
-    if (!cut.keep[f] || (!cut.move[t[0]] && !cut.move[t[1]] && !cut.move[t[2]]))
+    if (!cut.keep[f] ||
+      std::max({ cut.move[t[0]], cut.move[t[1]], cut.move[t[2]] }) <= offAxis) // rounding
       continue;
     const Vec3 before = (w.points[t[1]] - w.points[t[0]]).cross(w.points[t[2]] - w.points[t[0]]);
     const Vec3 after =
       (cut.points[t[1]] - cut.points[t[0]]).cross(cut.points[t[2]] - cut.points[t[0]]);
+    if (before.norm() <= offAxis * offAxis) // degenerate already (e.g. in the input)
+      continue;
     if (!(before.dot(after) > 0.0))
       return "moving the seams onto the half-planes would flip or collapse a face";
   }
@@ -312,6 +442,35 @@ bool ChargeTurns(const AxisFrame& frame,
     worst = std::max(worst, *std::max_element(d.begin(), d.end()));
     if (worst > limit)
       return false; // a wrong order fails at its first bad turn (cost: the turns so far)
+  }
+  // Kept faces with a moved seam vertex: their centroids and edge midpoints, where a face
+  // stretched onto a half-plane can leave the surface between its corners (fold's
+  // SpendProjectionBudget measures its projected faces the same way).
+  {
+    std::vector<Vec3> samples;
+    std::vector<int> sampleFace;
+    for (int f = 0; f < w.NumberOfFaces(); ++f)
+    {
+      const Triangle& t = w.triangles[f];
+      if (!cut.keep[f] || !(cut.move[t[0]] > 0.0 || cut.move[t[1]] > 0.0 || cut.move[t[2]] > 0.0))
+        continue;
+      const Vec3 &a = cut.points[t[0]], &b = cut.points[t[1]], &c = cut.points[t[2]];
+      for (const Vec3& x :
+        { Vec3((a + b + c) / 3.0), Vec3(0.5 * (a + b)), Vec3(0.5 * (b + c)), Vec3(0.5 * (c + a)) })
+      {
+        samples.push_back(x);
+        sampleFace.push_back(f);
+      }
+    }
+    const std::vector<double> d = toRegion.Distances(samples);
+    for (size_t i = 0; i < samples.size(); ++i)
+    {
+      worst = std::max(worst, d[i]);
+      for (int v : w.triangles[sampleFace[i]])
+        charge[v] = std::max(charge[v], d[i]);
+    }
+    if (worst > limit)
+      return false;
   }
   // Removed points, turned back into the sector, against the sector.
   TriangleMesh sector;
@@ -445,11 +604,40 @@ bool Builder::PlanSector(const RotationResult& r,
   const SurfaceDistanceQuery toRegion(surface);
   SectorCut cut;
   int checked = 0;
+  const double offAxis = 1e-9 * this->Tree.diagonal;
+  WorkMesh split;
   for (int k : orders)
   {
-    const char* why = CutSector(frame, region, edges, k, snap, 1e-9 * this->Tree.diagonal, cut);
+    const char* why = CutSector(frame, region, edges, k, snap, offAxis, cut);
     if (covered && why != NotCoveredOnce)
       covered->push_back(k);
+    // Whole faces cover the region once but their seams do not meet: cut the faces along the
+    // half-planes (step 3b).
+    bool cutFaces = false;
+    if (why && why != NotCoveredOnce && why != NoSector)
+    {
+      const double start = cut.start;
+      split = SplitAtHalfPlanes(frame, region, start, TwoPi / k, offAxis);
+      const char* whySplit = CutSector(frame,
+        split,
+        EdgeFaces(split.triangles),
+        k,
+        snap,
+        offAxis,
+        cut,
+        start,
+        region.NumberOfFaces());
+      if (O.trace)
+        O.trace(FormatTrace("[rotation]   order %d: %s (farthest seam vertex %.3g from its "
+                            "half-plane, snap %.3g); cut along the half-planes: %s",
+          k,
+          why,
+          cut.halfPlaneMove,
+          snap,
+          whySplit ? whySplit : "a sector"));
+      why = whySplit;
+      cutFaces = !whySplit;
+    }
     if (why)
     {
       if (O.trace)
@@ -462,7 +650,8 @@ bool Builder::PlanSector(const RotationResult& r,
       continue;
     }
     double worst = 0.0;
-    const bool within = ChargeTurns(frame, region, toRegion, cut, limit, plan.charge, worst);
+    const bool within =
+      ChargeTurns(frame, cutFaces ? split : region, toRegion, cut, limit, plan.charge, worst);
     if (O.trace)
       O.trace(FormatTrace("[rotation]   order %d: error %.3g of the limit %.3g%s",
         k,
@@ -473,6 +662,8 @@ bool Builder::PlanSector(const RotationResult& r,
     {
       plan.axis = r.axis;
       plan.order = k;
+      plan.cutFaces = cutFaces;
+      plan.start = cut.start;
       plan.keep = std::move(cut.keep);
       plan.points = std::move(cut.points);
       plan.seam = std::move(cut.seam);
@@ -506,7 +697,14 @@ bool Builder::PlanRotation(int index,
   ro.mirrorPlanes = planes.finalists;
   ro.mirrorPlanes.push_back(planes.plane);
   ro.rankByArea = true;
+  ro.progress = [this](double)
+  {
+    return !this->Aborted && this->Options.progress ? this->Options.progress(this->LastProgress)
+                                                    : !this->Aborted;
+  };
   const RotationResult r = DetectRotationalSymmetry(pm, ro, &regionFaces);
+  if (r.aborted)
+    return false; // the caller's next Report sees the abort
   bool planned = false;
   if (r.found)
   {
@@ -581,6 +779,9 @@ void Builder::Rotate(int index,
   double eps,
   int folds)
 {
+  if (plan.cutFaces) // the same cut as PlanSector's (same points, faces and order)
+    w = SplitAtHalfPlanes(
+      AxisFrame(plan.axis), w, plan.start, TwoPi / plan.order, 1e-9 * this->Tree.diagonal);
   const uint64_t bit = uint64_t(1) << depth;
   std::vector<int> discarded;
   for (int f = 0; f < w.NumberOfFaces(); ++f)

@@ -9,6 +9,8 @@
 // - the same with noise of 0.05 epsilon per coordinate;
 // - a surface of revolution with rings of 48 vertices: "continuous", the order is the largest
 //   whose sector has whole faces (48), and the sector is folded again below it;
+// - a surface of revolution whose rings each have their own phase (no column of vertices):
+//   the builder cuts the faces along the sector's half-planes; fewer faces than planes alone;
 // - a vase beside a separate box: the vase is a remaining region of the root's segmentation
 //   and becomes a rotation node of its own;
 // - with rotation nodes off, or on a shape with no rotational symmetry (a lumpy vase), no
@@ -169,6 +171,67 @@ void Revolution()
     "revolution: compression " << tree.Compression() << " below 95% (one 48th is 97.9%)");
 }
 
+/// A surface of revolution whose 24 rings of `segments` vertices are each turned by their own
+/// phase, so no column of vertices exists: no sector of whole faces has seams that pair.
+TriangleMesh StaggeredRevolution(int segments)
+{
+  TriangleMesh m;
+  const int rings = 24;
+  for (int j = 0; j < rings; ++j)
+  {
+    const double z = 2.0 * (j + 0.5) / rings;
+    const double r = 0.55 + 0.22 * std::sin(1.7 * z + 0.4) + 0.08 * z;
+    const double phase = 2.0 * Pi / segments * std::fmod(0.37 * j * j, 1.0);
+    for (int i = 0; i < segments; ++i)
+    {
+      const double theta = phase + 2.0 * Pi * i / segments;
+      m.points.emplace_back(r * std::cos(theta), r * std::sin(theta), z);
+    }
+  }
+  const int bottom = static_cast<int>(m.points.size());
+  m.points.emplace_back(0, 0, 0);
+  m.points.emplace_back(0, 0, 2.0);
+  auto id = [&](int j, int i) { return j * segments + (i % segments); };
+  for (int j = 0; j + 1 < rings; ++j)
+    for (int i = 0; i < segments; ++i)
+    {
+      m.triangles.push_back({ id(j, i), id(j, i + 1), id(j + 1, i + 1) });
+      m.triangles.push_back({ id(j, i), id(j + 1, i + 1), id(j + 1, i) });
+    }
+  for (int i = 0; i < segments; ++i)
+  {
+    m.triangles.push_back({ bottom, id(0, i + 1), id(0, i) });
+    m.triangles.push_back({ bottom + 1, id(rings - 1, i), id(rings - 1, i + 1) });
+  }
+  return m;
+}
+
+/// Fine rings (40 vertices): whole faces, seams turned onto the half-planes. Coarse rings (12
+/// vertices): turning the seams would flip faces, so the faces are cut along the half-planes.
+void Staggered()
+{
+  for (int segments : { 40, 12 })
+  {
+    const Eigen::Isometry3d motion = Motion(77 + segments);
+    const TriangleMesh m = Moved(StaggeredRevolution(segments), motion);
+    char name[64];
+    std::snprintf(name, sizeof(name), "staggered revolution %d", segments);
+    const FoldingTree tree = FoldAndCheck(name, m);
+    int first = -1;
+    const int rotations = CountRotationNodes(tree, first);
+    EXPECT(rotations == 1 && first == 0,
+      name << ": " << rotations << " rotation nodes, the first at " << first);
+    const FoldingTree planes = coretest::Fold(m, 0.02 * Diagonal(m));
+    EXPECT(tree.StoredFaces() < planes.StoredFaces(),
+      name << ": " << tree.StoredFaces() << " faces stored, " << planes.StoredFaces()
+           << " with planes alone");
+    EXPECT(first < 0 ||
+        tree.nodes[first].rotationOrder * tree.nodes[first + 1].numberOfFaces <=
+          2.0 * m.triangles.size(),
+      name << ": the sectors hold more than twice the faces");
+  }
+}
+
 void VaseBesideBox()
 {
   VaseShape s;
@@ -208,6 +271,7 @@ int main()
   TwistedVases(false);
   TwistedVases(true);
   Revolution();
+  Staggered();
   VaseBesideBox();
   NoRotation();
   return coretest::Finish("TestFoldingTreeRotation");
