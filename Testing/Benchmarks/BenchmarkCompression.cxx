@@ -1,7 +1,8 @@
 // Bytes of a mesh in the usual containers and coders next to its compact folding tree (.fmz),
 // with the proved Hausdorff distance of the decompressed mesh (issue 18). Prints numbers; not
 // a test. Usage:
-//   BenchmarkCompression [--threads N] [--bits N] DIR_OR_MESH...
+//   BenchmarkCompression [--threads N] [--bits N] [--rotation] DIR_OR_MESH...
+// (--rotation: the builder's RotationNodes on, issue 22.)
 // Columns: faces; binary PLY; zlib'd VTP (inline binary); Draco at draco_encoder's defaults
 // (11 position bits, -cl 7); Draco at the tree's bits; the .fmz; the ratio .fmz / Draco at the
 // same bits; the .fmz's quantisation bits; proved Hausdorff of the decompressed mesh to the
@@ -136,6 +137,7 @@ int main(int argc, char* argv[])
 {
   vtkSMPTools::SetBackend("STDThread");
   int bits = 0;
+  bool rotation = false;
   std::vector<std::string> paths;
   for (int i = 1; i < argc; ++i)
   {
@@ -144,6 +146,8 @@ int main(int argc, char* argv[])
       vtkSMPTools::Initialize(std::atoi(argv[++i]));
     else if (a == "--bits" && i + 1 < argc)
       bits = std::atoi(argv[++i]);
+    else if (a == "--rotation")
+      rotation = true;
     else
     {
       const std::vector<std::string> found = foldingmeshes::MeshFiles(a);
@@ -152,7 +156,8 @@ int main(int argc, char* argv[])
   }
   if (paths.empty())
   {
-    std::fprintf(stderr, "usage: %s [--threads N] [--bits N] DIR_OR_MESH...\n", argv[0]);
+    std::fprintf(
+      stderr, "usage: %s [--threads N] [--bits N] [--rotation] DIR_OR_MESH...\n", argv[0]);
     return 1;
   }
   std::printf("%-28s %7s %9s %9s %8s %8s %8s %6s %4s %8s %6s %6s\n",
@@ -190,6 +195,7 @@ int main(int argc, char* argv[])
     auto start = Clock::now();
     vtkNew<vtkFoldingTreeBuilder> builder;
     builder->SetInputData(mesh);
+    builder->SetRotationNodes(rotation);
     vtkNew<vtkFoldingTreeCompactWriter> writer;
     writer->SetInputConnection(builder->GetOutputPort(0));
     writer->WriteToOutputStringOn();
