@@ -1,4 +1,5 @@
 // FoldingTreeToMultiBlock: core FoldingTree -> vtkMultiBlockDataSet (vtkFoldingTreeIO.h).
+#include "vtkAxisGlyph.h"
 #include "vtkFoldingArrays.h"
 #include "vtkFoldingTreeIO.h"
 
@@ -220,34 +221,15 @@ void BuildPlaneGlyph(const std::vector<Vec3>& points,
   glyph->GetCellData()->SetScalars(label);
 }
 
-/// A rotation node's glyph: a line along its axis over the extent of the subtree's points
-/// (a 10% margin), labelled like the plane glyphs.
+/// A rotation node's glyph: a line along its axis over the extent of the subtree's points,
+/// labelled like the plane glyphs.
 void BuildAxisGlyph(const std::vector<Vec3>& points,
   const RotationAxis& axis,
   double diagonal,
   int nodeIndex,
   vtkPolyData* glyph)
 {
-  double lo = 0.0, hi = 0.0;
-  for (size_t i = 0; i < points.size(); ++i)
-  {
-    const double t = (points[i] - axis.origin).dot(axis.direction);
-    lo = i == 0 ? t : std::min(lo, t);
-    hi = i == 0 ? t : std::max(hi, t);
-  }
-  const double margin = 0.1 * (hi - lo) + 1e-3 * diagonal;
-  vtkNew<vtkPoints> ends;
-  ends->SetDataTypeToDouble();
-  for (double t : { lo - margin, hi + margin })
-  {
-    const Vec3 p = axis.origin + t * axis.direction;
-    ends->InsertNextPoint(p.x(), p.y(), p.z());
-  }
-  vtkNew<vtkCellArray> line;
-  const vtkIdType ids[2] = { 0, 1 };
-  line->InsertNextCell(2, ids);
-  glyph->SetPoints(ends);
-  glyph->SetLines(line);
+  SetAxisLineGlyph(axis, points, diagonal, glyph);
   vtkNew<vtkIntArray> label;
   label->SetName("FoldingLeafId");
   label->InsertNextValue(nodeIndex);

@@ -3,6 +3,7 @@
 #include "Core/MeshPreparation.h"
 #include "Core/RotationalSymmetry.h"
 #include "Core/SymmetryDetection.h"
+#include "vtkAxisGlyph.h"
 #include "vtkFoldingArrays.h"
 #include "vtkFoldingDebugTrace.h"
 #include "vtkFoldingMeshesParallel.h"
@@ -110,29 +111,13 @@ void BuildAxisGlyph(const foldingmeshes::PreparedMesh& mesh,
   const foldingmeshes::RotationAxis& axis,
   vtkPolyData* glyph)
 {
-  double lo = std::numeric_limits<double>::max(), hi = -lo;
-  for (int pass = 0; pass < 2 && lo > hi; ++pass)
+  std::vector<Vec3> points;
+  for (int pass = 0; pass < 2 && points.empty(); ++pass)
     for (int f = 0; f < mesh.NumberOfFaces(); ++f)
       if (pass == 1 || faces[f])
         for (int p : mesh.triangles[f])
-        {
-          const double t = (mesh.points[p] - axis.origin).dot(axis.direction);
-          lo = std::min(lo, t);
-          hi = std::max(hi, t);
-        }
-  const double margin = 0.1 * (hi - lo) + 1e-3 * mesh.diagonal;
-  vtkNew<vtkPoints> points;
-  points->SetDataTypeToDouble();
-  for (double t : { lo - margin, hi + margin })
-  {
-    const Vec3 p = axis.origin + t * axis.direction;
-    points->InsertNextPoint(p.x(), p.y(), p.z());
-  }
-  vtkNew<vtkCellArray> lines;
-  const vtkIdType ids[2] = { 0, 1 };
-  lines->InsertNextCell(2, ids);
-  glyph->SetPoints(points);
-  glyph->SetLines(lines);
+          points.push_back(mesh.points[p]);
+  foldingmeshes::SetAxisLineGlyph(axis, points, mesh.diagonal, glyph);
 }
 
 /// Names of the rotation's field arrays (output 0 and the axis glyph).

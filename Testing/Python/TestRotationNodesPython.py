@@ -21,14 +21,14 @@ import os
 import sys
 
 from vtkmodules.util.misc import calldata_type
-from vtkmodules.vtkCommonCore import VTK_STRING, vtkPoints
-from vtkmodules.vtkCommonDataModel import vtkCellArray, vtkPolyData
+from vtkmodules.vtkCommonCore import VTK_STRING
 from vtkmodules.vtkFiltersCore import vtkFeatureEdges
 from vtkmodules.vtkIOXML import vtkXMLMultiBlockDataWriter
 
 from foldingmeshes import (vtkExpatSafeXMLMultiBlockDataReader, vtkFoldingTreeBuilder,
                            vtkFoldingTreeCompactReader, vtkFoldingTreeCompactWriter,
                            vtkFoldingTreeUnfolder)
+from rotation_shapes import make_twisted_vase  # noqa: E402 (beside this script)
 
 failures = []
 ORDER = 6
@@ -38,35 +38,6 @@ def check(condition, message):
     print(("ok:   " if condition else "FAIL: ") + message)
     if not condition:
         failures.append(message)
-
-
-def twisted_vase(order, segments=48, rings=24):
-    """r = R(z) (1 + 0.25 cos(k theta + 0.9 z)) about the z axis, closed by two poles."""
-    points = vtkPoints()
-    polys = vtkCellArray()
-    for j in range(rings):
-        z = 2.0 * (j + 0.5) / rings
-        profile = 0.55 + 0.22 * math.sin(1.7 * z + 0.4) + 0.08 * z
-        for i in range(segments):
-            theta = 2.0 * math.pi * i / segments
-            r = profile * (1.0 + 0.25 * math.cos(order * theta + 0.9 * z))
-            points.InsertNextPoint(r * math.cos(theta), r * math.sin(theta), z)
-    bottom = points.InsertNextPoint(0, 0, 0)
-    top = points.InsertNextPoint(0, 0, 2)
-
-    def at(j, i):
-        return j * segments + i % segments
-    for j in range(rings - 1):
-        for i in range(segments):
-            polys.InsertNextCell(3, (at(j, i), at(j, i + 1), at(j + 1, i + 1)))
-            polys.InsertNextCell(3, (at(j, i), at(j + 1, i + 1), at(j + 1, i)))
-    for i in range(segments):
-        polys.InsertNextCell(3, (bottom, at(0, i + 1), at(0, i)))
-        polys.InsertNextCell(3, (top, at(rings - 1, i), at(rings - 1, i + 1)))
-    mesh = vtkPolyData()
-    mesh.SetPoints(points)
-    mesh.SetPolys(polys)
-    return mesh
 
 
 def field(data, name, component=0):
@@ -134,7 +105,7 @@ def expect_rejected(tree, damage, must_contain, label):
 
 def main(temp_dir):
     os.makedirs(temp_dir, exist_ok=True)
-    vase = twisted_vase(ORDER)
+    vase = make_twisted_vase(ORDER, segments_per_lobe=8, amplitude=0.25)
     builder = vtkFoldingTreeBuilder()
     builder.SetInputData(vase)
     check(not builder.GetRotationNodes() and builder.GetMaximumRotationOrder() == 64,

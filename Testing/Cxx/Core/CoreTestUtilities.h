@@ -229,6 +229,18 @@ inline double Hausdorff(const TriangleMesh& a, const UnfoldedMesh& b)
     OneSided(b.points, b.triangles, a.points, a.triangles));
 }
 
+/// Bounding-box diagonal of a mesh's points.
+inline double Diagonal(const TriangleMesh& m)
+{
+  Vec3 lo = m.points[0], hi = m.points[0];
+  for (const Vec3& p : m.points)
+  {
+    lo = lo.cwiseMin(p);
+    hi = hi.cwiseMax(p);
+  }
+  return (hi - lo).norm();
+}
+
 /// BuildFoldingTree with root epsilon `epsilon`; exits on failure.
 inline FoldingTree Fold(const TriangleMesh& m, double epsilon, FoldingTreeOptions o = {})
 {

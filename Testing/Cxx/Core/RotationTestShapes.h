@@ -42,6 +42,9 @@ struct VaseShape
   double amplitude = 0.0; ///< a (0: a surface of revolution)
   double twist = 0.9;     ///< b
   bool lumpy = false;     ///< harmonics 1, 2, 3 with different phases: no symmetry
+  /// Ring j's vertices start at angle staggered * fraction(0.37 j^2) of a segment (0: every
+  /// ring starts at angle 0, so the vertices form columns).
+  double staggered = 0.0;
 };
 
 /// The closed vase along z in [0, 2] with `rings` rings of `segments` vertices and two poles.
@@ -53,9 +56,10 @@ inline TriangleMesh MakeVase(const VaseShape& s, int segments, int rings)
   {
     const double z = height * (j + 0.5) / rings;
     const double profile = 0.55 + 0.22 * std::sin(1.7 * z + 0.4) + 0.08 * z;
+    const double phase = s.staggered * 2.0 * Pi / segments * std::fmod(0.37 * j * j, 1.0);
     for (int i = 0; i < segments; ++i)
     {
-      const double theta = 2.0 * Pi * i / segments;
+      const double theta = phase + 2.0 * Pi * i / segments;
       double f = 1.0 + s.amplitude * std::cos(s.order * theta + s.twist * z);
       if (s.lumpy)
         f = 1.0 + 0.35 * std::cos(theta + 0.3) + 0.25 * std::cos(2 * theta + 1.7 * z) +

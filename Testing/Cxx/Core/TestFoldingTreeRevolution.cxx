@@ -122,21 +122,10 @@ TriangleMesh MakeChessPiece(int n,
   return m;
 }
 
-double Diagonal(const TriangleMesh& m)
-{
-  Vec3 lo = m.points[0], hi = m.points[0];
-  for (const Vec3& p : m.points)
-  {
-    lo = lo.cwiseMin(p);
-    hi = hi.cwiseMax(p);
-  }
-  return (hi - lo).norm();
-}
-
 FoldingTree Fold(const TriangleMesh& m, bool rotationNodes = false)
 {
   FoldingTreeOptions o;
-  o.epsilon = 0.02 * Diagonal(m);
+  o.epsilon = 0.02 * coretest::Diagonal(m);
   o.rotationNodes = rotationNodes;
   FoldingTree tree;
   std::string error;

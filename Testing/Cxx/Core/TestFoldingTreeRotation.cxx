@@ -34,17 +34,6 @@ using namespace rotationtest;
 
 namespace
 {
-double Diagonal(const TriangleMesh& m)
-{
-  Vec3 lo = m.points[0], hi = m.points[0];
-  for (const Vec3& p : m.points)
-  {
-    lo = lo.cwiseMin(p);
-    hi = hi.cwiseMax(p);
-  }
-  return (hi - lo).norm();
-}
-
 TriangleMesh Moved(TriangleMesh m, const Eigen::Isometry3d& motion)
 {
   for (Vec3& p : m.points)
@@ -78,7 +67,7 @@ int CountRotationNodes(const FoldingTree& tree, int& first)
 /// and oriented, volume, Hausdorff within epsilon, the proved bound); returns the tree.
 FoldingTree FoldAndCheck(const char* name, const TriangleMesh& m, bool rotation = true)
 {
-  const double epsilon = 0.02 * Diagonal(m);
+  const double epsilon = 0.02 * coretest::Diagonal(m);
   FoldingTreeOptions o;
   o.rotationNodes = rotation;
   if (std::getenv("FOLDINGMESHES_TRACE")) // the builder's decisions, for a failing case
@@ -141,7 +130,7 @@ void TwistedVases(bool noisy)
     const Eigen::Isometry3d motion = Motion(100 + k);
     TriangleMesh m = Moved(MakeVase(s, segments, 24), motion);
     if (noisy)
-      AddNoise(m, 0.05 * 0.02 * Diagonal(m), 7 + k);
+      AddNoise(m, 0.05 * 0.02 * coretest::Diagonal(m), 7 + k);
     char name[64];
     std::snprintf(name, sizeof(name), "twisted vase k=%d%s", k, noisy ? " noisy" : "");
     const FoldingTree tree = FoldAndCheck(name, m);
@@ -171,41 +160,6 @@ void Revolution()
     "revolution: compression " << tree.Compression() << " below 95% (one 48th is 97.9%)");
 }
 
-/// A surface of revolution whose 24 rings of `segments` vertices are each turned by their own
-/// phase, so no column of vertices exists: no sector of whole faces has seams that pair.
-TriangleMesh StaggeredRevolution(int segments)
-{
-  TriangleMesh m;
-  const int rings = 24;
-  for (int j = 0; j < rings; ++j)
-  {
-    const double z = 2.0 * (j + 0.5) / rings;
-    const double r = 0.55 + 0.22 * std::sin(1.7 * z + 0.4) + 0.08 * z;
-    const double phase = 2.0 * Pi / segments * std::fmod(0.37 * j * j, 1.0);
-    for (int i = 0; i < segments; ++i)
-    {
-      const double theta = phase + 2.0 * Pi * i / segments;
-      m.points.emplace_back(r * std::cos(theta), r * std::sin(theta), z);
-    }
-  }
-  const int bottom = static_cast<int>(m.points.size());
-  m.points.emplace_back(0, 0, 0);
-  m.points.emplace_back(0, 0, 2.0);
-  auto id = [&](int j, int i) { return j * segments + (i % segments); };
-  for (int j = 0; j + 1 < rings; ++j)
-    for (int i = 0; i < segments; ++i)
-    {
-      m.triangles.push_back({ id(j, i), id(j, i + 1), id(j + 1, i + 1) });
-      m.triangles.push_back({ id(j, i), id(j + 1, i + 1), id(j + 1, i) });
-    }
-  for (int i = 0; i < segments; ++i)
-  {
-    m.triangles.push_back({ bottom, id(0, i + 1), id(0, i) });
-    m.triangles.push_back({ bottom + 1, id(rings - 1, i), id(rings - 1, i + 1) });
-  }
-  return m;
-}
-
 /// Fine rings (40 vertices): whole faces, seams turned onto the half-planes. Coarse rings (12
 /// vertices): turning the seams would flip faces, so the faces are cut along the half-planes.
 void Staggered()
@@ -213,7 +167,9 @@ void Staggered()
   for (int segments : { 40, 12 })
   {
     const Eigen::Isometry3d motion = Motion(77 + segments);
-    const TriangleMesh m = Moved(StaggeredRevolution(segments), motion);
+    VaseShape s; // a surface of revolution whose rings are turned against each other
+    s.staggered = 1.0;
+    const TriangleMesh m = Moved(MakeVase(s, segments, 24), motion);
     char name[64];
     std::snprintf(name, sizeof(name), "staggered revolution %d", segments);
     const FoldingTree tree = FoldAndCheck(name, m);
@@ -221,7 +177,7 @@ void Staggered()
     const int rotations = CountRotationNodes(tree, first);
     EXPECT(rotations == 1 && first == 0,
       name << ": " << rotations << " rotation nodes, the first at " << first);
-    const FoldingTree planes = coretest::Fold(m, 0.02 * Diagonal(m));
+    const FoldingTree planes = coretest::Fold(m, 0.02 * coretest::Diagonal(m));
     EXPECT(tree.StoredFaces() < planes.StoredFaces(),
       name << ": " << tree.StoredFaces() << " faces stored, " << planes.StoredFaces()
            << " with planes alone");
