@@ -2,7 +2,7 @@
 """Fold a mesh into a folding tree, save it, read it back and unfold it (paper, section 4).
 
     PYTHONPATH=<build>/lib/python3/dist-packages xvfb-run -a /usr/bin/python3 \
-        fold_unfold.py MESH [--outdir DIR] [--tolerance F] [--min-area-fraction F]
+        fold_unfold.py MESH [--outdir DIR] [--tolerance F] [--min-area-fraction F] [--rotation]
 
 Writes, in DIR: STEM_tree.vtm (the folding tree; its pieces go to STEM_tree/),
 STEM_segmentation.vtp (the mesh with cell arrays FoldingLeafId, FoldingDepth, FoldingRole),
@@ -47,6 +47,9 @@ def main():
                         help="root epsilon as a fraction of the diagonal (default 0.02)")
     parser.add_argument("--min-area-fraction", type=float, default=0.05,
                         help="leaf when a region's area is below this fraction (default 0.05)")
+    parser.add_argument("--rotation", action="store_true",
+                        help="rotation nodes: keep one sector of a rotational symmetry "
+                             "(vtkFoldingTreeBuilder.RotationNodes, default off)")
     args = parser.parse_args()
     os.makedirs(args.outdir, exist_ok=True)
     stem = os.path.join(args.outdir, os.path.splitext(os.path.basename(args.mesh))[0])
@@ -57,6 +60,7 @@ def main():
     builder.SetInputConnection(reader.GetOutputPort())
     builder.SetTolerance(args.tolerance)
     builder.SetMinimumAreaFraction(args.min_area_fraction)
+    builder.SetRotationNodes(args.rotation)
     if not builder.GetExecutive().Update():
         print("folding failed on %s" % args.mesh, file=sys.stderr)
         return 2
