@@ -2,6 +2,7 @@
 
 #include "Core/FoldingSegmentation.h"
 #include "Core/FoldingTreeBuilder.h"
+#include "vtkCellLocatorFaceQuery.h"
 #include "vtkFoldingArrays.h"
 #include "vtkFoldingDebugTrace.h"
 #include "vtkFoldingMeshesParallel.h"
@@ -9,6 +10,7 @@
 #include "vtkParameterChecks.h"
 #include "vtkTriangleMeshAdapter.h"
 
+#include <vtkAbstractCellLocator.h>
 #include <vtkCellData.h>
 #include <vtkInformation.h>
 #include <vtkInformationVector.h>
@@ -19,6 +21,7 @@
 #include <vtkObjectFactory.h>
 #include <vtkPointData.h>
 #include <vtkPolyData.h>
+#include <vtkStringArray.h>
 
 #include <algorithm>
 #include <cmath>
@@ -26,6 +29,7 @@
 
 vtkStandardNewMacro(vtkFoldingTreeBuilder);
 vtkCxxSetObjectMacro(vtkFoldingTreeBuilder, Controller, vtkMultiProcessController);
+vtkCxxSetObjectMacro(vtkFoldingTreeBuilder, Locator, vtkAbstractCellLocator);
 
 namespace
 {
@@ -46,6 +50,8 @@ foldingmeshes::FoldingTreeOptions FoldingTreeOptionsOf(vtkFoldingTreeBuilder* se
   options.requireMeaningfulSymmetry = self->GetRequireMeaningfulSymmetry();
   options.requireTightSymmetry = self->GetRequireTightSymmetry();
   options.verifyBound = self->GetVerifyBound();
+  if (self->GetLocator()) // else the core's face tree: the same distances, 1.4-2x faster builds
+    options.verificationQueries = foldingmeshes::CellLocatorFaceQueryFactory(self->GetLocator());
   options.keepSide = self->GetKeepSide() == vtkFoldingTreeBuilder::FEWER_FACES
     ? foldingmeshes::KeepSide::FewerFaces
     : foldingmeshes::KeepSide::MoreFaces;
@@ -114,6 +120,7 @@ vtkFoldingTreeBuilder::vtkFoldingTreeBuilder()
 vtkFoldingTreeBuilder::~vtkFoldingTreeBuilder()
 {
   this->SetController(nullptr);
+  this->SetLocator(nullptr);
 }
 
 //------------------------------------------------------------------------------
@@ -232,6 +239,15 @@ int vtkFoldingTreeBuilder::RequestWholeData(vtkInformation*,
   }
   for (const std::string& note : notes)
     vtkWarningMacro("Folding tree: " << note << ".");
+  if (vtkPolyData* info = vtkPolyData::SafeDownCast(tree->GetBlock(1)))
+  {
+    vtkNew<vtkStringArray> locator;
+    locator->SetName("VerificationLocator");
+    locator->InsertNextValue(!this->VerifyBound ? ""
+        : this->Locator                         ? this->Locator->GetClassName()
+                                                : "FaceTree");
+    info->GetFieldData()->AddArray(locator);
+  }
   this->OriginalFaces = folding.numberOfOriginalFaces;
   this->StoredFaces = folding.StoredFaces();
   this->Compression = folding.Compression();
@@ -249,6 +265,7 @@ void vtkFoldingTreeBuilder::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "Controller: " << this->Controller << "\n";
+  os << indent << "Locator: " << this->Locator << "\n";
   os << indent << "Tolerance: " << this->Tolerance << "\n";
   os << indent
      << "ToleranceMode: " << (this->ToleranceMode == ABSOLUTE ? "Absolute" : "RelativeToDiagonal")

@@ -520,7 +520,8 @@ bool BuildFoldingTree(const TriangleMesh& input,
     std::vector<char> pinned(input.triangles.size(), 0);
     for (int round = 0;; ++round)
     {
-      const UnfoldedBoundCheck check = VerifyUnfoldedBound(input, tree);
+      const UnfoldedBoundCheck check =
+        VerifyUnfoldedBound(input, tree, options.verificationQueries);
       if (options.trace)
         options.trace(FormatTrace("[verify] round %d: proved bound %.6g of epsilon %.6g, %s",
           round,

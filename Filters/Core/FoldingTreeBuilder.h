@@ -24,6 +24,7 @@
 #ifndef foldingmeshes_FoldingTreeBuilder_h
 #define foldingmeshes_FoldingTreeBuilder_h
 
+#include "ClosestFaceQuery.h"
 #include "FoldingTree.h"
 #include "RotationalSymmetry.h"
 #include "SymmetryDetection.h"
@@ -146,6 +147,10 @@ struct FoldingTreeOptions
    * proof per round (docs/benchmarks.md); the progress callback sees the first build only.
    */
   bool verifyBound = true;
+  /// The closest-face queries of verifyBound's distances (e.g. a VTK cell locator: the filter
+  /// passes vtkStaticCellLocator by default); empty: the core's FaceTree. Same distances
+  /// either way (exact point-to-triangle distances; TestCellLocatorDistances).
+  ClosestFaceQueryFactory verificationQueries;
   /**
    * How a vertex of a kept face lying on the discarded side reaches the fold plane. By
    * default it is projected orthogonally (the paper's choice), which can move it off the

@@ -38,7 +38,9 @@ std::vector<int> GrowByRings(const TriangleMesh& mesh, std::vector<char> mark, i
 }
 }
 
-UnfoldedBoundCheck VerifyUnfoldedBound(const TriangleMesh& input, const FoldingTree& tree)
+UnfoldedBoundCheck VerifyUnfoldedBound(const TriangleMesh& input,
+  const FoldingTree& tree,
+  const ClosestFaceQueryFactory& queries)
 {
   UnfoldedBoundCheck check;
   UnfoldedMesh unfolded;
@@ -57,7 +59,7 @@ UnfoldedBoundCheck VerifyUnfoldedBound(const TriangleMesh& input, const FoldingT
   out.triangles = unfolded.triangles;
   const double epsilon = tree.rootEpsilon;
   const double tolerance = 1e-7 * tree.diagonal;
-  const SurfaceDistanceQuery toInput(input), toOut(out);
+  const SurfaceDistanceQuery toInput(input, queries), toOut(out, queries);
   std::vector<int> outBeyond, inputBeyond;
   const HausdorffBounds there = DirectedHausdorffBounds(
     out, toInput, tolerance, DefaultMaximumEvaluations, epsilon, &outBeyond);

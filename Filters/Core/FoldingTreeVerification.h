@@ -3,6 +3,7 @@
 #ifndef foldingmeshes_FoldingTreeVerification_h
 #define foldingmeshes_FoldingTreeVerification_h
 
+#include "ClosestFaceQuery.h"
 #include "FoldingTree.h"
 #include "TriangleMesh.h"
 
@@ -26,8 +27,12 @@ struct UnfoldedBoundCheck
  * between the result and `input` over every point of both surfaces (DirectedHausdorffBounds
  * both ways, deciding epsilon to 1e-7 of the diagonal, as `foldingmeshes roundtrip` does).
  * Where a point is not proved within epsilon, lists the input faces to pin there.
+ * `queries` (optional): the closest-face queries of the distances (e.g. a VTK cell locator,
+ * FoldingTreeOptions::verificationQueries); without it the core's FaceTree.
  */
-UnfoldedBoundCheck VerifyUnfoldedBound(const TriangleMesh& input, const FoldingTree& tree);
+UnfoldedBoundCheck VerifyUnfoldedBound(const TriangleMesh& input,
+  const FoldingTree& tree,
+  const ClosestFaceQueryFactory& queries = nullptr);
 }
 
 #endif
