@@ -1,0 +1,473 @@
+// The geometry of a rotation node's sector (FoldingTreeRotationSector.h): the cut, its seams
+// made to meet, faces cut along the half-planes, and the errors of the turned copies. The rule
+// that uses them is in FoldingTreeRotation.cxx.
+#include "FoldingTreeRotationSector.h"
+
+#include "PointBuckets.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <map>
+
+namespace foldingmeshes
+{
+namespace treebuilder
+{
+namespace sector
+{
+namespace
+{
+/// Seam vertices this many times offAxis (1e-9 of the diagonal) from the axis are moved onto
+/// it; farther ones are seam vertices like any other (the stitcher joins the copies' poles).
+constexpr double OnAxisOfOffAxis = 1000.0;
+/// k sectors may hold at most this many times the region's faces (faces cut along the
+/// half-planes add pieces).
+constexpr double MaximumFaceGrowth = 2.0;
+/// k sectors' area may differ from the region's by this share of one sector.
+constexpr double SectorAreaTolerance = 0.25;
+/// Bins per sector of the histogram that finds phi0.
+constexpr int AngleBins = 2048;
+
+/// a in (-pi, pi].
+double Wrapped(double a)
+{
+  const double r = Modulo(a + EIGEN_PI, TwoPi);
+  return r - EIGEN_PI;
+}
+
+/// The angle modulo the sector width that most vertices (off the axis) share: the mean of
+/// the angles in the fullest bin (the lowest bin on ties).
+double SectorStart(const AxisFrame& frame, const WorkMesh& w, double width, double offAxis)
+{
+  std::vector<int> count(AngleBins, 0);
+  std::vector<double> sum(AngleBins, 0.0);
+  for (const Vec3& p : w.points)
+  {
+    if (frame.Radius(p) <= offAxis)
+      continue;
+    const double a = Modulo(frame.Angle(p), width);
+    const int bin = std::min(AngleBins - 1, static_cast<int>(a / width * AngleBins));
+    ++count[bin];
+    sum[bin] += a;
+  }
+  const int best = static_cast<int>(std::max_element(count.begin(), count.end()) - count.begin());
+  return count[best] > 0 ? sum[best] / count[best] : 0.0;
+}
+
+/// Edges of the region its faces use once within the sector but other faces use too.
+std::vector<char> SeamVertices(const EdgeTable& edges, const std::vector<char>& keep, int np)
+{
+  std::vector<char> seam(np, 0);
+  for (const auto& e : edges)
+  {
+    int kept = 0;
+    for (int f : e.second)
+      kept += keep[f];
+    if (kept == 1 && e.second.size() >= 2)
+      seam[e.first.first] = seam[e.first.second] = 1;
+  }
+  return seam;
+}
+
+/**
+ * w with every face that crosses the half-plane at angle `angle` about the axis cut along it:
+ * a new point where an edge crosses (shared by the faces of that edge), the face cut into two
+ * or three triangles of the same orientation and input face. A new point takes the input id,
+ * flags and budget of the edge's nearer end (its tear and plane flags: those both ends have;
+ * the smaller budget). Crossings within `tiny` of an end use the end.
+ */
+WorkMesh SplitAtHalfPlane(const AxisFrame& frame, const WorkMesh& w, double angle, double tiny)
+{
+  const Vec3 normal = -std::sin(angle) * frame.U + std::cos(angle) * frame.V;
+  const Vec3 along = std::cos(angle) * frame.U + std::sin(angle) * frame.V;
+  const Vec3& o = frame.Axis.origin;
+  std::vector<double> s(w.points.size());
+  for (int v = 0; v < w.NumberOfPoints(); ++v)
+  {
+    s[v] = normal.dot(w.points[v] - o);
+    if (std::abs(s[v]) <= tiny)
+      s[v] = 0.0;
+  }
+  WorkMesh out = w;
+  out.triangles.clear();
+  out.faceOrig.clear();
+  std::map<std::pair<int, int>, int> crossing;
+  auto cut = [&](int a, int b) -> int
+  {
+    const auto key = std::make_pair(std::min(a, b), std::max(a, b));
+    auto it = crossing.find(key);
+    if (it != crossing.end())
+      return it->second;
+    const double t = s[a] / (s[a] - s[b]);
+    const int nearer = t < 0.5 ? a : b;
+    out.AppendPoint(w, nearer);
+    const int id = out.NumberOfPoints() - 1;
+    out.points[id] = w.points[a] + t * (w.points[b] - w.points[a]);
+    out.tear[id] = w.tear[a] & w.tear[b];
+    out.onPlane[id] = w.onPlane[a] & w.onPlane[b];
+    out.projected[id] = 0;
+    out.mirrorFlags[id].clear();
+    out.budget[id] = std::min(w.budget[a], w.budget[b]);
+    crossing.emplace(key, id);
+    return id;
+  };
+  for (int f = 0; f < w.NumberOfFaces(); ++f)
+  {
+    const Triangle& t = w.triangles[f];
+    auto keep = [&](const Triangle& piece)
+    {
+      out.triangles.push_back(piece);
+      out.faceOrig.push_back(w.faceOrig[f]);
+    };
+    // The rotation of t whose first vertex is alone on its side (or on the plane).
+    int lone = -1;
+    for (int i = 0; i < 3 && lone < 0; ++i)
+    {
+      const double a = s[t[i]], b = s[t[(i + 1) % 3]], c = s[t[(i + 2) % 3]];
+      if ((a > 0 && b < 0 && c < 0) || (a < 0 && b > 0 && c > 0) ||
+        (a == 0 && ((b > 0 && c < 0) || (b < 0 && c > 0))))
+        lone = i;
+    }
+    if (lone < 0)
+    {
+      keep(t);
+      continue;
+    }
+    const int a = t[lone], b = t[(lone + 1) % 3], c = t[(lone + 2) % 3];
+    // Only where the edges cross the half-plane, not the opposite one (decided per edge, so
+    // the two faces of an edge agree).
+    auto onHalfPlane = [&](int p, int q)
+    {
+      const double u = s[p] / (s[p] - s[q]);
+      return along.dot(w.points[p] + u * (w.points[q] - w.points[p]) - o) > 0.0;
+    };
+    if (s[a] == 0.0 ? !onHalfPlane(b, c) : (!onHalfPlane(a, b) || !onHalfPlane(c, a)))
+    {
+      keep(t);
+      continue;
+    }
+    if (s[a] == 0.0) // through vertex a: two triangles
+    {
+      const int bc = cut(b, c);
+      keep({ a, b, bc });
+      keep({ a, bc, c });
+      continue;
+    }
+    const int ab = cut(a, b), ca = cut(c, a);
+    keep({ a, ab, ca });
+    keep({ ab, b, c });
+    keep({ ab, c, ca });
+  }
+  return out;
+}
+
+}
+
+/// a in [0, m).
+double Modulo(double a, double m)
+{
+  const double r = std::fmod(a, m);
+  return r < 0.0 ? r + m : r;
+}
+
+const char* const NotCoveredOnce = "k sectors do not cover the area once";
+const char* const NoSector = "no face or every face in the sector";
+const char* const TooManyPieces = "k sectors would hold more than twice the region's faces";
+
+/// SplitAtHalfPlane at both half-planes of the sector [start, start + width).
+WorkMesh SplitAtHalfPlanes(const AxisFrame& frame,
+  const WorkMesh& w,
+  double start,
+  double width,
+  double tiny)
+{
+  return SplitAtHalfPlane(frame, SplitAtHalfPlane(frame, w, start, tiny), start + width, tiny);
+}
+
+/// Why order k has no sector here (nullptr: it has, in `cut`).
+const char* CutSector(const AxisFrame& frame,
+  const WorkMesh& w,
+  const EdgeTable& edges,
+  int k,
+  double snap,
+  double offAxis,
+  SectorCut& cut,
+  double start,
+  int regionFaces)
+{
+  const double width = TwoPi / k;
+  cut = SectorCut();
+  cut.order = k;
+  cut.start = std::isnan(start) ? SectorStart(frame, w, width, offAxis) : start;
+  const int nf = w.NumberOfFaces(), np = w.NumberOfPoints();
+  cut.keep.assign(nf, 0);
+  int kept = 0;
+  for (int f = 0; f < nf; ++f)
+  {
+    const Triangle& t = w.triangles[f];
+    const Vec3 c = (w.points[t[0]] + w.points[t[1]] + w.points[t[2]]) / 3.0;
+    kept += cut.keep[f] = Modulo(frame.Angle(c) - cut.start, TwoPi) < width;
+  }
+  if (kept == 0 || kept == nf)
+    return NoSector;
+  // Faces cut along the half-planes multiply: k sectors may hold at most twice as many faces
+  // than the region had (the unfolded mesh stays about as fine as the input).
+  if (k * static_cast<double>(kept) > MaximumFaceGrowth * (regionFaces < 0 ? nf : regionFaces))
+    return TooManyPieces;
+  // k sectors cover the region once: their area within a quarter sector of the region's (a
+  // sector wider than 360/k, whose copies overlap, or narrower, fails; the seams' pairing
+  // tolerance alone would let a 16-gon pass as 17 sectors).
+  double regionArea = 0.0, sectorArea = 0.0;
+  for (int f = 0; f < nf; ++f)
+  {
+    const double a = TriangleArea(w, w.triangles[f]);
+    regionArea += a;
+    sectorArea += cut.keep[f] ? a : 0.0;
+  }
+  if (std::abs(k * sectorArea - regionArea) > SectorAreaTolerance * regionArea / k)
+    return NotCoveredOnce;
+  cut.seam = SeamVertices(edges, cut.keep, np);
+  cut.points = w.points;
+  cut.move.assign(np, 0.0);
+  const AxisTurn forward(frame.Axis, width), back(frame.Axis, -width);
+  // Sides: 0 near phi0, 1 near phi0 + width; axis vertices go onto the axis.
+  std::vector<int> side0, side1;
+  std::vector<double> offset(np, 0.0);
+  bool planar = true;
+  PointBuckets bucket0, bucket1;
+  bucket0.cell = bucket1.cell = snap;
+  for (int v = 0; v < np; ++v)
+  {
+    if (!cut.seam[v])
+      continue;
+    const double radius = frame.Radius(w.points[v]);
+    if (radius <= OnAxisOfOffAxis * offAxis) // on the axis (a pole): every turn keeps it
+    {
+      cut.points[v] = frame.OntoAxis(w.points[v]);
+      cut.move[v] = radius;
+      continue;
+    }
+    const double angle = frame.Angle(w.points[v]);
+    const double a0 = Wrapped(angle - cut.start), a1 = Wrapped(angle - cut.start - width);
+    const bool first = std::abs(a0) <= std::abs(a1);
+    offset[v] = first ? a0 : a1;
+    cut.halfPlaneMove =
+      std::max(cut.halfPlaneMove, 2.0 * radius * std::abs(std::sin(0.5 * offset[v])));
+    planar = cut.halfPlaneMove <= snap;
+    (first ? side0 : side1).push_back(v);
+    (first ? bucket0 : bucket1).Add(w.points[v], v);
+  }
+  // Mutual nearest pairs: a (side 0) turned forward meets b (side 1) and b turned back a.
+  std::vector<std::pair<int, int>> pairs;
+  bool paired = side0.size() == side1.size();
+  for (size_t i = 0; paired && i < side0.size(); ++i)
+  {
+    const int a = side0[i];
+    const int b = bucket1.Nearest(w.points, forward.Point(w.points[a]), snap);
+    paired = b >= 0 && bucket0.Nearest(w.points, back.Point(w.points[b]), snap) == a;
+    pairs.push_back({ a, b });
+  }
+  if (!paired) // each seam onto its half-plane; the unfolder's zipper joins them
+    for (const std::vector<int>* side : { &side0, &side1 })
+      for (int v : *side)
+      {
+        cut.points[v] = AxisTurn(frame.Axis, -offset[v]).Point(w.points[v]);
+        cut.move[v] = (cut.points[v] - w.points[v]).norm();
+      }
+  for (size_t i = 0; paired && i < pairs.size(); ++i)
+  {
+    const auto& pr = pairs[i];
+    Vec3 pa = w.points[pr.first], pb = back.Point(w.points[pr.second]);
+    if (planar) // both onto the half-plane at phi0 (turned about the axis, radius kept)
+    {
+      pa = AxisTurn(frame.Axis, -offset[pr.first]).Point(pa);
+      pb = AxisTurn(frame.Axis, -offset[pr.second]).Point(pb);
+    }
+    const Vec3 t = 0.5 * (pa + pb);
+    cut.points[pr.first] = t;
+    cut.points[pr.second] = forward.Point(t);
+    cut.move[pr.first] = (t - w.points[pr.first]).norm();
+    cut.move[pr.second] = (cut.points[pr.second] - w.points[pr.second]).norm();
+  }
+  // Turning a seam vertex onto its half-plane keeps it on a surface of revolution however
+  // far it moves (ChargeTurns measures where it lands); it must not flip a face.
+  for (int f = 0; f < nf; ++f)
+  {
+    const Triangle& t = w.triangles[f];
+    if (!cut.keep[f] ||
+      std::max({ cut.move[t[0]], cut.move[t[1]], cut.move[t[2]] }) <= offAxis) // rounding
+      continue;
+    const Vec3 before = (w.points[t[1]] - w.points[t[0]]).cross(w.points[t[2]] - w.points[t[0]]);
+    const Vec3 after =
+      (cut.points[t[1]] - cut.points[t[0]]).cross(cut.points[t[2]] - cut.points[t[0]]);
+    if (before.norm() <= offAxis * offAxis) // degenerate already (e.g. in the input)
+      continue;
+    if (!(before.dot(after) > 0.0))
+      return "moving the seams onto the half-planes would flip or collapse a face";
+  }
+  return nullptr;
+}
+
+/// The error check (FoldingTreeRotation.cxx, step 4); fills the per-point charge (kept points) and
+/// returns whether every distance is within `limit` and every charge within its point's budget
+/// (`worst`: the largest distance measured).
+bool ChargeTurns(const AxisFrame& frame,
+  const WorkMesh& w,
+  const SurfaceDistanceQuery& toRegion,
+  const SectorCut& cut,
+  double limit,
+  std::vector<double>& charge,
+  double& worst)
+{
+  worst = 0.0;
+  const int np = w.NumberOfPoints(), k = cut.order;
+  const double width = TwoPi / k;
+  std::vector<char> used(np, 0);
+  for (int f = 0; f < w.NumberOfFaces(); ++f)
+    if (cut.keep[f])
+      for (int v : w.triangles[f])
+        used[v] = 1;
+  std::vector<int> keptPoints;
+  for (int v = 0; v < np; ++v)
+    if (used[v])
+      keptPoints.push_back(v);
+  // Kept points, turned j times, against the region.
+  charge.assign(np, 0.0);
+  for (int j = 0; j < k; ++j) // j = 0: the sector itself, its seams moved
+  {
+    const AxisTurn turn(frame.Axis, j * width);
+    std::vector<Vec3> turned;
+    turned.reserve(keptPoints.size());
+    for (int v : keptPoints)
+      turned.push_back(turn.Point(cut.points[v]));
+    const std::vector<double> d = toRegion.Distances(turned);
+    for (size_t i = 0; i < keptPoints.size(); ++i)
+      charge[keptPoints[i]] = std::max(charge[keptPoints[i]], d[i]);
+    worst = std::max(worst, *std::max_element(d.begin(), d.end()));
+    if (worst > limit)
+      return false; // a wrong order fails at its first bad turn (cost: the turns so far)
+  }
+  // Kept faces with a moved seam vertex: their centroids and edge midpoints, where a face
+  // stretched onto a half-plane can leave the surface between its corners (fold's
+  // SpendProjectionBudget measures its projected faces the same way).
+  {
+    std::vector<Vec3> samples;
+    std::vector<int> sampleFace;
+    for (int f = 0; f < w.NumberOfFaces(); ++f)
+    {
+      const Triangle& t = w.triangles[f];
+      if (!cut.keep[f] || !(cut.move[t[0]] > 0.0 || cut.move[t[1]] > 0.0 || cut.move[t[2]] > 0.0))
+        continue;
+      const Vec3 &a = cut.points[t[0]], &b = cut.points[t[1]], &c = cut.points[t[2]];
+      for (const Vec3& x :
+        { Vec3((a + b + c) / 3.0), Vec3(0.5 * (a + b)), Vec3(0.5 * (b + c)), Vec3(0.5 * (c + a)) })
+      {
+        samples.push_back(x);
+        sampleFace.push_back(f);
+      }
+    }
+    const std::vector<double> d = toRegion.Distances(samples);
+    for (size_t i = 0; i < samples.size(); ++i)
+    {
+      worst = std::max(worst, d[i]);
+      for (int v : w.triangles[sampleFace[i]])
+        charge[v] = std::max(charge[v], d[i]);
+    }
+    if (worst > limit)
+      return false;
+  }
+  // Removed points, turned back into the sector, against the sector.
+  TriangleMesh sector;
+  sector.points = cut.points;
+  for (int f = 0; f < w.NumberOfFaces(); ++f)
+    if (cut.keep[f])
+      sector.triangles.push_back(w.triangles[f]);
+  const SurfaceDistanceQuery toSector(sector);
+  std::vector<Vec3> back;
+  for (int v = 0; v < np; ++v)
+    if (!used[v])
+    {
+      const double angle = Modulo(frame.Angle(w.points[v]) - cut.start, TwoPi);
+      const int j = std::min(k - 1, static_cast<int>(angle / width));
+      back.push_back(AxisTurn(frame.Axis, -j * width).Point(w.points[v]));
+    }
+  double removed = 0.0;
+  for (double d : toSector.Distances(back))
+    removed = std::max(removed, d);
+  worst = std::max(worst, removed);
+  if (removed > limit)
+    return false;
+  for (int v : keptPoints)
+  {
+    charge[v] = std::max(charge[v], removed);
+    if (charge[v] > limit || charge[v] > w.budget[v])
+      return false;
+  }
+  return true;
+}
+
+/**
+ * The faces of `region` (per face of w) whose vertices, turned by 360/k and by floor(k/2)
+ * 360/k (the detector's test turns; ChargeTurns then checks every turn), lie within eps of a
+ * face of the region: the part of a rotational region that the turns map onto itself (the
+ * detector's region is ragged where it meets asymmetric parts). Three passes of removal at
+ * most.
+ */
+std::vector<char> InvariantRegion(const WorkMesh& w,
+  std::vector<char> region,
+  const RotationAxis& axis,
+  int k,
+  double eps)
+{
+  TriangleMesh surface;
+  surface.points = w.points;
+  surface.triangles = w.triangles;
+  const SurfaceDistanceQuery toMesh(surface);
+  for (int pass = 0; pass < 3; ++pass)
+  {
+    std::vector<int> points;
+    std::vector<char> inRegion(w.points.size(), 0);
+    for (int f = 0; f < w.NumberOfFaces(); ++f)
+      if (region[f])
+        for (int v : w.triangles[f])
+          inRegion[v] = 1;
+    for (int v = 0; v < w.NumberOfPoints(); ++v)
+      if (inRegion[v])
+        points.push_back(v);
+    std::vector<char> bad(w.points.size(), 0);
+    std::vector<int> turns = { 1 }; // the detector's two test turns (ChargeTurns checks all)
+    if (k / 2 > 1)
+      turns.push_back(k / 2);
+    for (int j : turns)
+    {
+      const AxisTurn turn(axis, 2.0 * EIGEN_PI * j / k);
+      std::vector<Vec3> turned;
+      turned.reserve(points.size());
+      for (int v : points)
+        turned.push_back(turn.Point(w.points[v]));
+      std::vector<double> distance;
+      std::vector<int> closest;
+      toMesh.Closest(turned, distance, closest);
+      for (size_t i = 0; i < points.size(); ++i)
+        bad[points[i]] =
+          bad[points[i]] || distance[i] > eps || closest[i] < 0 || !region[closest[i]];
+    }
+    bool dropped = false;
+    for (int f = 0; f < w.NumberOfFaces(); ++f)
+    {
+      const Triangle& t = w.triangles[f];
+      if (region[f] && (bad[t[0]] || bad[t[1]] || bad[t[2]]))
+      {
+        region[f] = 0;
+        dropped = true;
+      }
+    }
+    if (!dropped)
+      break;
+  }
+  return region;
+}
+}
+}
+}

@@ -1,0 +1,121 @@
+// The geometry of a rotation node's sector (internal to the builder; the rule that uses it is
+// in FoldingTreeRotation.cxx): cylindrical coordinates about the axis, the sector of whole
+// faces with its seams made to meet (or its faces cut along the half-planes), and the errors
+// its turned copies add.
+#ifndef foldingmeshes_FoldingTreeRotationSector_h
+#define foldingmeshes_FoldingTreeRotationSector_h
+
+#include "EdgeTable.h"
+#include "FoldingWorkMesh.h"
+#include "RotationAxis.h"
+#include "SurfaceDistance.h"
+
+#include <Eigen/Core>
+
+#include <cmath>
+#include <limits>
+#include <vector>
+
+namespace foldingmeshes
+{
+namespace treebuilder
+{
+namespace sector
+{
+constexpr double TwoPi = 2.0 * EIGEN_PI;
+
+/// Cylindrical coordinates about an axis.
+struct AxisFrame
+{
+  explicit AxisFrame(const RotationAxis& axis)
+    : Axis(axis)
+  {
+    const Vec3& a = axis.direction;
+    const Vec3 seed = std::abs(a.x()) < 0.9 ? Vec3::UnitX() : Vec3::UnitY();
+    this->U = (seed - seed.dot(a) * a).normalized();
+    this->V = a.cross(this->U);
+  }
+  double Angle(const Vec3& p) const
+  {
+    const Vec3 r = p - this->Axis.origin;
+    return std::atan2(r.dot(this->V), r.dot(this->U));
+  }
+  double Radius(const Vec3& p) const
+  {
+    const Vec3 r = p - this->Axis.origin;
+    return (r - r.dot(this->Axis.direction) * this->Axis.direction).norm();
+  }
+  Vec3 OntoAxis(const Vec3& p) const
+  {
+    return this->Axis.origin +
+      (p - this->Axis.origin).dot(this->Axis.direction) * this->Axis.direction;
+  }
+  RotationAxis Axis;
+  Vec3 U, V;
+};
+
+/// One order's sector with its seams made to meet (FoldingTreeRotation.cxx, step 3).
+struct SectorCut
+{
+  int order = 0;
+  double start = 0.0;
+  std::vector<char> keep;     ///< per face
+  std::vector<Vec3> points;   ///< the region's points with the seam vertices moved
+  std::vector<double> move;   ///< per point: how far it moved
+  std::vector<char> seam;     ///< per point: on a seam (or the axis, on a seam)
+  double halfPlaneMove = 0.0; ///< the farthest a seam vertex lies from its half-plane
+};
+
+/// CutSector's reasons that the planning compares (the others are only reported).
+extern const char* const NotCoveredOnce;
+extern const char* const NoSector;
+
+/// a in [0, m).
+double Modulo(double a, double m);
+
+/// SplitAtHalfPlane at both half-planes of the sector [start, start + width).
+WorkMesh SplitAtHalfPlanes(const AxisFrame& frame,
+  const WorkMesh& w,
+  double start,
+  double width,
+  double tiny);
+
+/// Why order k has no sector here (nullptr: it has, in `cut`).
+const char* CutSector(const AxisFrame& frame,
+  const WorkMesh& w,
+  const EdgeTable& edges,
+  int k,
+  double snap,
+  double offAxis,
+  SectorCut& cut,
+  double start = std::numeric_limits<double>::quiet_NaN(),
+  int regionFaces = -1);
+
+/// The error check (FoldingTreeRotation.cxx, step 4); fills the per-point charge (kept points) and
+/// returns whether every distance is within `limit` and every charge within its point's budget
+/// (`worst`: the largest distance measured).
+bool ChargeTurns(const AxisFrame& frame,
+  const WorkMesh& w,
+  const SurfaceDistanceQuery& toRegion,
+  const SectorCut& cut,
+  double limit,
+  std::vector<double>& charge,
+  double& worst);
+
+/**
+ * The faces of `region` (per face of w) whose vertices, turned by 360/k and by floor(k/2)
+ * 360/k (the detector's test turns; ChargeTurns then checks every turn), lie within eps of a
+ * face of the region: the part of a rotational region that the turns map onto itself (the
+ * detector's region is ragged where it meets asymmetric parts). Three passes of removal at
+ * most.
+ */
+std::vector<char> InvariantRegion(const WorkMesh& w,
+  std::vector<char> region,
+  const RotationAxis& axis,
+  int k,
+  double eps);
+}
+}
+}
+
+#endif
