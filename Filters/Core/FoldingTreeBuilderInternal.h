@@ -121,6 +121,8 @@ private:
    * provenSide: the side of `plane` (+1 along its normal, -1 against it) whose faces the
    * face proof covered - the side the fold will keep, judged on S as it was then (a later
    * change of S could tip a near tie; the fold keeps this side) - or 0 without errorBudget.
+   * wholeParts: what is left of S is its largest connected region and its whole parts
+   * (LargestRegionAndWholeParts), else its largest connected region.
    */
   std::vector<char> Trim(const WorkMesh& w,
     const PreparedMesh& pm,
@@ -128,6 +130,7 @@ private:
     std::vector<char> S,
     const Plane& plane,
     double eps,
+    bool wholeParts,
     int& provenSide) const;
 
   /// Detection's plane and its runners-up tried by ChooseSymmetricRegion.
@@ -157,6 +160,7 @@ private:
     const FaceTree& region,
     std::vector<char> S,
     double eps,
+    bool wholeParts,
     Plane& plane,
     int& provenSide) const;
 

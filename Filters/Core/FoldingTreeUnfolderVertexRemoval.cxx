@@ -31,6 +31,10 @@ constexpr double FacingCosine = 1e-3;
 constexpr double FlatEarArea = 1e-9;
 /// Weight of the new diagonal's length in an ear's cost (a tie-breaker: the shorter one).
 constexpr double EarLengthWeight = 1e-3;
+/// Vertices with more star faces stay: the ear clipping measures every ear against every old
+/// face at each step (cubic in the ring), and a hub that large is the input's own (the centre
+/// of a 1200-segment cylinder cap took 20 s), not a point the fold made.
+constexpr size_t MaximumRemovedValence = 64;
 
 /// 2D orientation (twice the signed area) of (a, b, c).
 double Orientation(const Eigen::Vector2d& a, const Eigen::Vector2d& b, const Eigen::Vector2d& c)
@@ -359,8 +363,8 @@ bool RingRetriangulation::ClipEars(std::vector<Triangle>& created, const char*& 
                      DistanceToTriangles(0.5 * (x[a] + x[c]), x, this->Old)) +
       lengthWeight * (x[a] - x[c]).norm();
     if (this->Rules.shapeWeight > 0.0)
-      value += this->Rules.shapeWeight * spoke *
-        (1.0 - SmallestAngle(x[a], x[b], x[c]) / (M_PI / 3.0));
+      value +=
+        this->Rules.shapeWeight * spoke * (1.0 - SmallestAngle(x[a], x[b], x[c]) / (M_PI / 3.0));
     return value;
   };
   if (!ClipCheapestEars(poly, allowed, deviation, cut))
@@ -468,13 +472,11 @@ double RingRetriangulation::Deviation(const std::vector<Triangle>& created, doub
   for (size_t k = 0; k < created.size() && moved <= limit; ++k)
   {
     const Triangle& t = created[k];
-    moved =
-      std::max(moved, DistanceToTriangles((x[t[0]] + x[t[1]] + x[t[2]]) / 3.0, x, this->Old));
+    moved = std::max(moved, DistanceToTriangles((x[t[0]] + x[t[1]] + x[t[2]]) / 3.0, x, this->Old));
     for (int j = 0; j < 3; ++j)
-      if (this->Diagonals.count(
-            { std::min(t[j], t[(j + 1) % 3]), std::max(t[j], t[(j + 1) % 3]) }))
-        moved = std::max(
-          moved, DistanceToTriangles(0.5 * (x[t[j]] + x[t[(j + 1) % 3]]), x, this->Old));
+      if (this->Diagonals.count({ std::min(t[j], t[(j + 1) % 3]), std::max(t[j], t[(j + 1) % 3]) }))
+        moved =
+          std::max(moved, DistanceToTriangles(0.5 * (x[t[j]] + x[t[(j + 1) % 3]]), x, this->Old));
   }
   return moved;
 }
@@ -494,9 +496,11 @@ bool VertexRemover::Try(int v,
   for (int f : this->VertexFaces[v])
     if (this->FaceAlive[f])
       star.push_back(f);
+  why = "too many faces around it";
+  if (star.size() > MaximumRemovedValence)
+    return false;
   why = "open ring";
-  if (star.size() < 3 ||
-    !ClosedRing(this->Mesh.triangles, star, v, removal.ring, removal.ringFace))
+  if (star.size() < 3 || !ClosedRing(this->Mesh.triangles, star, v, removal.ring, removal.ringFace))
     return false;
   RingRetriangulation candidate(
     this->Mesh, this->VertexFaces, this->FaceAlive, v, star, removal.ring, rules);

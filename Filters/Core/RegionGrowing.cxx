@@ -92,6 +92,38 @@ std::vector<char> LargestConnectedRegion(const PreparedMesh& mesh, const std::ve
   return region;
 }
 
+std::vector<char> LargestRegionAndWholeParts(const PreparedMesh& mesh,
+  const std::vector<char>& mask)
+{
+  std::vector<char> region = LargestConnectedRegion(mesh, mask);
+  const int nf = mesh.NumberOfFaces();
+  std::vector<int> labels, parts;
+  const int count = LabelConnectedRegions(mesh, mask, labels);
+  if (count < 2 || LabelConnectedRegions(mesh, std::vector<char>(nf, 1), parts) < 2)
+    return region;
+  // A region of the mask is a whole part when its part has no other face.
+  std::vector<int> regionFaces(count, 0), partFaces(nf, 0), partOfRegion(count, -1);
+  for (int f = 0; f < nf; ++f)
+  {
+    ++partFaces[parts[f]];
+    if (labels[f] >= 0)
+    {
+      ++regionFaces[labels[f]];
+      partOfRegion[labels[f]] = parts[f];
+    }
+  }
+  for (int f = 0; f < nf; ++f)
+    if (labels[f] >= 0 && regionFaces[labels[f]] == partFaces[partOfRegion[labels[f]]])
+      region[f] = 1;
+  return region;
+}
+
+bool HasSeveralParts(const PreparedMesh& mesh)
+{
+  std::vector<int> parts;
+  return LabelConnectedRegions(mesh, std::vector<char>(mesh.NumberOfFaces(), 1), parts) > 1;
+}
+
 double RegionArea(const PreparedMesh& mesh, const std::vector<char>& mask)
 {
   double area = 0.0;

@@ -27,6 +27,21 @@ int LabelConnectedRegions(const PreparedMesh& mesh,
 /// The connected region of `mask` with the largest area (ties: lowest face id).
 std::vector<char> LargestConnectedRegion(const PreparedMesh& mesh, const std::vector<char>& mask);
 
+/**
+ * LargestConnectedRegion of `mask`, plus every other connected region of `mask` that is a whole
+ * part of the mesh (all the faces of one connected component, the same edges and proximity
+ * links). Meshes assembled from separate parts (a chair's legs, a plane's wings) have symmetry
+ * between parts: a leg maps onto the other leg, not onto its own neighbours, so no single
+ * connected region holds it. A whole part within epsilon of its mirror image is no accidental
+ * match; a piece of a part is left out as in the paper. On a mesh of one part: exactly
+ * LargestConnectedRegion.
+ */
+std::vector<char> LargestRegionAndWholeParts(const PreparedMesh& mesh,
+  const std::vector<char>& mask);
+
+/// Whether the faces of `mesh` (edges and proximity links) form more than one part.
+bool HasSeveralParts(const PreparedMesh& mesh);
+
 /// Total area of the faces selected by mask.
 double RegionArea(const PreparedMesh& mesh, const std::vector<char>& mask);
 

@@ -6,7 +6,10 @@
 # diagonal); figure_deformed the one where the builder's verification must pin faces and build
 # again (its first tree unfolds 0.0216 of the diagonal away at epsilon 0.02). All 21 meshes;
 # rack_deformed is closed but comes back with open seams (27 edges, docs/limitations.md), so
-# only its bound is asserted.
+# only its bound is asserted. The exactly symmetric chairs, rack and biplane, whose symmetry maps
+# separate parts onto each other (a leg onto the other leg), must fold to at most 60% of their
+# faces (before whole parts joined the symmetric region, 2026-12-05, the chairs and the biplane
+# did not fold at all).
 #   cmake -DGENERATOR=<GenerateArtistMeshes> -DFOLDINGMESHES=<foldingmeshes> -DWORK_DIR=<dir>
 #         -P RunArtistRoundtrips.cmake
 file(REMOVE_RECURSE "${WORK_DIR}")
@@ -27,15 +30,31 @@ foreach (mesh IN ITEMS chair_dense_exact chair_dense_moved chair_dense_deformed 
   string(JSON bound ERROR_VARIABLE jsonError GET "${json}" hausdorffBoundFraction)
   string(JSON openBefore ERROR_VARIABLE jsonError GET "${json}" openEdgesBefore)
   string(JSON openAfter ERROR_VARIABLE jsonError GET "${json}" openEdgesAfter)
+  string(JSON stored ERROR_VARIABLE jsonError GET "${json}" storedFaces)
+  string(JSON faces ERROR_VARIABLE jsonError GET "${json}" originalFaces)
+  set(folds ON)
+  if (mesh MATCHES "^(chair|chair_dense|rack|biplane)_exact$")
+    if (NOT stored MATCHES "^[0-9]+$" OR NOT faces MATCHES "^[0-9]+$")
+      set(folds OFF)
+    else ()
+      math(EXPR limit "${faces} * 6 / 10")
+      if (stored GREATER limit)
+        set(folds OFF)
+      endif ()
+    endif ()
+  endif ()
   if (NOT within STREQUAL "ON")
     message("FAIL ${mesh}: not within the proved bound (${within}, bound ${bound} of the diagonal, exit ${rc}) ${err}")
+    math(EXPR failures "${failures} + 1")
+  elseif (NOT folds)
+    message("FAIL ${mesh}: symmetric parts, but ${stored} of ${faces} faces stored (at most 60% expected)")
     math(EXPR failures "${failures} + 1")
   elseif (openBefore STREQUAL "0" AND NOT openAfter STREQUAL "0" AND
       NOT mesh STREQUAL "rack_deformed")
     message("FAIL ${mesh}: closed input, ${openAfter} open edges after the round trip")
     math(EXPR failures "${failures} + 1")
   else ()
-    message("ok   ${mesh}: bound ${bound} of the diagonal, open edges ${openBefore} -> ${openAfter}")
+    message("ok   ${mesh}: ${stored} of ${faces} faces stored, bound ${bound} of the diagonal, open edges ${openBefore} -> ${openAfter}")
   endif ()
 endforeach ()
 if (failures GREATER 0)

@@ -5,6 +5,8 @@
 //   (only where the linked vertices touch selected faces);
 // - LargestConnectedRegion: by area, not by face count; ties go to the lowest face id; empty
 //   mask -> empty region; RegionArea.
+// - LargestRegionAndWholeParts: the largest region plus the regions that are whole parts (not
+//   pieces of a part); on one part exactly LargestConnectedRegion; HasSeveralParts.
 #include "CoreTestUtilities.h"
 #include "RegionGrowing.h"
 
@@ -14,8 +16,10 @@
 #include <random>
 
 using foldingmeshes::FacesWithVerticesWithin;
+using foldingmeshes::HasSeveralParts;
 using foldingmeshes::LabelConnectedRegions;
 using foldingmeshes::LargestConnectedRegion;
+using foldingmeshes::LargestRegionAndWholeParts;
 using foldingmeshes::PreparedMesh;
 using foldingmeshes::RegionArea;
 using foldingmeshes::TriangleMesh;
@@ -199,6 +203,39 @@ int main()
     foldingmeshes::LinkNearbyParts(mf, 0.01);
     EXPECT(mf.proximityLinks.empty() && LabelConnectedRegions(mf, All(mf), labels) == 2,
       "strips 0.5 apart were linked");
+  }
+
+  // ---- Whole parts join the largest region; pieces of parts do not ----
+  {
+    TriangleMesh soup;
+    AddStrip(soup, 0, 0, 5, 1, 1);  // part A: faces 0..9, area 5
+    AddStrip(soup, 0, 10, 2, 1, 1); // part B: faces 10..13, area 2
+    AddStrip(soup, 0, 20, 2, 1, 1); // part C: faces 14..17, area 2
+    const PreparedMesh m = coretest::Prepare(soup);
+    EXPECT(HasSeveralParts(m), "three strips: HasSeveralParts false");
+    std::vector<char> mask = All(m);
+    mask[9] = 0;  // A: faces 0..7 the largest region, face 8 cut off (the strip's dual is a path)
+    mask[17] = 0; // C: a piece of its part
+    const auto region = LargestRegionAndWholeParts(m, mask);
+    for (int f = 0; f < m.NumberOfFaces(); ++f)
+    {
+      const bool expected = f < 8 || (f >= 10 && f < 14);
+      EXPECT(bool(region[f]) == expected,
+        "largest + whole parts: face " << f << " " << int(region[f]) << ", expected " << expected);
+    }
+    // One part: exactly the largest connected region, the other pieces left out.
+    TriangleMesh strip;
+    AddStrip(strip, 0, 0, 8, 1, 1);
+    const PreparedMesh one = coretest::Prepare(strip);
+    EXPECT(!HasSeveralParts(one), "one strip: HasSeveralParts true");
+    std::vector<char> gap = All(one);
+    gap[6] = gap[7] = 0;
+    EXPECT(LargestRegionAndWholeParts(one, gap) == LargestConnectedRegion(one, gap),
+      "one part: not the largest connected region");
+    // Every region a whole part: all of them.
+    EXPECT(LargestRegionAndWholeParts(m, All(m)) == All(m), "all whole parts: not all faces");
+    EXPECT(RegionArea(m, LargestRegionAndWholeParts(m, std::vector<char>(18, 0))) == 0.0,
+      "empty mask gave a non-empty region");
   }
   return coretest::Finish("TestRegionGrowing");
 }
