@@ -32,7 +32,7 @@ namespace
 {
 /// On a mesh of several parts, whole parts join S when its connected region covers less than
 /// this share of the node's area (see ChooseSymmetricRegion).
-constexpr double WholePartsBelowShare = 0.5;
+constexpr double WholePartsBelowShare = 0.75;
 }
 
 bool Builder::PrepareSubset(const WorkMesh& /*w*/,
@@ -129,8 +129,8 @@ std::vector<char> Builder::ChooseSymmetricRegion(const WorkMesh& w,
     best[f] = result.faceLabel[f] == 2;
   plane = result.plane;
   // The detector's region is one connected region. On a mesh of several parts where it covers
-  // less than half the node, parts that map onto other parts join it (and the regions of the
-  // other candidate planes and the trimmed regions keep their whole parts too). Where the
+  // less than three quarters of the node, parts that map onto other parts join it (and the regions
+  // of the other candidate planes and the trimmed regions keep their whole parts too). Where the
   // connected region already covers most of the node the paper's region is kept: measured on
   // the artist-like corpus, whole parts there lead the greedy folds to worse trees (the rack
   // 87.6% -> 79.1%, the slatted bench 93.4% -> 66.2%).
