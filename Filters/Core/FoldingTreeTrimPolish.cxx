@@ -150,8 +150,22 @@ std::vector<char> Builder::ChooseSymmetricRegion(const WorkMesh& w,
     for (int f = 0; f < nf; ++f)
       best[f] = best[f] || parts[f];
   }
+  const double untrimmedArea = RegionArea(pm, best);
   best = this->TrimAndPolish(w, pm, region, std::move(best), eps, wholeParts, plane, provenSide);
   double bestArea = RegionArea(pm, best);
+  auto trace = [&](const Plane& p, double before, double after)
+  {
+    if (this->Options.trace)
+      this->Options.trace(FormatTrace("[region] n=(%.3f %.3f %.3f): S %.3f of the area, "
+                                      "trimmed %.3f%s",
+        p.normal.x(),
+        p.normal.y(),
+        p.normal.z(),
+        before / pm.totalArea,
+        after / pm.totalArea,
+        wholeParts ? " (with whole parts)" : ""));
+  };
+  trace(plane, untrimmedArea, bestArea);
   if (!this->Options.trimToMirrorConsistent)
   {
     for (int f = 0; f < nf; ++f)
@@ -172,13 +186,18 @@ std::vector<char> Builder::ChooseSymmetricRegion(const WorkMesh& w,
     std::vector<char> S =
       wholeParts ? LargestRegionAndWholeParts(pm, within) : LargestConnectedRegion(pm, within);
     // Trimming only removes faces: a region no larger than the best S cannot win.
-    if (!(RegionArea(pm, S) > bestArea))
+    const double candidateArea = RegionArea(pm, S);
+    if (!(candidateArea > bestArea))
+    {
+      trace(candidate, candidateArea, -0.0);
       continue;
+    }
     if (this->IsAncestorPlane(candidate, pathFolds, RegionCentroid(pm, S), eps))
       continue;
     int side = 0;
     S = this->TrimAndPolish(w, pm, region, std::move(S), eps, wholeParts, candidate, side);
     const double area = RegionArea(pm, S);
+    trace(candidate, candidateArea, area);
     if (area > bestArea)
     {
       best = std::move(S);

@@ -74,7 +74,8 @@ public:
     const char*& why) const;
   void Apply(const RingRemoval& removal);
 
-  /// Whether v is interior: its star's ring edges form one closed loop (Try's first check).
+  /// Whether v is interior: its star's ring edges form one closed loop (Try's first check
+  /// after the limit on the faces around v).
   bool Interior(int v) const;
 
   bool Removed(int v) const { return this->IsRemoved[v] != 0; }

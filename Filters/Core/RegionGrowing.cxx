@@ -95,26 +95,39 @@ std::vector<char> LargestConnectedRegion(const PreparedMesh& mesh, const std::ve
 std::vector<char> LargestRegionAndWholeParts(const PreparedMesh& mesh,
   const std::vector<char>& mask)
 {
-  std::vector<char> region = LargestConnectedRegion(mesh, mask);
   const int nf = mesh.NumberOfFaces();
   std::vector<int> labels, parts;
   const int count = LabelConnectedRegions(mesh, mask, labels);
   if (count < 2 || LabelConnectedRegions(mesh, std::vector<char>(nf, 1), parts) < 2)
-    return region;
-  // A region of the mask is a whole part when its part has no other face.
-  std::vector<int> regionFaces(count, 0), partFaces(nf, 0), partOfRegion(count, -1);
+    return LargestConnectedRegion(mesh, mask);
+  // A part is whole in the mask when every face of it is in the mask, its degenerate faces
+  // apart (they have no distance of their own: they go with their part).
+  std::vector<char> whole(nf, 1), touched(nf, 0);
   for (int f = 0; f < nf; ++f)
   {
-    ++partFaces[parts[f]];
+    if (mask[f])
+      touched[parts[f]] = 1;
+    else if (!mesh.faceDegenerate[f])
+      whole[parts[f]] = 0;
+  }
+  // The largest region that is not made of whole parts only (a whole part larger than it must
+  // not take its place), then every whole part.
+  std::vector<double> area(count, 0.0);
+  std::vector<char> onlyWhole(count, 1);
+  for (int f = 0; f < nf; ++f)
     if (labels[f] >= 0)
     {
-      ++regionFaces[labels[f]];
-      partOfRegion[labels[f]] = parts[f];
+      area[labels[f]] += mesh.faceAreas[f];
+      if (!whole[parts[f]])
+        onlyWhole[labels[f]] = 0;
     }
-  }
+  int best = -1;
+  for (int r = 0; r < count; ++r)
+    if (!onlyWhole[r] && (best < 0 || area[r] > area[best]))
+      best = r;
+  std::vector<char> region(nf, 0);
   for (int f = 0; f < nf; ++f)
-    if (labels[f] >= 0 && regionFaces[labels[f]] == partFaces[partOfRegion[labels[f]]])
-      region[f] = 1;
+    region[f] = (best >= 0 && labels[f] == best) || (whole[parts[f]] && touched[parts[f]]);
   return region;
 }
 

@@ -232,6 +232,23 @@ int main()
     gap[6] = gap[7] = 0;
     EXPECT(LargestRegionAndWholeParts(one, gap) == LargestConnectedRegion(one, gap),
       "one part: not the largest connected region");
+    // A whole part larger than the largest region that is not one does not take its place.
+    TriangleMesh three;
+    AddStrip(three, 0, 0, 3, 1, 1);  // part A: faces 0..5, area 3
+    AddStrip(three, 0, 10, 5, 1, 1); // part B: faces 6..15, area 5
+    AddStrip(three, 0, 20, 2, 1, 1); // part C: faces 16..19, area 2
+    const PreparedMesh t = coretest::Prepare(three);
+    std::vector<char> partly = All(t);
+    partly[5] = 0;  // A: faces 0..3 (a piece of A), area 2; face 4 cut off
+    partly[19] = 0; // C: pieces {16, 17} and {18}
+    const auto kept = LargestRegionAndWholeParts(t, partly);
+    for (int f = 0; f < t.NumberOfFaces(); ++f)
+    {
+      const bool expected = f < 4 || (f >= 6 && f < 16);
+      EXPECT(bool(kept[f]) == expected,
+        "whole part larger than the region: face " << f << " " << int(kept[f]) << ", expected "
+                                                   << expected);
+    }
     // Every region a whole part: all of them.
     EXPECT(LargestRegionAndWholeParts(m, All(m)) == All(m), "all whole parts: not all faces");
     EXPECT(RegionArea(m, LargestRegionAndWholeParts(m, std::vector<char>(18, 0))) == 0.0,
