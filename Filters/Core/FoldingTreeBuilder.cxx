@@ -254,6 +254,8 @@ int Builder::Build(WorkMesh w, int parent, int depth, double eps, int folds, uin
   so.sampledSearchAboveFaces = O.sampledSearchAboveFaces;
   so.refineSampledFinalists = false;
   so.distancesUpTo3Sigma = false;
+  // ChooseSymmetricRegion tries the runner-up planes with whole parts on regions of several parts.
+  so.scoreEveryFinalist = HasSeveralParts(pm);
   const double base = this->Fraction(this->DoneFaces);
   const double span = 0.5 * this->Fraction(nf);
   so.progress = [&](double p) { return this->Report(base + p * span); };

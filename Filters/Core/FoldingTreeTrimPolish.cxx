@@ -172,7 +172,10 @@ std::vector<char> Builder::ChooseSymmetricRegion(const WorkMesh& w,
       best[f] = best[f] && !this->IsPinned(w, f);
     return best;
   }
-  for (size_t k = 1; k < result.finalists.size() && k < RegionCandidatePlanes; ++k)
+  // The finalists scored only for the whole parts (SymmetryOptions::scoreEveryFinalist) are
+  // tried only with them: without, the search's own ranking stands.
+  const size_t candidates = wholeParts ? result.finalists.size() : result.rankedFinalists;
+  for (size_t k = 1; k < candidates && k < RegionCandidatePlanes; ++k)
   {
     Plane candidate = result.finalists[k];
     if (PlaneAngleDegrees(candidate, result.plane) < 2.0 &&

@@ -135,6 +135,7 @@ SymmetryResult DetectOnSampledCopy(const PreparedMesh& mesh,
   const auto t1 = Clock::now();
   Refiner refiner(mesh, meshFaces, options);
   std::vector<Run> runs;
+  bool settled = false;
   for (size_t k = 0; k < coarse.finalists.size(); ++k)
   {
     Run run;
@@ -154,7 +155,8 @@ SymmetryResult DetectOnSampledCopy(const PreparedMesh& mesh,
     }
     // The finalists come best first: a tight result for the best one settles it (the
     // others could only win with a larger tight region, which the sampled copy ranked lower).
-    if (k == 0 && tight)
+    settled = settled || (k == 0 && tight);
+    if (settled && !options.scoreEveryFinalist)
       break;
   }
   result.fineSeconds = Seconds(t1);
@@ -162,11 +164,12 @@ SymmetryResult DetectOnSampledCopy(const PreparedMesh& mesh,
   if (runs.empty())
     return DetectOn(mesh, meshFaces, options);
   int bestRun = 0;
-  for (size_t k = 1; k < runs.size(); ++k)
+  for (size_t k = 1; k < runs.size() && !settled; ++k)
     if (Better(runs[k], runs[bestRun], mesh.totalArea, options))
       bestRun = static_cast<int>(k);
   for (size_t k = 0; k < runs.size(); ++k)
     result.finalists.push_back(runs[k].plane);
+  result.rankedFinalists = settled ? 1 : runs.size();
   std::swap(result.finalists[0], result.finalists[bestRun]);
   Finish(mesh, options, refiner, runs[bestRun], result);
   return result;
@@ -431,9 +434,11 @@ SymmetryResult PlaneSearch::Detect()
       finished.push_back(k);
   std::stable_sort(finished.begin(),
     finished.end(),
-    [&](size_t a, size_t b) { return Better(runs[a], runs[b], this->Mesh.totalArea, this->Options); });
+    [&](size_t a, size_t b)
+    { return Better(runs[a], runs[b], this->Mesh.totalArea, this->Options); });
   for (size_t k : finished)
     result.finalists.push_back(runs[k].plane);
+  result.rankedFinalists = result.finalists.size();
   Finish(this->Mesh, this->Options, this->Refine, runs[finished[0]], result);
   return result;
 }

@@ -3,8 +3,8 @@
 #define foldingmeshes_SymmetryDetection_h
 
 #include "FaceTree.h"
-#include "Trace.h"
 #include "Plane.h"
+#include "Trace.h"
 
 #include <functional>
 #include <vector>
@@ -37,6 +37,11 @@ struct SymmetryOptions
   /// the full mesh before they are scored there; false: they are only scored (for callers
   /// that refine the plane on its region themselves, like the folding-tree builder).
   bool refineSampledFinalists = true;
+  /// With the sampled search, every finalist of the copy is scored on the full mesh and
+  /// returned in SymmetryResult::finalists, also when the first one settles the search (it
+  /// stays the result): the folding-tree builder tries them as other planes for regions of
+  /// several parts, where the connected regions that rank them can miss symmetry between parts.
+  bool scoreEveryFinalist = false;
   /// SymmetryResult::distance up to 3 sigma (9 epsilon: the detector's SymmetryDistance
   /// output), one more distance pass at the end; false: only those below epsilon are finite
   /// (the folding-tree builder needs no more). The plane and the regions are the same.
@@ -65,6 +70,9 @@ struct SymmetryResult
   std::vector<double> costHistory; ///< sum of rho per iteration, coarse then fine
   int startsTried = 0;
   std::vector<Plane> finalists; ///< planes of the runs iterated to convergence, best first
+  /// How many of the finalists the search itself scored: fewer than finalists.size() when
+  /// the first settled it and the others were only scored for scoreEveryFinalist.
+  size_t rankedFinalists = 0;
   double coarseSeconds = 0.0, fineSeconds = 0.0, candidateSeconds = 0.0;
 };
 
