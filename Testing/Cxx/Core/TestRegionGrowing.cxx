@@ -12,6 +12,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iostream>
 #include <limits>
 #include <random>
 
@@ -47,6 +48,30 @@ void AddStrip(TriangleMesh& m, double x0, double y0, int n, double w, double h)
 std::vector<char> All(const PreparedMesh& m)
 {
   return std::vector<char>(m.NumberOfFaces(), 1);
+}
+
+/// Three separate strips of a, b and c squares (2a, 2b and 2c faces, in that order).
+PreparedMesh ThreeStrips(int a, int b, int c)
+{
+  TriangleMesh soup;
+  AddStrip(soup, 0, 0, a, 1, 1);
+  AddStrip(soup, 0, 10, b, 1, 1);
+  AddStrip(soup, 0, 20, c, 1, 1);
+  return coretest::Prepare(soup);
+}
+
+/// Counts the faces where region[f] differs from expected(f) (each reported).
+template <typename Expected>
+int Mismatches(const std::vector<char>& region, Expected expected, const char* what)
+{
+  int wrong = 0;
+  for (size_t f = 0; f < region.size(); ++f)
+    if (bool(region[f]) != expected(static_cast<int>(f)))
+    {
+      std::cerr << what << ": face " << f << " " << int(region[f]) << "\n";
+      ++wrong;
+    }
+  return wrong;
 }
 }
 
@@ -207,22 +232,17 @@ int main()
 
   // ---- Whole parts join the largest region; pieces of parts do not ----
   {
-    TriangleMesh soup;
-    AddStrip(soup, 0, 0, 5, 1, 1);  // part A: faces 0..9, area 5
-    AddStrip(soup, 0, 10, 2, 1, 1); // part B: faces 10..13, area 2
-    AddStrip(soup, 0, 20, 2, 1, 1); // part C: faces 14..17, area 2
-    const PreparedMesh m = coretest::Prepare(soup);
+    // Parts A: faces 0..9 (area 5), B: 10..13 (2), C: 14..17 (2).
+    const PreparedMesh m = ThreeStrips(5, 2, 2);
     EXPECT(HasSeveralParts(m), "three strips: HasSeveralParts false");
     std::vector<char> mask = All(m);
     mask[9] = 0;  // A: faces 0..7 the largest region, face 8 cut off (the strip's dual is a path)
     mask[17] = 0; // C: a piece of its part
-    const auto region = LargestRegionAndWholeParts(m, mask);
-    for (int f = 0; f < m.NumberOfFaces(); ++f)
-    {
-      const bool expected = f < 8 || (f >= 10 && f < 14);
-      EXPECT(bool(region[f]) == expected,
-        "largest + whole parts: face " << f << " " << int(region[f]) << ", expected " << expected);
-    }
+    EXPECT(Mismatches(
+             LargestRegionAndWholeParts(m, mask),
+             [](int f) { return f < 8 || (f >= 10 && f < 14); },
+             "largest + whole parts") == 0,
+      "largest region + whole parts: wrong faces");
     // One part: exactly the largest connected region, the other pieces left out.
     TriangleMesh strip;
     AddStrip(strip, 0, 0, 8, 1, 1);
@@ -233,22 +253,16 @@ int main()
     EXPECT(LargestRegionAndWholeParts(one, gap) == LargestConnectedRegion(one, gap),
       "one part: not the largest connected region");
     // A whole part larger than the largest region that is not one does not take its place.
-    TriangleMesh three;
-    AddStrip(three, 0, 0, 3, 1, 1);  // part A: faces 0..5, area 3
-    AddStrip(three, 0, 10, 5, 1, 1); // part B: faces 6..15, area 5
-    AddStrip(three, 0, 20, 2, 1, 1); // part C: faces 16..19, area 2
-    const PreparedMesh t = coretest::Prepare(three);
+    // Parts A: faces 0..5 (area 3), B: 6..15 (5), C: 16..19 (2).
+    const PreparedMesh t = ThreeStrips(3, 5, 2);
     std::vector<char> partly = All(t);
     partly[5] = 0;  // A: faces 0..3 (a piece of A), area 2; face 4 cut off
     partly[19] = 0; // C: pieces {16, 17} and {18}
-    const auto kept = LargestRegionAndWholeParts(t, partly);
-    for (int f = 0; f < t.NumberOfFaces(); ++f)
-    {
-      const bool expected = f < 4 || (f >= 6 && f < 16);
-      EXPECT(bool(kept[f]) == expected,
-        "whole part larger than the region: face " << f << " " << int(kept[f]) << ", expected "
-                                                   << expected);
-    }
+    EXPECT(Mismatches(
+             LargestRegionAndWholeParts(t, partly),
+             [](int f) { return f < 4 || (f >= 6 && f < 16); },
+             "whole part larger than the region") == 0,
+      "a whole part larger than the connected region took its place");
     // Every region a whole part: all of them.
     EXPECT(LargestRegionAndWholeParts(m, All(m)) == All(m), "all whole parts: not all faces");
     EXPECT(RegionArea(m, LargestRegionAndWholeParts(m, std::vector<char>(18, 0))) == 0.0,
