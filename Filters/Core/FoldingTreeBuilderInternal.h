@@ -135,6 +135,9 @@ private:
 
   /// Detection's plane and its runners-up tried by ChooseSymmetricRegion.
   static constexpr size_t RegionCandidatePlanes = 3;
+  /// ... and on regions of several parts, with whole parts, the detector's extra finalists
+  /// (SymmetryOptions::scoreEveryFinalist) too.
+  static constexpr size_t MultiPartCandidatePlanes = 3;
 
   /**
    * S and its plane for a node: the detected region, trimmed, the plane polished on it and

@@ -174,8 +174,10 @@ std::vector<char> Builder::ChooseSymmetricRegion(const WorkMesh& w,
   }
   // The finalists scored only for the whole parts (SymmetryOptions::scoreEveryFinalist) are
   // tried only with them: without, the search's own ranking stands.
-  const size_t candidates = wholeParts ? result.finalists.size() : result.rankedFinalists;
-  for (size_t k = 1; k < candidates && k < RegionCandidatePlanes; ++k)
+  const size_t candidates = wholeParts
+    ? std::min(result.finalists.size(), RegionCandidatePlanes + MultiPartCandidatePlanes)
+    : std::min(result.rankedFinalists, RegionCandidatePlanes);
+  for (size_t k = 1; k < candidates; ++k)
   {
     Plane candidate = result.finalists[k];
     if (PlaneAngleDegrees(candidate, result.plane) < 2.0 &&

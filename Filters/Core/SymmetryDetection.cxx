@@ -36,6 +36,12 @@ constexpr int PolishIterations = 10;
 /// a probe whose support after its first two iterations is smaller is not continued
 /// (the same results on all 29 shared meshes, about 10% less time).
 constexpr double PromisingFraction = 0.5;
+/// Probes finished and ranked for the result ...
+constexpr size_t RankedFinalists = 3;
+/// ... and, with SymmetryOptions::scoreEveryFinalist, this many more finished and returned
+/// after them, unranked (a chair's seat is as symmetric diagonally as left to right: the
+/// plane the whole parts need can rank fourth).
+constexpr size_t ExtraFinalists = 3;
 
 /// A probe whose tight region misses less than this fraction of the area ends the probing.
 constexpr double GlobalSymmetryMargin = 0.02;
@@ -164,12 +170,12 @@ SymmetryResult DetectOnSampledCopy(const PreparedMesh& mesh,
   if (runs.empty())
     return DetectOn(mesh, meshFaces, options);
   int bestRun = 0;
-  for (size_t k = 1; k < runs.size() && !settled; ++k)
+  for (size_t k = 1; k < runs.size() && k < coarse.rankedFinalists && !settled; ++k)
     if (Better(runs[k], runs[bestRun], mesh.totalArea, options))
       bestRun = static_cast<int>(k);
   for (size_t k = 0; k < runs.size(); ++k)
     result.finalists.push_back(runs[k].plane);
-  result.rankedFinalists = settled ? 1 : runs.size();
+  result.rankedFinalists = settled ? 1 : std::min(runs.size(), coarse.rankedFinalists);
   std::swap(result.finalists[0], result.finalists[bestRun]);
   Finish(mesh, options, refiner, runs[bestRun], result);
   return result;
@@ -243,9 +249,13 @@ private:
   void AddCandidateStarts(std::vector<Plane>& distinct) const;
   /// Finishes the best three distinct probes that could still win, in parallel; their runs
   /// go to `finished`.
-  void FinishBestProbes(std::vector<size_t>& probes, std::vector<size_t>& finished);
+  void FinishBestProbes(std::vector<size_t>& probes,
+    std::vector<size_t>& finished,
+    std::vector<size_t>& extra);
   /// The robust search after the paper start; false when aborted.
-  bool RobustSearch(SymmetryResult& result, std::vector<size_t>& finished);
+  bool RobustSearch(SymmetryResult& result,
+    std::vector<size_t>& finished,
+    std::vector<size_t>& extra);
 
   const PreparedMesh& Mesh;
   const PreparedMesh& Target;
@@ -335,7 +345,9 @@ void PlaneSearch::AddCandidateStarts(std::vector<Plane>& distinct) const
       distinct.push_back(p);
 }
 
-void PlaneSearch::FinishBestProbes(std::vector<size_t>& probes, std::vector<size_t>& chosen)
+void PlaneSearch::FinishBestProbes(std::vector<size_t>& probes,
+  std::vector<size_t>& chosen,
+  std::vector<size_t>& extra)
 {
   const SymmetryOptions& options = this->Options;
   std::vector<Run>& runs = this->Runs;
@@ -347,19 +359,25 @@ void PlaneSearch::FinishBestProbes(std::vector<size_t>& probes, std::vector<size
     bool duplicate = false;
     for (size_t c : chosen)
       duplicate = duplicate || SamePlane(runs[c].plane, runs[k].plane, options.epsilon);
+    for (size_t c : extra)
+      duplicate = duplicate || SamePlane(runs[c].plane, runs[k].plane, options.epsilon);
     const bool promising = runs[k].regionArea >= PromisingFraction * runs[probes[0]].regionArea;
-    if (!duplicate && promising && chosen.size() < 3)
+    if (!duplicate && promising && chosen.size() < RankedFinalists)
       chosen.push_back(k);
+    else if (!duplicate && promising && options.scoreEveryFinalist && extra.size() < ExtraFinalists)
+      extra.push_back(k);
   }
-  RunTasksInParallel(chosen.size(),
+  std::vector<size_t> all = chosen;
+  all.insert(all.end(), extra.begin(), extra.end());
+  RunTasksInParallel(all.size(),
     [&](size_t i)
     {
-      Run& run = runs[chosen[i]];
+      Run& run = runs[all[i]];
       this->Refine.Fine(run, options.maximumIterations);
       this->Refine.Polish(run, std::min(options.maximumIterations, PolishIterations));
       this->Refine.Score(run, options.epsilon);
     });
-  for (size_t k : chosen)
+  for (size_t k : all)
     this->Trace("final", k, runs[k]);
 }
 
@@ -371,7 +389,9 @@ void PlaneSearch::FinishBestProbes(std::vector<size_t>& probes, std::vector<size
 // in parallel, each serially (RunTasksInParallel), and are then judged one after the other
 // exactly as if they had run in turn - the same decisions and results for any thread count,
 // at the price of finishing probes that are then dropped.
-bool PlaneSearch::RobustSearch(SymmetryResult& result, std::vector<size_t>& finished)
+bool PlaneSearch::RobustSearch(SymmetryResult& result,
+  std::vector<size_t>& finished,
+  std::vector<size_t>& extra)
 {
   const auto t2 = Clock::now();
   std::vector<Plane> distinct{ this->Runs[0].plane };
@@ -393,7 +413,7 @@ bool PlaneSearch::RobustSearch(SymmetryResult& result, std::vector<size_t>& fini
   }
   if (!this->Report(0.7))
     return false;
-  this->FinishBestProbes(probes, finished);
+  this->FinishBestProbes(probes, finished, extra);
   if (!this->Report(1.0))
     return false;
   result.fineSeconds = Seconds(t2) - result.candidateSeconds;
@@ -405,6 +425,7 @@ SymmetryResult PlaneSearch::Detect()
 {
   SymmetryResult result;
   std::vector<size_t> finished; // runs iterated to convergence
+  std::vector<size_t> extra;    // ... and not ranked (scoreEveryFinalist)
   const auto t0 = Clock::now();
   this->PaperStart();
   result.coarseSeconds = Seconds(t0);
@@ -415,7 +436,7 @@ SymmetryResult PlaneSearch::Detect()
   }
   if (this->Options.robust)
   {
-    if (!this->RobustSearch(result, finished))
+    if (!this->RobustSearch(result, finished, extra))
     {
       result.aborted = true;
       return result;
@@ -439,6 +460,8 @@ SymmetryResult PlaneSearch::Detect()
   for (size_t k : finished)
     result.finalists.push_back(runs[k].plane);
   result.rankedFinalists = result.finalists.size();
+  for (size_t k : extra)
+    result.finalists.push_back(runs[k].plane);
   Finish(this->Mesh, this->Options, this->Refine, runs[finished[0]], result);
   return result;
 }

@@ -37,9 +37,10 @@ struct SymmetryOptions
   /// the full mesh before they are scored there; false: they are only scored (for callers
   /// that refine the plane on its region themselves, like the folding-tree builder).
   bool refineSampledFinalists = true;
-  /// With the sampled search, every finalist of the copy is scored on the full mesh and
-  /// returned in SymmetryResult::finalists, also when the first one settles the search (it
-  /// stays the result): the folding-tree builder tries them as other planes for regions of
+  /// Up to three more probes are finished after the ranked finalists and returned after them
+  /// in SymmetryResult::finalists (unranked: the result is the same), and with the sampled
+  /// search every finalist of the copy is scored on the full mesh, also when the first one
+  /// settles the search: the folding-tree builder tries them as other planes for regions of
   /// several parts, where the connected regions that rank them can miss symmetry between parts.
   bool scoreEveryFinalist = false;
   /// SymmetryResult::distance up to 3 sigma (9 epsilon: the detector's SymmetryDistance

@@ -4,9 +4,9 @@
 # ("withinBound": true) and, where the input was closed, closed. The dense chair is the case
 # where the final weld's chained same-copy pairs once collapsed whole open parts (0.123 of the
 # diagonal); figure_deformed the one where the builder's verification must pin faces and build
-# again (its first tree unfolds 0.0216 of the diagonal away at epsilon 0.02). All 21 meshes;
-# rack_deformed is closed but comes back with open seams (68 edges, docs/limitations.md), so
-# only its bound is asserted. The exactly symmetric chairs, rack and biplane, whose symmetry maps
+# again (its first tree unfolds 0.0216 of the diagonal away at epsilon 0.02). All 21 meshes
+# (rack_deformed came back with open seams with its trees before 2026-12-05; its tree since
+# comes back closed). The exactly symmetric chairs, rack and biplane, whose symmetry maps
 # separate parts onto each other (a leg onto the other leg), must fold to at most 60% of their
 # faces (before whole parts joined the symmetric region, 2026-12-05, the chairs and the biplane
 # did not fold at all).
@@ -49,8 +49,7 @@ foreach (mesh IN ITEMS chair_dense_exact chair_dense_moved chair_dense_deformed 
   elseif (NOT folds)
     message("FAIL ${mesh}: symmetric parts, but ${stored} of ${faces} faces stored (at most 60% expected)")
     math(EXPR failures "${failures} + 1")
-  elseif (openBefore STREQUAL "0" AND NOT openAfter STREQUAL "0" AND
-      NOT mesh STREQUAL "rack_deformed")
+  elseif (openBefore STREQUAL "0" AND NOT openAfter STREQUAL "0")
     message("FAIL ${mesh}: closed input, ${openAfter} open edges after the round trip")
     math(EXPR failures "${failures} + 1")
   else ()
