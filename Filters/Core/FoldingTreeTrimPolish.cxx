@@ -153,16 +153,17 @@ std::vector<char> Builder::ChooseSymmetricRegion(const WorkMesh& w,
   const double untrimmedArea = RegionArea(pm, best);
   best = this->TrimAndPolish(w, pm, region, std::move(best), eps, wholeParts, plane, provenSide);
   double bestArea = RegionArea(pm, best);
+  // A trace line per plane tried; `after` < 0: not trimmed (no larger than the best S).
   auto trace = [&](const Plane& p, double before, double after)
   {
     if (this->Options.trace)
-      this->Options.trace(FormatTrace("[region] n=(%.3f %.3f %.3f): S %.3f of the area, "
-                                      "trimmed %.3f%s",
+      this->Options.trace(FormatTrace("[region] n=(%.3f %.3f %.3f): S %.3f of the area, %s%.3f%s",
         p.normal.x(),
         p.normal.y(),
         p.normal.z(),
         before / pm.totalArea,
-        after / pm.totalArea,
+        after < 0.0 ? "not trimmed, no larger than the best " : "trimmed ",
+        (after < 0.0 ? bestArea : after) / pm.totalArea,
         wholeParts ? " (with whole parts)" : ""));
   };
   trace(plane, untrimmedArea, bestArea);
@@ -194,7 +195,7 @@ std::vector<char> Builder::ChooseSymmetricRegion(const WorkMesh& w,
     const double candidateArea = RegionArea(pm, S);
     if (!(candidateArea > bestArea))
     {
-      trace(candidate, candidateArea, -0.0);
+      trace(candidate, candidateArea, -1.0);
       continue;
     }
     if (this->IsAncestorPlane(candidate, pathFolds, RegionCentroid(pm, S), eps))

@@ -28,13 +28,13 @@ int LabelConnectedRegions(const PreparedMesh& mesh,
 std::vector<char> LargestConnectedRegion(const PreparedMesh& mesh, const std::vector<char>& mask);
 
 /**
- * LargestConnectedRegion of `mask`, plus every other connected region of `mask` that is a whole
- * part of the mesh (all the faces of one connected component, the same edges and proximity
- * links). Meshes assembled from separate parts (a chair's legs, a plane's wings) have symmetry
- * between parts: a leg maps onto the other leg, not onto its own neighbours, so no single
- * connected region holds it. A whole part within epsilon of its mirror image is no accidental
- * match; a piece of a part is left out as in the paper. On a mesh of one part: exactly
- * LargestConnectedRegion.
+ * Every whole part of the mesh in `mask` (a connected component, the same edges and proximity
+ * links, none of whose non-degenerate faces is outside `mask`), plus the largest connected
+ * region of `mask` that is not made of whole parts only. Meshes assembled from separate parts (a
+ * chair's legs, a plane's wings) have symmetry between parts: a leg maps onto the other leg, not
+ * onto its own neighbours, so no single connected region holds it. A whole part within epsilon of
+ * its mirror image is no accidental match; a piece of a part is left out as in the paper. On a mesh
+ * of one part: exactly LargestConnectedRegion.
  */
 std::vector<char> LargestRegionAndWholeParts(const PreparedMesh& mesh,
   const std::vector<char>& mask);
