@@ -11,6 +11,8 @@
 #include "vtkUnstructuredGrid.h"
 
 #include <algorithm>
+#include <cmath>
+#include <limits>
 #include <mutex>
 
 namespace foldingmeshes
@@ -52,13 +54,17 @@ public:
 
   ClosestFaceHit Closest(const Vec3& p) const override
   {
+    return this->ClosestWithin(p, std::numeric_limits<double>::infinity());
+  }
+
+  ClosestFaceHit ClosestWithin(const Vec3& p, double radius) const override
+  {
     ClosestFaceHit hit;
-    if (this->Grid->GetNumberOfCells() == 0)
+    if (this->Grid->GetNumberOfCells() == 0 || !(radius > 0.0))
       return hit;
     double x[3] = { p.x(), p.y(), p.z() }, closest[3], dist2 = 0.0;
     vtkIdType cellId = -1;
     int subId = 0, inside = 0;
-    const double radius = std::numeric_limits<double>::infinity();
     vtkGenericCell* cell = this->Cells.Local();
     if (this->ThreadSafe)
       this->Locator->FindClosestPointWithinRadius(
@@ -69,10 +75,11 @@ public:
       this->Locator->FindClosestPointWithinRadius(
         x, radius, closest, cell, cellId, subId, dist2, inside);
     }
-    if (cellId >= 0)
+    if (cellId >= 0 && std::sqrt(dist2) < radius)
     {
       hit.face = static_cast<int>(cellId);
       hit.distance = std::sqrt(dist2);
+      hit.point = Vec3(closest[0], closest[1], closest[2]);
     }
     return hit;
   }

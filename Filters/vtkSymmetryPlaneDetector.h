@@ -102,6 +102,7 @@
 #include "FoldingMeshesFiltersModule.h" // for export macro
 #include "vtkPolyDataAlgorithm.h"
 
+class vtkAbstractCellLocator;
 class vtkMultiProcessController;
 
 #include <memory> // for std::unique_ptr
@@ -231,6 +232,22 @@ public:
 
   ///@{
   /**
+   * A cell locator as a fast path of the fine mirror distances (issue 19): each reflected
+   * vertex first asks it for the closest triangle; when that triangle's interpolated normal
+   * is compatible, its distance bounds the core's face-tree search, which then decides among
+   * the triangles that close. The planes, regions and distances are bit for bit those
+   * without it, but detection is slower on every mesh measured (5-15x, docs/benchmarks.md),
+   * so nullptr (the default): the face tree alone. A locator set here is not used itself: a
+   * new instance of its class is built over the surface (its settings are not copied);
+   * locators other than vtkStaticCellLocator are queried by one thread at a time. C++ and
+   * Python only: ParaView keeps the default.
+   */
+  virtual void SetLocator(vtkAbstractCellLocator*);
+  vtkGetObjectMacro(Locator, vtkAbstractCellLocator);
+  ///@}
+
+  ///@{
+  /**
    * Controller of a parallel run (default: the global controller, if any). With more than
    * one process the filter gathers its input on rank 0 (see above); nullptr makes every
    * process run on its own piece.
@@ -279,6 +296,7 @@ protected:
   double ToleranceLength = 0.0;
 
   vtkMultiProcessController* Controller = nullptr;
+  vtkAbstractCellLocator* Locator = nullptr;
 
 private:
   vtkSymmetryPlaneDetector(const vtkSymmetryPlaneDetector&) = delete;

@@ -17,6 +17,7 @@ struct ClosestFaceHit
 {
   int face = -1; ///< -1: no triangle
   double distance = std::numeric_limits<double>::infinity();
+  Vec3 point = Vec3::Zero(); ///< the closest point of that triangle
 };
 
 /**
@@ -29,6 +30,12 @@ class ClosestFaceQuery
 public:
   virtual ~ClosestFaceQuery() = default;
   virtual ClosestFaceHit Closest(const Vec3& p) const = 0;
+  /// The closest triangle nearer than `radius` (none: face -1). By default Closest, cut off.
+  virtual ClosestFaceHit ClosestWithin(const Vec3& p, double radius) const
+  {
+    const ClosestFaceHit hit = this->Closest(p);
+    return hit.distance < radius ? hit : ClosestFaceHit();
+  }
 };
 
 /// Makes a query over the triangles of `surface` (called once per surface).

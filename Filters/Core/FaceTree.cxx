@@ -289,6 +289,30 @@ FaceTree::Hit FaceTree::ClosestCompatibleFaceAmong(const Vec3& p,
   return hit;
 }
 
+bool FaceTree::CompatibleFaceHit(const Vec3& p,
+  const Vec3& normal,
+  double cosLimit,
+  double maxDistance,
+  int face,
+  Hit& hit) const
+{
+  if (face < 0 || face >= Mesh.NumberOfFaces() || this->OrderIndex[face] < 0)
+    return false;
+  const ClosestPointOnTriangle cp = this->ClosestPoint(p, this->OrderIndex[face]);
+  if (!(cp.squaredDistance <= maxDistance * maxDistance))
+    return false;
+  const Triangle& t = Mesh.triangles[face];
+  const Vec3 n = cp.barycentric[0] * Mesh.vertexNormals[t[0]] +
+    cp.barycentric[1] * Mesh.vertexNormals[t[1]] + cp.barycentric[2] * Mesh.vertexNormals[t[2]];
+  const double len = n.norm();
+  if (!(len > 0.0 && n.dot(normal) >= cosLimit * len))
+    return false;
+  hit.face = face;
+  hit.point = cp.point;
+  hit.distance = std::sqrt(cp.squaredDistance);
+  return true;
+}
+
 FaceTree::Hit FaceTree::ClosestFace(const Vec3& p, double maxDistance) const
 {
   Hit hit;

@@ -52,6 +52,18 @@ public:
     int hintFace = -1,
     const std::vector<char>* excludedFaces = nullptr) const;
 
+  /**
+   * Face `face` as ClosestCompatibleFace tests it: true (and `hit` its closest point and
+   * distance) when it is compatible with `normal` and within maxDistance; false for other
+   * faces, degenerate faces and ids out of range. A true answer bounds the closest compatible
+   * face's distance (MirrorDistance's fast path).
+   */
+  bool CompatibleFaceHit(const Vec3& p,
+    const Vec3& normal,
+    double cosLimit,
+    double maxDistance,
+    int face,
+    Hit& hit) const;
   /// The face closest to p, whatever its normal (closer than maxDistance; else face -1).
   Hit ClosestFace(const Vec3& p, double maxDistance) const;
 

@@ -2,6 +2,7 @@
 
 #include "ParallelTasks.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace foldingmeshes
@@ -87,8 +88,21 @@ void MirrorDistance::Compute(const Plane& plane,
         {
           // The previous answer for this vertex (a nearby plane, usually the same face)
           // speeds the search up without changing its result.
-          const FaceTree::Hit hit =
-            Faces.ClosestCompatibleFace(r, rn, CosLimit, maxDistance, lastFace[i]);
+          // With the fast path, a compatible closest face (of any normal) bounds the search:
+          // the tree then only confirms it among the faces as close, so that ties and
+          // rounding are decided as without it (bit for bit the same answers).
+          FaceTree::Hit plain;
+          const bool bounded = this->FastPath &&
+            Faces.CompatibleFaceHit(r,
+              rn,
+              CosLimit,
+              maxDistance,
+              this->FastPath->ClosestWithin(r, maxDistance).face,
+              plain);
+          const FaceTree::Hit hit = bounded
+            ? Faces.ClosestCompatibleFace(
+                r, rn, CosLimit, std::min(maxDistance, plain.distance * (1.0 + 1e-12)), plain.face)
+            : Faces.ClosestCompatibleFace(r, rn, CosLimit, maxDistance, lastFace[i]);
           if (hit.face >= 0)
             lastFace[i] = hit.face;
           d[i] = hit.distance;

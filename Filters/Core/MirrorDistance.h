@@ -2,6 +2,7 @@
 #ifndef foldingmeshes_MirrorDistance_h
 #define foldingmeshes_MirrorDistance_h
 
+#include "ClosestFaceQuery.h"
 #include "FaceTree.h"
 #include "Plane.h"
 
@@ -76,6 +77,16 @@ public:
 
   const FaceTree& Tree() const { return this->Faces; }
 
+  /**
+   * A fast path for the fine metric (issue 19): a plain closest-face query over the target's
+   * triangles (e.g. a vtkStaticCellLocator, see vtkCellLocatorFaceQuery.h), asked first. When
+   * its face is compatible (FaceTree::CompatibleFaceHit), its distance bounds the face tree's
+   * search, which then decides among the faces that close: the answers are bit for bit those
+   * without the fast path. Null: no fast path. Not owned; it must outlive this object.
+   * Compute only (Recompute uses the tree alone).
+   */
+  void SetFastPath(const ClosestFaceQuery* plain) { this->FastPath = plain; }
+
 private:
   /// VertexUsed and LastFace for the query mesh.
   void MarkUsedVertices();
@@ -90,6 +101,7 @@ private:
   /// written by the one thread that handles it; results never depend on it), unless the
   /// caller passes its own.
   mutable std::vector<int> LastFace;
+  const ClosestFaceQuery* FastPath = nullptr;
 };
 }
 

@@ -189,6 +189,16 @@ SymmetryResult DetectSymmetry(const PreparedMesh& mesh,
   std::unique_ptr<FaceTree> own;
   if (!meshFaces || &meshFaces->Surface() != &mesh)
     meshFaces = (own = std::make_unique<FaceTree>(mesh)).get();
+  if (options.closestFaceFastPath && !options.fastPathQuery)
+  {
+    // The fast path's query over the mesh: every fine distance is measured to it.
+    const std::unique_ptr<ClosestFaceQuery> plain =
+      options.closestFaceFastPath(TriangleMesh{ mesh.points, mesh.triangles });
+    SymmetryOptions withQuery = options;
+    withQuery.fastPathQuery = plain.get();
+    if (plain)
+      return DetectSymmetry(mesh, withQuery, meshFaces);
+  }
   if (options.robust && mesh.NumberOfFaces() > options.sampledSearchAboveFaces)
     return DetectOnSampledCopy(mesh, *meshFaces, options);
   return DetectOn(mesh, *meshFaces, options);

@@ -2,6 +2,7 @@
 #ifndef foldingmeshes_SymmetryDetection_h
 #define foldingmeshes_SymmetryDetection_h
 
+#include "ClosestFaceQuery.h"
 #include "FaceTree.h"
 #include "Plane.h"
 #include "Trace.h"
@@ -47,11 +48,19 @@ struct SymmetryOptions
   /// output), one more distance pass at the end; false: only those below epsilon are finite
   /// (the folding-tree builder needs no more). The plane and the regions are the same.
   bool distancesUpTo3Sigma = true;
+  /// A fast path for the fine distances (issue 19): a plain closest-face query over the
+  /// mesh (the VTK layer's vtkStaticCellLocator, vtkCellLocatorFaceQuery.h) asked before the
+  /// face tree, whose answer is taken where it is the closest compatible face
+  /// (MirrorDistance::SetFastPath). The same planes and regions; slower on every mesh
+  /// measured (docs/benchmarks.md), so empty (off) by default.
+  ClosestFaceQueryFactory closestFaceFastPath;
   /// Called with progress in [0,1]; return false to abort.
   std::function<bool(double)> progress;
   /// Diagnostics: every run (start, iterations, region, RMS/epsilon, plane) and region
   /// statistics, one line each (Trace.h; empty: none).
   TraceSink trace;
+  /// Internal: the query DetectSymmetry made from closestFaceFastPath (callers leave it null).
+  const ClosestFaceQuery* fastPathQuery = nullptr;
 };
 
 struct SymmetryResult

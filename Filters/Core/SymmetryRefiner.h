@@ -63,6 +63,7 @@ public:
     , Options(options)
     , Distances(mesh, targetFaces, options.compatibilityAngle)
   {
+    this->Distances.SetFastPath(options.fastPathQuery);
   }
 
   /// Coarse then (optionally) fine phase from a start. `start` null: the paper's start.

@@ -1,15 +1,18 @@
 // Prints, per mesh: faces, starts tried, iterations (coarse/fine), seconds per phase,
 // peak memory and the plane; with --rotation also the rotational symmetry search (as
 // vtkSymmetryPlaneDetector's DetectRotation runs it, after the plane search): its seconds,
-// order ("c" after it: continuous), found, region and axis. Not a test: numbers for humans
-// and closing notes.
+// order ("c" after it: continuous), found, region and axis. With --locator-ab every mesh is
+// detected twice in one run, the second time with the vtkStaticCellLocator fast path of the
+// fine distances (SymmetryOptions::closestFaceFastPath, issue 19), and a line compares them.
+// Not a test: numbers for humans and closing notes.
 //
-//   BenchmarkSymmetryDetection [--threads N] [--procedural] [--rotation] MESH...
+//   BenchmarkSymmetryDetection [--threads N] [--procedural] [--rotation] [--locator-ab] MESH...
 #include "Core/MeshPreparation.h"
 #include "Core/RotationalSymmetry.h"
 #include "Core/SymmetryDetection.h"
 #include "MeshIO.h"
 #include "ProceduralMeshes.h"
+#include "vtkCellLocatorFaceQuery.h"
 #include "vtkTriangleMeshAdapter.h"
 
 #include <vtkPolyData.h>
@@ -18,6 +21,7 @@
 #include <sys/resource.h>
 
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <string>
@@ -57,8 +61,10 @@ void PrintRotation(const PreparedMesh& mesh, const SymmetryResult& planes, doubl
 }
 
 bool rotation = false;
+bool locatorAB = false;
 
-void Run(const std::string& name, vtkPolyData* input)
+/// One detection, one line; the result for the comparison of --locator-ab.
+SymmetryResult Run(const std::string& name, vtkPolyData* input, bool fastPath)
 {
   const auto t0 = Clock::now();
   vtkIdType droppedVerts = 0, droppedLines = 0;
@@ -67,13 +73,16 @@ void Run(const std::string& name, vtkPolyData* input)
   PreparedMesh mesh;
   std::string error;
   auto surface = TriangulateSurface(input, droppedVerts, droppedLines, error);
-  if (!surface || !ToTriangleMesh(surface, soup, normals, error) || !PrepareMesh(soup, normals, mesh, error))
+  if (!surface || !ToTriangleMesh(surface, soup, normals, error) ||
+    !PrepareMesh(soup, normals, mesh, error))
   {
     std::printf("%-28s error: %s\n", name.c_str(), error.c_str());
-    return;
+    return SymmetryResult();
   }
   SymmetryOptions options;
   options.epsilon = 0.02 * mesh.diagonal;
+  if (fastPath)
+    options.closestFaceFastPath = CellLocatorFaceQueryFactory(nullptr);
   LinkNearbyParts(mesh, options.epsilon);
   const double prepare = std::chrono::duration<double>(Clock::now() - t0).count();
   const auto t1 = Clock::now();
@@ -105,6 +114,25 @@ void Run(const std::string& name, vtkPolyData* input)
     PrintRotation(mesh, r, options.epsilon);
   std::printf("\n");
   std::fflush(stdout);
+  return r;
+}
+
+/// Both detections of --locator-ab (face tree, then the locator's fast path) and whether the
+/// plane and the region agree.
+void Run(const std::string& name, vtkPolyData* input)
+{
+  const SymmetryResult tree = Run(name, input, false);
+  if (!locatorAB)
+    return;
+  const SymmetryResult fast = Run(name + " +locator", input, true);
+  const double dn = (tree.plane.normal - fast.plane.normal).norm();
+  const double dd = (tree.plane.origin - fast.plane.origin).norm();
+  std::printf("%-28s same plane %s (|dn| %.1e, |do| %.1e), same region %s\n",
+    "",
+    dn == 0.0 && dd == 0.0 ? "yes" : "no",
+    dn,
+    dd,
+    tree.faceLabel == fast.faceLabel ? "yes" : "no");
 }
 }
 
@@ -124,6 +152,8 @@ int main(int argc, char* argv[])
       procedural = true;
     else if (arg == "--rotation")
       rotation = true;
+    else if (arg == "--locator-ab")
+      locatorAB = true;
     else
     {
       const std::vector<std::string> found = foldingmeshes::MeshFiles(arg);

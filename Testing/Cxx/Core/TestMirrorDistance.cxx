@@ -6,15 +6,19 @@
 // - coarse metric = brute force of the paper's definition (reflect vertex and normal; face with
 //   the nearest centroid; distance to its plane; infinite if the normals are >= 90 degrees
 //   apart), with its closest point (foot of the perpendicular) and normal, at several planes;
-// - vtkSMPTools Sequential vs STDThread (2 threads): bit-identical results.
+// - vtkSMPTools Sequential vs STDThread (2 threads): bit-identical results;
+// - the fast path (SetFastPath, issue 19) with an exact plain closest-face query and with one
+//   that answers some far face: bit-identical fine results to the face tree alone.
 #include "CoreTestUtilities.h"
 #include "MirrorDistance.h"
+#include "PointTriangleDistance.h"
 #include "ProceduralMeshes.h"
 
 #include <vtkSMPTools.h>
 
 #include <Eigen/Geometry>
 
+#include <atomic>
 #include <cmath>
 #include <cstring>
 #include <limits>
@@ -29,6 +33,39 @@ namespace
 {
 const double kInf = std::numeric_limits<double>::infinity();
 const double kPi = 3.14159265358979323846;
+
+/// A plain closest-face query by brute force over every triangle (`far`: it answers the
+/// triangle after the closest one instead, a wrong answer the fast path must survive).
+class BruteForceQuery : public foldingmeshes::ClosestFaceQuery
+{
+public:
+  BruteForceQuery(const PreparedMesh& m, bool far)
+    : Mesh(m)
+    , Far(far)
+  {
+  }
+  foldingmeshes::ClosestFaceHit Closest(const Vec3& p) const override
+  {
+    ++this->Calls;
+    foldingmeshes::ClosestFaceHit hit;
+    for (int f = 0; f < this->Mesh.NumberOfFaces(); ++f)
+    {
+      const auto& t = this->Mesh.triangles[f];
+      const auto cp = foldingmeshes::ClosestPointTriangle(
+        p, this->Mesh.points[t[0]], this->Mesh.points[t[1]], this->Mesh.points[t[2]]);
+      if (std::sqrt(cp.squaredDistance) < hit.distance)
+        hit = { f, std::sqrt(cp.squaredDistance), cp.point };
+    }
+    if (this->Far && hit.face >= 0)
+      hit.face = (hit.face + 1) % this->Mesh.NumberOfFaces();
+    return hit;
+  }
+  mutable std::atomic<long> Calls{ 0 };
+
+private:
+  const PreparedMesh& Mesh;
+  bool Far;
+};
 
 /// The paper's coarse distance, by brute force over all faces.
 void BruteCoarse(const PreparedMesh& m,
@@ -199,6 +236,29 @@ int main()
   EXPECT(
     BitIdentical(seqCoarse, thrCoarse), "coarse distances differ between Sequential and STDThread");
   vtkSMPTools::SetBackend("Sequential");
+
+  // ---- The fast path: bit for bit the face tree's answers, whatever the plain query says ----
+  for (const bool far : { false, true })
+  {
+    const BruteForceQuery plain(m, far);
+    MirrorDistance fast(m, 45.0);
+    fast.SetFastPath(&plain);
+    const MirrorDistance tree(m, 45.0);
+    for (const Plane& plane : { truth, tilted })
+      for (const double reach : { kInf, 0.05 * diag })
+      {
+        std::vector<double> d0, d1;
+        std::vector<Vec3> c0, c1, n0, n1;
+        std::vector<int> f0, f1;
+        tree.Compute(plane, DistanceMetric::Fine, reach, d0, &c0, &n0, &f0);
+        fast.Compute(plane, DistanceMetric::Fine, reach, d1, &c1, &n1, &f1);
+        EXPECT(BitIdentical(d0, d1) && BitIdentical(c0, c1) && BitIdentical(n0, n1) && f0 == f1,
+          "fast path (" << (far ? "a far face" : "exact") << " plain query, reach " << reach
+                        << "): results differ from the face tree alone");
+      }
+    EXPECT(plain.Calls > 0, "the fast path never asked its plain query");
+  }
+
   std::printf("TestMirrorDistance: %.2f s\n", coretest::Seconds(t0));
   return coretest::Finish("TestMirrorDistance");
 }
