@@ -6,8 +6,10 @@
 
 #include <cstdint>
 #include <cstring>
+#include <memory>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 namespace foldingmeshes
 {
@@ -113,6 +115,64 @@ private:
   size_t Size;
   size_t Position = 0;
   const char* What;
+};
+
+/**
+ * Fields written column by column: column c collects one kind of field of every record (all
+ * node kinds, then all child counts, ...), which zlib codes in fewer bytes than the same
+ * fields record by record. With `columns` false every column is the writer itself (records
+ * one after another, the first files' layout), so one piece of code writes both layouts.
+ * Finish appends, in columns mode, each column's byte length and then the columns.
+ */
+class ColumnWriter
+{
+public:
+  ColumnWriter(ByteWriter& out, bool columns, int count)
+    : Out(out)
+    , Columns(columns ? count : 0)
+  {
+  }
+  ByteWriter& operator[](int c) { return this->Columns.empty() ? this->Out : this->Columns[c]; }
+  void Finish()
+  {
+    for (const ByteWriter& column : this->Columns)
+      this->Out.VarUInt(column.Bytes.size());
+    for (const ByteWriter& column : this->Columns)
+      this->Out.Raw(column.Bytes);
+  }
+
+private:
+  ByteWriter& Out;
+  std::vector<ByteWriter> Columns;
+};
+
+/// Reads what ColumnWriter wrote: in columns mode the lengths, then a reader per column;
+/// else every column is `in` itself. Finish throws unless every column was read to its end.
+class ColumnReader
+{
+public:
+  ColumnReader(ByteReader& in, bool columns, int count, const char* what)
+    : In(in)
+  {
+    if (!columns)
+      return;
+    std::vector<size_t> sizes;
+    for (int c = 0; c < count; ++c)
+      sizes.push_back(in.Count(in.Remaining(), "column length"));
+    for (size_t size : sizes)
+      this->Columns.emplace_back(in.Take(size), size, what);
+  }
+  ByteReader& operator[](int c) { return this->Columns.empty() ? this->In : this->Columns[c]; }
+  void Finish() const
+  {
+    for (const ByteReader& column : this->Columns)
+      if (column.Remaining() != 0)
+        throw CompactFormatError("tree section: unexpected bytes at the end of a column");
+  }
+
+private:
+  ByteReader& In;
+  std::vector<ByteReader> Columns;
 };
 }
 

@@ -58,6 +58,7 @@ struct SectionsToWrite
 {
   std::string packedTree; ///< zlib'd tree section
   size_t rawTreeBytes = 0;
+  bool columns = false; ///< the tree section's nodes and palette field by field
   std::string geometry; ///< Draco section
   bool symbolsBeside = false;
 };
@@ -101,13 +102,30 @@ bool EncodeSmallestSections(const FoldingTree& tree,
       TransferSymbols(decoded, besideDecoded);
     if (candidate.symbolsBeside)
       candidate.geometry = std::move(besideGeometry);
-    ByteWriter section;
-    WriteTreeSection(
-      tree, candidate.symbolsBeside ? beside : withAttribute, quantizationError, palette, section);
-    if (candidate.symbolsBeside)
-      WritePointSymbols(besideDecoded, section);
-    candidate.packedTree = Deflate(section.Bytes);
-    candidate.rawTreeBytes = section.Bytes.size();
+    // The tree section record by record and (nodeColumns) field by field: the smaller kept
+    // (columns cost their lengths, more than they save on trees of a few nodes).
+    for (const bool columns : { false, true })
+    {
+      if (columns && !options.nodeColumns)
+        continue;
+      ByteWriter section;
+      WriteTreeSection(tree,
+        candidate.symbolsBeside ? beside : withAttribute,
+        quantizationError,
+        palette,
+        columns,
+        section);
+      if (candidate.symbolsBeside)
+        WritePointSymbols(besideDecoded, section);
+      std::string packed = Deflate(section.Bytes);
+      if (candidate.packedTree.empty() ||
+        (!packed.empty() && packed.size() < candidate.packedTree.size()))
+      {
+        candidate.packedTree = std::move(packed);
+        candidate.rawTreeBytes = section.Bytes.size();
+        candidate.columns = columns;
+      }
+    }
     if (candidate.packedTree.empty())
     {
       error = "zlib cannot compress the tree section";
@@ -135,8 +153,7 @@ bool AssembleFile(const SectionsToWrite& sections,
   const std::string& packed = sections.packedTree;
   const std::string& geometry = sections.geometry;
   const size_t rawSectionSize = sections.rawTreeBytes;
-  if (packed.size() > 0xffffffffu || rawSectionSize > 0xffffffffu ||
-    geometry.size() > 0xffffffffu)
+  if (packed.size() > 0xffffffffu || rawSectionSize > 0xffffffffu || geometry.size() > 0xffffffffu)
   {
     error = "the tree is too large for the compact format (a section over 4 GB)";
     return false;
@@ -145,7 +162,8 @@ bool AssembleFile(const SectionsToWrite& sections,
   file.Raw(std::string(Magic, 4));
   file.U8(static_cast<uint8_t>(CompactTreeFormatVersion & 0xff));
   file.U8(static_cast<uint8_t>(CompactTreeFormatVersion >> 8));
-  file.U8(static_cast<uint8_t>((withArrays ? 1 : 0) | (sections.symbolsBeside ? 2 : 0)));
+  file.U8(static_cast<uint8_t>(
+    (withArrays ? 1 : 0) | (sections.symbolsBeside ? 2 : 0) | (sections.columns ? 4 : 0)));
   file.U8(0);
   file.U32(static_cast<uint32_t>(packed.size()));
   file.U32(static_cast<uint32_t>(rawSectionSize));
@@ -276,7 +294,7 @@ bool DecodeCompactTree(const std::string& bytes,
         ")");
     const uint8_t flags = header.U8();
     header.Take(1);
-    if (flags & ~3)
+    if (flags & ~7)
       throw CompactFormatError("unknown flags in the header");
     if (bytes.size() < HeaderBytes + 8)
       throw CompactFormatError("truncated");
@@ -305,7 +323,7 @@ bool DecodeCompactTree(const std::string& bytes,
     std::vector<LeafHeader> leaves;
     std::vector<PointData> palette;
     coding.symbolAttribute = !(flags & 2);
-    ReadTreeSection(section, tree, coding, leaves, palette);
+    ReadTreeSection(section, (flags & 4) != 0, tree, coding, leaves, palette);
     std::vector<DecodedLeaf> decoded;
     if (!DecodeLeafGeometry(
           geometry, geometrySize, coding, static_cast<int>(leaves.size()), decoded, error))

@@ -5,7 +5,10 @@
 //          4   u16      format version (CompactTreeFormatVersion); readers reject others
 //          6   u16      flags: bit 0 = an arrays section follows the geometry section; bit 1 =
 //                       the points' palette symbols end the tree section (in the order of
-//                       CompactPointSymbols.h) instead of being a Draco attribute
+//                       CompactPointSymbols.h) instead of being a Draco attribute; bit 2 =
+//                       the tree section's nodes and palette are written field by field
+//                       (NodeColumn, PaletteColumn in CompactTreeSection.h: each column's
+//                       length, then the columns) instead of record by record
 //          8   u32      size T of the zlib-compressed tree section, u32 its raw size
 //         16   T bytes  tree section (zlib): counts, lengths, quantisation, nodes in preorder
 //                       (kind, leaf reason, children, epsilon / root epsilon, fold planes,
@@ -60,6 +63,11 @@ struct CompactTreeOptions
   /// leaves that meet along a tear coded as one surface), keeping it where it is smaller;
   /// false: never (tests compare both).
   bool weldLeaves = true;
+  /// Also try the tree section's nodes and palette field by field (header flag bit 2: all node
+  /// kinds, then all child counts, ..., which zlib codes in fewer bytes on trees of more than
+  /// a few nodes), keeping it where it is smaller; false: record by record only (the layout
+  /// of the first files; tests compare both).
+  bool nodeColumns = true;
 };
 
 /**

@@ -110,6 +110,7 @@ void WriteTreeSection(const FoldingTree& tree,
   const LeafGeometryCoding& coding,
   double quantizationError,
   const Palette& palette,
+  bool columns,
   ByteWriter& w)
 {
   // Counts and lengths of the input.
@@ -127,92 +128,100 @@ void WriteTreeSection(const FoldingTree& tree,
   w.F64(coding.range);
   w.U8(static_cast<uint8_t>(coding.bits));
   // Nodes in preorder: kind and leaf reason, children, epsilon, statistics, planes, rotation
-  // axes and orders (kind 3), leaf sizes.
+  // axes and orders (kind 3), leaf sizes; node by node, or (`columns`) field by field.
   w.VarUInt(tree.nodes.size());
+  ColumnWriter c(w, columns, NodeColumnCount);
   for (size_t i = 0; i < tree.nodes.size(); ++i)
   {
     const FoldingNode& node = tree.nodes[i];
-    w.U8(
+    c[NodeKinds].U8(
       static_cast<uint8_t>(static_cast<int>(node.kind) | (static_cast<int>(node.leafReason) << 2)));
     if (node.kind != FoldingNodeKind::Leaf)
-      w.VarUInt(node.children.size());
+      c[NodeChildren].VarUInt(node.children.size());
     if (i > 0)
-      WriteEpsilon(node.epsilon / tree.rootEpsilon, w);
-    w.VarUInt(static_cast<uint64_t>(std::max(0, node.numberOfFaces)));
+      WriteEpsilon(node.epsilon / tree.rootEpsilon, c[NodeEpsilons]);
+    c[NodeFaces].VarUInt(static_cast<uint64_t>(std::max(0, node.numberOfFaces)));
     if (node.kind == FoldingNodeKind::Folding)
     {
       // Single-precision normal (renormalised when read; PlaneError bounds what that moves),
       // double-precision offset from the grid's corner.
-      w.F32(static_cast<float>(node.plane.normal.x()));
-      w.F32(static_cast<float>(node.plane.normal.y()));
-      w.F32(static_cast<float>(node.plane.normal.z()));
-      w.F64(node.plane.normal.dot(node.plane.origin - coding.origin));
-      w.VarUInt(static_cast<uint64_t>(std::max(0, node.discardedFaces)));
-      w.VarUInt(static_cast<uint64_t>(std::max(0, node.projectedPoints)));
+      c[FoldNormals].F32(static_cast<float>(node.plane.normal.x()));
+      c[FoldNormals].F32(static_cast<float>(node.plane.normal.y()));
+      c[FoldNormals].F32(static_cast<float>(node.plane.normal.z()));
+      c[FoldOffsets].F64(node.plane.normal.dot(node.plane.origin - coding.origin));
+      c[FoldCounts].VarUInt(static_cast<uint64_t>(std::max(0, node.discardedFaces)));
+      c[FoldCounts].VarUInt(static_cast<uint64_t>(std::max(0, node.projectedPoints)));
     }
     if (node.kind == FoldingNodeKind::Rotation)
     {
       // Double precision: a turn moves a point by its radius times the direction's error.
       for (int k = 0; k < 3; ++k)
-        w.F64(node.axis.origin[k]);
+        c[RotationAxes].F64(node.axis.origin[k]);
       for (int k = 0; k < 3; ++k)
-        w.F64(node.axis.direction[k]);
-      w.VarUInt(static_cast<uint64_t>(node.rotationOrder));
-      w.VarUInt(static_cast<uint64_t>(std::max(0, node.discardedFaces)));
+        c[RotationAxes].F64(node.axis.direction[k]);
+      c[RotationAxes].VarUInt(static_cast<uint64_t>(node.rotationOrder));
+      c[RotationAxes].VarUInt(static_cast<uint64_t>(std::max(0, node.discardedFaces)));
     }
     if (node.kind == FoldingNodeKind::Leaf)
     {
       const FoldingLeafMesh& m = node.mesh;
-      w.U8(
+      c[LeafFlagBytes].U8(
         static_cast<uint8_t>(LeafHasBudget | (m.inputBoundary.empty() ? 0 : LeafHasInputBoundary)));
-      w.VarUInt(static_cast<uint64_t>(m.NumberOfPoints()));
-      w.VarUInt(static_cast<uint64_t>(m.NumberOfFaces()));
-      w.U16(LeafBudgetCode(m, tree.rootEpsilon, quantizationError));
+      c[LeafPoints].VarUInt(static_cast<uint64_t>(m.NumberOfPoints()));
+      c[LeafTriangles].VarUInt(static_cast<uint64_t>(m.NumberOfFaces()));
+      c[LeafBudgets].U16(LeafBudgetCode(m, tree.rootEpsilon, quantizationError));
     }
   }
+  c.Finish();
   // The palette of point data (PointData), the most frequent entry first.
   w.VarUInt(palette.entries.size());
+  ColumnWriter p(w, columns, PaletteColumnCount);
   for (const PointData& d : palette.entries)
   {
-    w.VarUInt(d.tear);
-    w.VarUInt(d.plane);
-    w.U8(static_cast<uint8_t>(d.projected | (d.boundary << 2)));
-    w.VarUInt(d.mirrored.size());
+    p[PaletteTears].VarUInt(d.tear);
+    p[PalettePlanes].VarUInt(d.plane);
+    p[PaletteFlags].U8(static_cast<uint8_t>(d.projected | (d.boundary << 2)));
+    p[PaletteRecordCounts].VarUInt(d.mirrored.size());
     for (const auto& record : d.mirrored)
     {
-      w.U8(static_cast<uint8_t>(std::get<0>(record)));
-      w.U8(static_cast<uint8_t>(std::get<1>(record)));
-      w.VarUInt(std::get<2>(record));
+      p[PaletteRecords].U8(static_cast<uint8_t>(std::get<0>(record)));
+      p[PaletteRecords].U8(static_cast<uint8_t>(std::get<1>(record)));
+      p[PaletteMasks].VarUInt(std::get<2>(record));
     }
   }
+  p.Finish();
 }
 
 /// The palette of point data (WriteTreeSection's last part).
-static void ReadPalette(ByteReader& r, std::vector<PointData>& palette)
+static void ReadPalette(ByteReader& r, bool columns, std::vector<PointData>& palette)
 {
   const size_t entries =
     r.Count(std::min<uint64_t>(MaximumCount, r.Remaining()), "palette entries");
+  ColumnReader c(r, columns, PaletteColumnCount, "tree section");
   for (size_t e = 0; e < entries; ++e)
   {
     PointData d;
-    d.tear = r.VarUInt();
-    d.plane = r.VarUInt();
-    const uint8_t flags = r.U8();
+    d.tear = c[PaletteTears].VarUInt();
+    d.plane = c[PalettePlanes].VarUInt();
+    const uint8_t flags = c[PaletteFlags].U8();
     d.projected = flags & 3;
     d.boundary = (flags >> 2) & 1;
-    const size_t records = r.Count(2 * MaximumFoldingTreeLevels, "mirrored-flag records");
+    const size_t records =
+      c[PaletteRecordCounts].Count(2 * MaximumFoldingTreeLevels, "mirrored-flag records");
     for (size_t k = 0; k < records; ++k)
     {
-      const int level = r.U8(), flag = r.U8();
+      const int level = c[PaletteRecords].U8(), flag = c[PaletteRecords].U8();
       if (flag > static_cast<int>(LevelFlag::Plane))
         throw CompactFormatError("tree section: unknown mirrored flag");
-      d.mirrored.emplace_back(level, flag, r.VarUInt());
+      d.mirrored.emplace_back(level, flag, c[PaletteMasks].VarUInt());
     }
     palette.push_back(std::move(d));
   }
+  c.Finish();
 }
 
 void ReadTreeSection(ByteReader& r,
+  bool columns,
   FoldingTree& tree,
   LeafGeometryCoding& coding,
   std::vector<LeafHeader>& leaves,
@@ -239,10 +248,11 @@ void ReadTreeSection(ByteReader& r,
     throw CompactFormatError("tree section: no nodes");
   tree.nodes.assign(n, FoldingNode());
   std::vector<std::pair<int, size_t>> open; // (node, children still to come)
+  ColumnReader c(r, columns, NodeColumnCount, "tree section");
   for (size_t i = 0; i < n; ++i)
   {
     FoldingNode& node = tree.nodes[i];
-    const uint8_t kindAndReason = r.U8();
+    const uint8_t kindAndReason = c[NodeKinds].U8();
     const int kind = kindAndReason & 3, reason = kindAndReason >> 2;
     if (kind > static_cast<int>(FoldingNodeKind::Rotation) ||
       reason > static_cast<int>(LeafReason::Aborted))
@@ -266,16 +276,17 @@ void ReadTreeSection(ByteReader& r,
       throw CompactFormatError("tree section: deeper than the supported number of levels");
     if (node.kind != FoldingNodeKind::Leaf)
     {
-      const size_t children = r.Count(n - 1, "children");
+      const size_t children = c[NodeChildren].Count(n - 1, "children");
       if (children == 0)
         throw CompactFormatError("tree section: an inner node without children");
       open.emplace_back(static_cast<int>(i), children);
     }
-    node.epsilon = i > 0 ? ReadEpsilon(r) * tree.rootEpsilon : tree.rootEpsilon;
-    node.numberOfFaces = static_cast<int>(r.Count(MaximumCount - 1, "node faces"));
+    node.epsilon = i > 0 ? ReadEpsilon(c[NodeEpsilons]) * tree.rootEpsilon : tree.rootEpsilon;
+    node.numberOfFaces = static_cast<int>(c[NodeFaces].Count(MaximumCount - 1, "node faces"));
     if (node.kind == FoldingNodeKind::Folding)
     {
-      const double nx = r.F32(), ny = r.F32(), nz = r.F32(), offset = r.F64();
+      const double nx = c[FoldNormals].F32(), ny = c[FoldNormals].F32(), nz = c[FoldNormals].F32(),
+                   offset = c[FoldOffsets].F64();
       node.plane.normal = Vec3(nx, ny, nz);
       if (!node.plane.normal.allFinite() || !(node.plane.normal.norm() > 0.5) ||
         !(node.plane.normal.norm() < 2.0) || !std::isfinite(offset))
@@ -285,39 +296,43 @@ void ReadTreeSection(ByteReader& r,
       const Vec3 centre = coding.origin + Vec3::Constant(0.5 * coding.range);
       node.plane.origin = coding.origin + offset * node.plane.normal;
       node.plane.origin = node.plane.Project(centre);
-      node.discardedFaces = static_cast<int>(r.Count(MaximumCount - 1, "discarded faces"));
-      node.projectedPoints = static_cast<int>(r.Count(MaximumCount - 1, "projected points"));
+      node.discardedFaces =
+        static_cast<int>(c[FoldCounts].Count(MaximumCount - 1, "discarded faces"));
+      node.projectedPoints =
+        static_cast<int>(c[FoldCounts].Count(MaximumCount - 1, "projected points"));
     }
     if (node.kind == FoldingNodeKind::Rotation)
     {
       for (int k = 0; k < 3; ++k)
-        node.axis.origin[k] = r.F64();
+        node.axis.origin[k] = c[RotationAxes].F64();
       for (int k = 0; k < 3; ++k)
-        node.axis.direction[k] = r.F64();
+        node.axis.direction[k] = c[RotationAxes].F64();
       if (!node.axis.origin.allFinite() || !node.axis.direction.allFinite() ||
         std::abs(node.axis.direction.norm() - 1.0) > 1e-6)
         throw CompactFormatError("tree section: invalid rotation axis");
-      const size_t order = r.Count(MaximumRotationNodeOrder, "rotation order");
+      const size_t order = c[RotationAxes].Count(MaximumRotationNodeOrder, "rotation order");
       if (order < 2)
         throw CompactFormatError("tree section: rotation order below 2");
       node.rotationOrder = static_cast<int>(order);
-      node.discardedFaces = static_cast<int>(r.Count(MaximumCount - 1, "discarded faces"));
+      node.discardedFaces =
+        static_cast<int>(c[RotationAxes].Count(MaximumCount - 1, "discarded faces"));
     }
     if (node.kind == FoldingNodeKind::Leaf)
     {
       LeafHeader leaf;
       leaf.node = static_cast<int>(i);
-      leaf.flags = r.U8();
-      leaf.points = r.Count(MaximumCount - 1, "leaf points");
-      leaf.triangles = r.Count(MaximumCount - 1, "leaf triangles");
+      leaf.flags = c[LeafFlagBytes].U8();
+      leaf.points = c[LeafPoints].Count(MaximumCount - 1, "leaf points");
+      leaf.triangles = c[LeafTriangles].Count(MaximumCount - 1, "leaf triangles");
       if (leaf.flags & LeafHasBudget)
-        leaf.budget = r.U16() * tree.rootEpsilon / BudgetCodes;
+        leaf.budget = c[LeafBudgets].U16() * tree.rootEpsilon / BudgetCodes;
       leaves.push_back(leaf);
     }
   }
   if (!open.empty())
     throw CompactFormatError("tree section: fewer nodes than the children listed");
-  ReadPalette(r, palette);
+  c.Finish();
+  ReadPalette(r, columns, palette);
 }
 
 void AttachLeaves(FoldingTree& tree,

@@ -49,6 +49,35 @@ enum LeafFlags : uint8_t
   LeafHasInputBoundary = 2
 };
 
+/// The columns of the nodes and of the palette when the tree section is written field by
+/// field (ColumnWriter; header flag bit 2 of the file). The order is the file's.
+enum NodeColumn
+{
+  NodeKinds,     ///< u8 per node: kind | leaf reason << 2
+  NodeChildren,  ///< varint per inner node
+  NodeEpsilons,  ///< per node but the root: u8 k (epsilon = 2^-k root), 255 + f32 ratio
+  NodeFaces,     ///< varint per node
+  FoldNormals,   ///< 3 f32 per fold
+  FoldOffsets,   ///< f64 per fold: the plane's offset from the grid's corner
+  FoldCounts,    ///< 2 varints per fold: discarded faces, projected points
+  RotationAxes,  ///< per rotation node: 3 + 3 f64, varint order, varint discarded faces
+  LeafFlagBytes, ///< u8 per leaf (LeafFlags)
+  LeafPoints,    ///< varint per leaf
+  LeafTriangles, ///< varint per leaf
+  LeafBudgets,   ///< u16 per leaf (units of root epsilon / BudgetCodes)
+  NodeColumnCount
+};
+enum PaletteColumn
+{
+  PaletteTears,        ///< varint per entry
+  PalettePlanes,       ///< varint per entry
+  PaletteFlags,        ///< u8 per entry: projected | boundary << 2
+  PaletteRecordCounts, ///< varint per entry: its mirrored-flag records
+  PaletteRecords,      ///< 2 u8 per record: level, flag
+  PaletteMasks,        ///< varint per record
+  PaletteColumnCount
+};
+
 /// What the tree section says of a leaf before its geometry is decoded.
 struct LeafHeader
 {
@@ -62,16 +91,19 @@ struct LeafHeader
 Palette MakePalette(const FoldingTree& tree);
 
 /// Writes the tree section: counts, nodes, leaf headers (with each leaf's stored error budget,
-/// less `quantizationError`) and the palette.
+/// less `quantizationError`) and the palette; the nodes and the palette record by record, or
+/// (`columns`) field by field (NodeColumn, PaletteColumn).
 void WriteTreeSection(const FoldingTree& tree,
   const LeafGeometryCoding& coding,
   double quantizationError,
   const Palette& palette,
+  bool columns,
   ByteWriter& w);
 
 /// Reads what WriteTreeSection wrote (throws CompactFormatError on malformed input); the
 /// point symbols may follow (the caller checks the section's end).
 void ReadTreeSection(ByteReader& r,
+  bool columns,
   FoldingTree& tree,
   LeafGeometryCoding& coding,
   std::vector<LeafHeader>& leaves,

@@ -9,7 +9,8 @@
 //   triangle's), budgets never above the original's minus the quantisation error;
 // - unfolding the decoded tree stays within the root epsilon of the input (proved Hausdorff
 //   bound over whole surfaces), quantisation included, for automatic and for 8 bits;
-// - the same bytes for the same tree (determinism), fewer bytes with fewer bits;
+// - the same bytes for the same tree (determinism), fewer bytes with fewer bits; the tree
+//   section field by field (the default) and record by record both read back;
 // - user arrays (per point, per triangle) come back byte for byte, the leaves' order kept;
 // - bad input fails cleanly with an error, never a crash: every truncation of a file, flipped
 //   bytes (checksum), flipped bytes in the tree section behind a valid checksum (a small fuzz
@@ -41,12 +42,14 @@ std::string Encode(const FoldingTree& tree,
   int bits,
   CompactTreeStats* stats = nullptr,
   bool symbolsBeside = true,
-  bool weld = true)
+  bool weld = true,
+  bool columns = true)
 {
   CompactTreeOptions options;
   options.quantizationBits = bits;
   options.symbolsBesideGeometry = symbolsBeside;
   options.weldLeaves = weld;
+  options.nodeColumns = columns;
   std::string bytes, error;
   const bool ok = EncodeCompactTree(tree, options, bytes, stats, error);
   REQUIRE(ok, "EncodeCompactTree failed: " << error);
@@ -209,21 +212,25 @@ void CompareTrees(const FoldingTree& a, const FoldingTree& b, double quantizatio
 
 /// Encodes, decodes, compares, unfolds and bounds the distance to the input; `symbolsBeside`
 /// false writes the points' symbols as a Draco attribute (the first files' layout), `weld`
-/// false never welds the leaves' common points.
+/// false never welds the leaves' common points, `columns` false writes the tree section's
+/// nodes and palette record by record (the first files' layout).
 void RoundTrip(const TriangleMesh& input,
   const FoldingTree& tree,
   int bits,
   const char* name,
   bool symbolsBeside = true,
-  bool weld = true)
+  bool weld = true,
+  bool columns = true)
 {
   CompactTreeStats stats;
-  const std::string bytes = Encode(tree, bits, &stats, symbolsBeside, weld);
-  EXPECT(Encode(tree, bits, nullptr, symbolsBeside, weld) == bytes,
+  const std::string bytes = Encode(tree, bits, &stats, symbolsBeside, weld, columns);
+  EXPECT(Encode(tree, bits, nullptr, symbolsBeside, weld, columns) == bytes,
     name << ": the same bytes twice");
   const bool beside = (bytes.size() > 6 && (bytes[6] & 2));
   EXPECT(beside == symbolsBeside,
     name << ": symbols " << (beside ? "beside" : "inside") << " the Draco mesh");
+  EXPECT(columns || (bytes.size() > 6 && !(bytes[6] & 4)),
+    name << ": without columns the tree section is written record by record");
   FoldingTree decoded;
   std::string error;
   double quantization = -1;
@@ -368,8 +375,12 @@ void BadInput(const FoldingTree& tree)
   layout[6] ^= 2;
   Reseal(layout);
   Rejected(layout, "the symbols' layout flag switched");
+  std::string columns = good;
+  columns[6] ^= 4;
+  Reseal(columns);
+  Rejected(columns, "the column flag switched");
   std::string unknown = good;
-  unknown[6] |= 4;
+  unknown[6] |= 8;
   Reseal(unknown);
   Rejected(unknown, "an unknown flag");
   std::string magic = good;
@@ -423,7 +434,7 @@ int main()
   cases.push_back({ "three-plane shape", pm::MakeThreePlaneShape(3000), 0.13 });
   cases.push_back({ "blob with attachment", pm::MakeBlobWithAsymmetricPart(3000, 0.1, 2), 0.05 });
   cases.push_back({ "moved bilateral blob", moved, 0.05 });
-  FoldingTree first;
+  FoldingTree first, columned; // the first tree; the first whose tree section is in columns
   for (const Case& c : cases)
   {
     const TriangleMesh input = coretest::ToTriangleMesh(c.mesh.mesh);
@@ -435,6 +446,15 @@ int main()
     RoundTrip(input, tree, 8, c.name);
     RoundTrip(input, tree, 0, c.name, false);
     RoundTrip(input, tree, 0, c.name, true, false);
+    RoundTrip(input, tree, 0, c.name, true, true, false);
+    const std::string smaller = Encode(tree, 0);
+    const size_t records = Encode(tree, 0, nullptr, true, true, false).size();
+    std::printf("%s: %zu bytes with the tree section %s, %zu record by record\n",
+      c.name,
+      smaller.size(),
+      (smaller[6] & 4) ? "field by field" : "record by record",
+      records);
+    EXPECT(smaller.size() <= records, c.name << ": trying both layouts never costs bytes");
     const size_t welded = Encode(tree, 0).size();
     const size_t separate = Encode(tree, 0, nullptr, true, false).size();
     std::printf("%s: %zu bytes with the leaves' common points welded, %zu without\n",
@@ -451,6 +471,8 @@ int main()
     EXPECT(Encode(tree, 8).size() < Encode(tree, 16).size(), c.name << ": fewer bits, fewer bytes");
     if (first.Empty())
       first = tree;
+    if (columned.Empty() && (smaller[6] & 4))
+      columned = tree;
   }
   // A single-leaf tree (no fold allowed).
   const TriangleMesh sphere = coretest::ToTriangleMesh(pm::MakeSphere(2000).mesh);
@@ -462,5 +484,7 @@ int main()
   RoundTrip(sphere, leaf, 0, "single leaf");
   Arrays(first);
   BadInput(first);
+  REQUIRE(!columned.Empty(), "no tree was written field by field");
+  BadInput(columned); // the column reader against the same corruptions
   return coretest::Finish("TestCompactTreeFormat");
 }
