@@ -89,6 +89,10 @@ original and stored faces, compression, tree height, folds, leaves and time.
   --keep-copy-density      (roundtrip only) as for unfold
   --no-stitch              (roundtrip only) as for unfold
   --no-close-holes         (roundtrip only) as for unfold
+  --distance-locator static|facetree
+                           (roundtrip only) what answers the closest-triangle queries of its
+                           distances: vtkStaticCellLocator (default, as unfold --original) or
+                           the core's face tree (the same distances, 7-10x faster)
   Other builder parameters (the Use* switches of the stop criteria, RequireMeaningfulSymmetry)
   keep their defaults here; they are set in C++, Python and ParaView.
   --up auto|x|y|z          the picture's up axis (default auto: +Y, +Z when Y is the thinnest

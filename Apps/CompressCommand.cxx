@@ -42,6 +42,8 @@ int Compress(int argc, char* argv[])
     ParseFoldArguments(static_cast<int>(foldArguments.size()), foldArguments.data());
   if (f.keepProjectedPoints || f.keepCopyDensity || f.noStitch || f.noCloseHoles)
     throw std::runtime_error("unfolding options belong to decompress, not compress");
+  if (f.distanceLocator)
+    throw std::runtime_error("--distance-locator is an option of roundtrip");
   std::string error;
   vtkSmartPointer<vtkPolyData> mesh = foldingmeshes::ReadMesh(f.meshPath, error);
   if (!mesh)

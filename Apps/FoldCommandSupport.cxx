@@ -95,6 +95,15 @@ FoldSettings ParseFoldArguments(int argc, char* argv[])
       f.noStitch = true;
     else if (arg == "--no-close-holes")
       f.noCloseHoles = true;
+    else if (arg == "--distance-locator")
+    {
+      const std::string which = value("--distance-locator");
+      if (which != "static" && which != "facetree")
+        throw std::runtime_error(
+          "--distance-locator must be static or facetree, not '" + which + "'");
+      f.distanceLocator =
+        which == "static" ? DistanceLocator::StaticCellLocator : DistanceLocator::FaceTree;
+    }
     else if (arg == "--outdir")
       f.outdir = value("--outdir");
     else if (arg == "--up")

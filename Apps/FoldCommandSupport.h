@@ -4,6 +4,7 @@
 #define foldingmeshes_FoldCommandSupport_h
 
 #include "CommandLine.h"
+#include "MeshComparison.h"
 #include "vtkFoldingTreeBuilder.h"
 
 #include <vtkAlgorithm.h>
@@ -33,16 +34,17 @@ struct FoldSettings
   std::optional<int> method;
   std::optional<int> randomSeed;
   std::optional<int> sampledSearchAboveFaces;
-  bool tightSymmetry = false;          // --tight-symmetry: RequireTightSymmetry on
-  bool noVerifyBound = false;          // --no-verify-bound: VerifyBound off
-  bool separateParts = false;          // --separate-parts: ConnectNearbyParts off
-  bool rotationNodes = false;          // --rotation: RotationNodes on
-  std::optional<int> maxRotationOrder; // --max-rotation-order
-  int upAxis = -1;                     // the picture's up axis (--up; -1: auto)
-  bool keepProjectedPoints = false;    // roundtrip's unfolder: RemoveProjectedPoints off
-  bool keepCopyDensity = false;        // roundtrip's unfolder: MatchDiscardedDensity off
-  bool noStitch = false;               // roundtrip's unfolder: Stitch off
-  bool noCloseHoles = false;           // roundtrip's unfolder: CloseHoles off
+  bool tightSymmetry = false;                     // --tight-symmetry: RequireTightSymmetry on
+  bool noVerifyBound = false;                     // --no-verify-bound: VerifyBound off
+  bool separateParts = false;                     // --separate-parts: ConnectNearbyParts off
+  bool rotationNodes = false;                     // --rotation: RotationNodes on
+  std::optional<int> maxRotationOrder;            // --max-rotation-order
+  int upAxis = -1;                                // the picture's up axis (--up; -1: auto)
+  bool keepProjectedPoints = false;               // roundtrip's unfolder: RemoveProjectedPoints off
+  bool keepCopyDensity = false;                   // roundtrip's unfolder: MatchDiscardedDensity off
+  bool noStitch = false;                          // roundtrip's unfolder: Stitch off
+  bool noCloseHoles = false;                      // roundtrip's unfolder: CloseHoles off
+  std::optional<DistanceLocator> distanceLocator; // --distance-locator (roundtrip only)
 };
 
 /// The arguments of fold / unfold / roundtrip; throws std::runtime_error on a bad one.

@@ -29,6 +29,8 @@ int Fold(int argc, char* argv[])
     throw std::runtime_error("--no-stitch is an option of unfold and roundtrip");
   if (f.noCloseHoles)
     throw std::runtime_error("--no-close-holes is an option of unfold and roundtrip");
+  if (f.distanceLocator)
+    throw std::runtime_error("--distance-locator is an option of roundtrip");
   std::string error;
   vtkSmartPointer<vtkPolyData> mesh = foldingmeshes::ReadMesh(f.meshPath, error);
   if (!mesh)

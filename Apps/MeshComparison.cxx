@@ -1,6 +1,7 @@
 #include "MeshComparison.h"
 
 #include "SurfaceDistance.h"
+#include "vtkCellLocatorFaceQuery.h"
 
 #include <vtkCellArray.h>
 #include <vtkPolyData.h>
@@ -84,10 +85,26 @@ TriangleMesh ToTriangles(vtkPolyData* mesh)
 }
 }
 
-/// Symmetric Hausdorff distance (max) and mean distance over the samples of both meshes.
-void SymmetricSurfaceDistance(vtkPolyData* a, vtkPolyData* b, double& hausdorff, double& mean)
+ClosestFaceQueryFactory DistanceQueries(DistanceLocator locator)
 {
-  const SurfaceComparison c = CompareSurfaces(ToTriangles(a), ToTriangles(b));
+  return locator == DistanceLocator::StaticCellLocator ? CellLocatorFaceQueryFactory(nullptr)
+                                                       : ClosestFaceQueryFactory();
+}
+
+const char* ToString(DistanceLocator locator)
+{
+  return locator == DistanceLocator::StaticCellLocator ? "static" : "facetree";
+}
+
+/// Symmetric Hausdorff distance (max) and mean distance over the samples of both meshes.
+void SymmetricSurfaceDistance(vtkPolyData* a,
+  vtkPolyData* b,
+  double& hausdorff,
+  double& mean,
+  DistanceLocator locator)
+{
+  const SurfaceComparison c =
+    CompareSurfaces(ToTriangles(a), ToTriangles(b), DistanceQueries(locator));
   hausdorff = c.hausdorff;
   mean = c.mean;
 }
@@ -97,10 +114,11 @@ void CertifiedSurfaceDistance(vtkPolyData* a,
   double tolerance,
   double& lower,
   double& upper,
-  double floor)
+  double floor,
+  DistanceLocator locator)
 {
-  const HausdorffBounds bounds =
-    SymmetricHausdorffBounds(ToTriangles(a), ToTriangles(b), tolerance, 50000000, floor);
+  const HausdorffBounds bounds = SymmetricHausdorffBounds(
+    ToTriangles(a), ToTriangles(b), tolerance, 50000000, floor, DistanceQueries(locator));
   lower = bounds.lower;
   upper = bounds.upper;
 }
@@ -109,15 +127,16 @@ ProvedDistance ProvedSurfaceDistance(vtkPolyData* a,
   vtkPolyData* b,
   double tolerance,
   double threshold,
-  double decideTolerance)
+  double decideTolerance,
+  DistanceLocator locator)
 {
   ProvedDistance d;
-  CertifiedSurfaceDistance(a, b, tolerance, d.lower, d.upper);
+  CertifiedSurfaceDistance(a, b, tolerance, d.lower, d.upper, 0.0, locator);
   d.within = d.upper <= threshold ? 1 : d.lower > threshold ? -1 : 0;
   if (d.within == 0)
   {
     double lower = 0.0, upper = 0.0;
-    CertifiedSurfaceDistance(a, b, decideTolerance, lower, upper, threshold);
+    CertifiedSurfaceDistance(a, b, decideTolerance, lower, upper, threshold, locator);
     d.within = upper <= threshold + decideTolerance ? 1 : lower > threshold ? -1 : 0;
   }
   return d;

@@ -5,6 +5,8 @@
 #ifndef foldingmeshes_MeshComparison_h
 #define foldingmeshes_MeshComparison_h
 
+#include "ClosestFaceQuery.h"
+
 class vtkPolyData;
 
 namespace foldingmeshes
@@ -25,13 +27,34 @@ struct EdgeCounts
 EdgeCounts CountEdges(vtkPolyData* mesh);
 
 /**
+ * Which structure answers the closest-triangle queries of the measures below: a
+ * vtkStaticCellLocator (as vtkFoldingTreeUnfolder's distances to its "Original"; the users'
+ * design) or the core's face tree (the same distances, 4-20x faster; docs/benchmarks.md).
+ */
+enum class DistanceLocator
+{
+  StaticCellLocator,
+  FaceTree
+};
+
+/// The core's query factory for `locator` (null: the face tree).
+ClosestFaceQueryFactory DistanceQueries(DistanceLocator locator);
+
+/// The locator's name as the command line spells it ("static", "facetree").
+const char* ToString(DistanceLocator locator);
+
+/**
  * Symmetric Hausdorff distance and mean distance between the polygon surfaces of two meshes,
  * by the core's CompareSurfaces (Filters/Core/SurfaceDistance.h: exact point-to-surface
  * distances sampled at the vertices and face centroids of both meshes) - the same measure
  * vtkFoldingTreeUnfolder reports against its "Original" input. Lengths, not fractions of a
  * diagonal.
  */
-void SymmetricSurfaceDistance(vtkPolyData* a, vtkPolyData* b, double& hausdorff, double& mean);
+void SymmetricSurfaceDistance(vtkPolyData* a,
+  vtkPolyData* b,
+  double& hausdorff,
+  double& mean,
+  DistanceLocator locator = DistanceLocator::FaceTree);
 
 /**
  * The symmetric Hausdorff distance between the polygon surfaces of a and b over every point of
@@ -44,7 +67,8 @@ void CertifiedSurfaceDistance(vtkPolyData* a,
   double tolerance,
   double& lower,
   double& upper,
-  double floor = 0.0);
+  double floor = 0.0,
+  DistanceLocator locator = DistanceLocator::FaceTree);
 
 /// CertifiedSurfaceDistance within `tolerance`, and whether the distance is within
 /// `threshold`: -1 proved above it, 1 proved within it (to `decideTolerance`: where the first
@@ -59,7 +83,8 @@ ProvedDistance ProvedSurfaceDistance(vtkPolyData* a,
   vtkPolyData* b,
   double tolerance,
   double threshold,
-  double decideTolerance);
+  double decideTolerance,
+  DistanceLocator locator = DistanceLocator::FaceTree);
 }
 
 #endif

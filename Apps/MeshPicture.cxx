@@ -61,7 +61,8 @@ void FitCameraToVisibleProps(vtkRenderer* renderer, double aspect)
   for (int corner = 0; corner < 8; ++corner)
   {
     const double offset[3] = { bounds[(corner & 1) ? 1 : 0] - focal[0],
-      bounds[(corner & 2) ? 3 : 2] - focal[1], bounds[(corner & 4) ? 5 : 4] - focal[2] };
+      bounds[(corner & 2) ? 3 : 2] - focal[1],
+      bounds[(corner & 4) ? 5 : 4] - focal[2] };
     const double x = std::abs(vtkMath::Dot(offset, right));
     const double y = std::abs(vtkMath::Dot(offset, up));
     const double depth = vtkMath::Dot(offset, view); // towards the camera is negative
@@ -267,8 +268,8 @@ vtkSmartPointer<vtkRenderWindow> MakeCategoryScene(vtkPolyData* mesh,
     0.5 * (bounds[0] + bounds[1]), 0.5 * (bounds[2] + bounds[3]), 0.5 * (bounds[4] + bounds[5])
   };
   // Up: the given axis, else +Y (the convention of most mesh files) unless Y is the mesh's
-  // thinnest extent, then +Z; view: mostly along the thinner horizontal axis, turned towards the longer one and
-  // slightly from above, so a side view of animals and furniture with visible depth.
+  // thinnest extent, then +Z; view: mostly along the thinner horizontal axis, turned towards the
+  // longer one and slightly from above, so a side view of animals and furniture with visible depth.
   const double extent[3] = { bounds[1] - bounds[0], bounds[3] - bounds[2], bounds[5] - bounds[4] };
   if (upAxis < 0 || upAxis > 2)
     upAxis = (extent[1] <= extent[0] && extent[1] <= extent[2]) ? 2 : 1;

@@ -28,24 +28,30 @@ struct RoundtripResult
   EdgeCounts before, after;
   long long unfoldedFaces = 0;
   int removedProjected = 0, thinned = 0, original = 0, stored = 0, height = 0, gaps = 0;
-  double compression = 0.0, foldSeconds = 0.0, unfoldSeconds = 0.0;
+  double compression = 0.0, foldSeconds = 0.0, unfoldSeconds = 0.0, measureSeconds = 0.0;
+  DistanceLocator locator = DistanceLocator::StaticCellLocator;
   double Scale() const { return this->diagonal > 0 ? 1.0 / this->diagonal : 0.0; }
 };
 
-RoundtripResult MeasureRoundtrip(vtkPolyData* input, vtkPolyData* unfolded, vtkMultiBlockDataSet* tree)
+RoundtripResult MeasureRoundtrip(vtkPolyData* input,
+  vtkPolyData* unfolded,
+  vtkMultiBlockDataSet* tree,
+  DistanceLocator locator)
 {
+  const auto t0 = std::chrono::steady_clock::now();
   RoundtripResult r;
+  r.locator = locator;
   double bounds[6];
   input->GetBounds(bounds);
   r.diagonal = std::sqrt((bounds[1] - bounds[0]) * (bounds[1] - bounds[0]) +
     (bounds[3] - bounds[2]) * (bounds[3] - bounds[2]) +
     (bounds[5] - bounds[4]) * (bounds[5] - bounds[4]));
-  foldingmeshes::SymmetricSurfaceDistance(input, unfolded, r.hausdorff, r.mean);
+  foldingmeshes::SymmetricSurfaceDistance(input, unfolded, r.hausdorff, r.mean, locator);
   r.epsilon = TreeValue(tree, "RootEpsilon");
   // Over every point of both surfaces: a proved bound within 1e-5 of the diagonal, and whether
   // it is within epsilon decided to 1e-7 of the diagonal.
   const foldingmeshes::ProvedDistance proved = foldingmeshes::ProvedSurfaceDistance(
-    input, unfolded, 1e-5 * r.diagonal, r.epsilon, 1e-7 * r.diagonal);
+    input, unfolded, 1e-5 * r.diagonal, r.epsilon, 1e-7 * r.diagonal, locator);
   r.bound = proved.upper;
   r.within = proved.within > 0;
   r.before = foldingmeshes::CountEdges(input);
@@ -58,6 +64,7 @@ RoundtripResult MeasureRoundtrip(vtkPolyData* input, vtkPolyData* unfolded, vtkM
   r.stored = static_cast<int>(TreeValue(tree, "StoredFaces"));
   r.compression = TreeValue(tree, "Compression");
   r.height = static_cast<int>(TreeValue(tree, "TreeHeight"));
+  r.measureSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return r;
 }
 
@@ -75,6 +82,7 @@ void PrintRoundtripJson(const RoundtripResult& r)
               "  \"withinBound\": %s,\n  \"openEdgesBefore\": %lld,\n"
               "  \"openEdgesAfter\": %lld,\n  \"openGapCount\": %d,\n"
               "  \"foldSeconds\": %.3f,\n  \"unfoldSeconds\": %.3f,\n"
+              "  \"distanceLocator\": \"%s\",\n  \"measureSeconds\": %.3f,\n"
               "  \"outputs\": {\"tree\": %s, \"unfolded\": %s}\n}\n",
     JsonString(r.meshPath).c_str(),
     r.original,
@@ -99,6 +107,8 @@ void PrintRoundtripJson(const RoundtripResult& r)
     r.gaps,
     r.foldSeconds,
     r.unfoldSeconds,
+    ToString(r.locator),
+    r.measureSeconds,
     JsonString(r.treePath).c_str(),
     JsonString(r.unfoldedPath).c_str());
 }
@@ -136,8 +146,11 @@ void PrintRoundtripText(const RoundtripResult& r, const FoldSettings& f)
     static_cast<long long>(r.before.open),
     static_cast<long long>(r.after.open),
     r.gaps);
-  std::printf(
-    "time:                    fold %.3f s, unfold %.3f s\n", r.foldSeconds, r.unfoldSeconds);
+  std::printf("time:                    fold %.3f s, unfold %.3f s, distances %.3f s (%s)\n",
+    r.foldSeconds,
+    r.unfoldSeconds,
+    r.measureSeconds,
+    r.locator == DistanceLocator::StaticCellLocator ? "vtkStaticCellLocator" : "face tree");
   std::printf("wrote:                   %s\n                         %s\n",
     r.treePath.c_str(),
     r.unfoldedPath.c_str());
@@ -208,7 +221,8 @@ int Roundtrip(int argc, char* argv[])
     return 3;
   }
 
-  RoundtripResult r = MeasureRoundtrip(input, unfolded, tree);
+  RoundtripResult r = MeasureRoundtrip(
+    input, unfolded, tree, f.distanceLocator.value_or(DistanceLocator::StaticCellLocator));
   r.meshPath = f.meshPath;
   r.treePath = treePath;
   r.unfoldedPath = unfoldedPath;

@@ -17,6 +17,9 @@
 # 4f. compress writes STEM.fmz (JSON output and bytes, smaller than the .vtm tree), decompress
 #     --original gives the mesh back within the root epsilon (proved), unfold reads a .fmz,
 #     decompress refuses a .vtm and a 3-byte file (exit 2);
+# 4g. roundtrip measures its distances through vtkStaticCellLocator by default (JSON
+#     distanceLocator "static"); --distance-locator facetree gives the same Hausdorff values;
+#     another value, and the option on fold, exit 1 and name it;
 # 5. `--help` exits 0 and documents every command and the exit codes; `--version` exits 0.
 foreach (var FOLDINGMESHES MESH WORK_DIR)
   if (NOT DEFINED ${var})
@@ -258,6 +261,41 @@ if (CMAKE_VERSION VERSION_GREATER_EQUAL 3.19)
     message(FATAL_ERROR "roundtrip --no-stitch --no-close-holes: ${rawOpen} open edges, "
       "stitched and repaired ${repairedOpen} (exit ${rc}): ${rawOut}${err}")
   endif ()
+endif ()
+
+# 4g. The locator behind roundtrip's distances.
+string(JSON defaultLocator ERROR_VARIABLE jsonError GET "${out_roundtrip}" distanceLocator)
+if (jsonError OR NOT defaultLocator STREQUAL "static")
+  message(FATAL_ERROR "roundtrip JSON: distanceLocator '${defaultLocator}' ${jsonError} (expected static)")
+endif ()
+execute_process(COMMAND "${FOLDINGMESHES}" roundtrip "${MESH}" --distance-locator facetree
+  --outdir "${WORK_DIR}/facetree" --json --quiet RESULT_VARIABLE rc OUTPUT_VARIABLE tout ERROR_VARIABLE err)
+if (NOT rc EQUAL 0)
+  message(FATAL_ERROR "roundtrip --distance-locator facetree exited with ${rc}: ${err}")
+endif ()
+foreach (key IN ITEMS distanceLocator hausdorff hausdorffBoundFraction meanDistanceFraction)
+  string(JSON withTree ERROR_VARIABLE jsonError GET "${tout}" ${key})
+  string(JSON withLocator ERROR_VARIABLE jsonError2 GET "${out_roundtrip}" ${key})
+  if (jsonError OR jsonError2)
+    message(FATAL_ERROR "roundtrip JSON has no ${key}: ${jsonError} ${jsonError2}")
+  endif ()
+  if (key STREQUAL "distanceLocator")
+    if (NOT withTree STREQUAL "facetree")
+      message(FATAL_ERROR "roundtrip --distance-locator facetree: JSON says '${withTree}'")
+    endif ()
+  elseif (NOT withTree STREQUAL withLocator)
+    message(FATAL_ERROR "roundtrip ${key}: ${withTree} with the face tree, ${withLocator} with vtkStaticCellLocator")
+  endif ()
+endforeach ()
+execute_process(COMMAND "${FOLDINGMESHES}" roundtrip "${MESH}" --distance-locator kdtree
+  --outdir "${WORK_DIR}/facetree" --quiet RESULT_VARIABLE rc OUTPUT_VARIABLE o ERROR_VARIABLE err)
+if (NOT rc EQUAL 1 OR NOT err MATCHES "--distance-locator")
+  message(FATAL_ERROR "roundtrip --distance-locator kdtree: exit ${rc}, '${err}' (expected 1 naming the option)")
+endif ()
+execute_process(COMMAND "${FOLDINGMESHES}" fold "${MESH}" --distance-locator static
+  --outdir "${WORK_DIR}/facetree" --quiet RESULT_VARIABLE rc OUTPUT_VARIABLE o ERROR_VARIABLE err)
+if (NOT rc EQUAL 1 OR NOT err MATCHES "--distance-locator")
+  message(FATAL_ERROR "fold --distance-locator: exit ${rc}, '${err}' (expected 1 naming the option)")
 endif ()
 
 execute_process(COMMAND "${FOLDINGMESHES}" --help
