@@ -291,10 +291,13 @@ public:
 
   ///@{
   /**
-   * A cell locator to answer VerifyBound's distance queries (unfold(tree) against the input
-   * and back, over every point of both surfaces). nullptr (the default): the core's face tree,
-   * which gives the same distances (exact point-to-triangle distances) and builds the Table 1
-   * meshes 1.4-2x faster than vtkStaticCellLocator (docs/benchmarks.md, issue 19). A locator
+   * A cell locator to answer the builder's plain closest-triangle queries: VerifyBound's
+   * distances (unfold(tree) against the input and back, over every point of both surfaces)
+   * and the proof that every mirrored face stays within its limit at every point (per fold,
+   * over the node's region). nullptr (the default): the core's face tree, which gives the same
+   * distances (exact point-to-triangle distances; the trees can differ only where triangles
+   * tie for the closest) and builds the Table 1 meshes 1.4-2x faster than
+   * vtkStaticCellLocator (docs/benchmarks.md, issue 19). A locator
    * set here is not used itself: a new instance of its class is built per surface (its
    * settings are not copied); locators other than vtkStaticCellLocator are queried by one
    * thread at a time. The tree's "Tree" block names what answered in "VerificationLocator"

@@ -3,6 +3,7 @@
 #ifndef foldingmeshes_FaceTree_h
 #define foldingmeshes_FaceTree_h
 
+#include "ClosestFaceQuery.h"
 #include "PointTriangleDistance.h"
 #include "TriangleMesh.h"
 
@@ -146,6 +147,31 @@ private:
   std::vector<PackedFace> Packed; ///< per Order entry
   std::vector<int> OrderIndex;    ///< face id -> index into Order (-1: degenerate)
   std::vector<Node> Nodes;
+};
+
+/// FaceTree::ClosestFace behind the ClosestFaceQuery interface (degenerate faces left out, ties
+/// to the lowest id), for code that takes either the tree or a VTK cell locator.
+class FaceTreeQuery : public ClosestFaceQuery
+{
+public:
+  explicit FaceTreeQuery(const FaceTree& tree)
+    : Tree(tree)
+  {
+  }
+  ClosestFaceHit Closest(const Vec3& p) const override
+  {
+    return this->ClosestWithin(p, std::numeric_limits<double>::infinity());
+  }
+  ClosestFaceHit ClosestWithin(const Vec3& p, double radius) const override
+  {
+    const FaceTree::Hit hit = this->Tree.ClosestFace(p, radius);
+    if (!(hit.face >= 0 && hit.distance < radius))
+      return ClosestFaceHit();
+    return { hit.face, hit.distance, hit.point };
+  }
+
+private:
+  const FaceTree& Tree;
 };
 }
 

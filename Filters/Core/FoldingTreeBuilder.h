@@ -147,9 +147,11 @@ struct FoldingTreeOptions
    * proof per round (docs/benchmarks.md); the progress callback sees the first build only.
    */
   bool verifyBound = true;
-  /// The closest-face queries of verifyBound's distances (e.g. a VTK cell locator: the filter
-  /// passes vtkStaticCellLocator by default); empty: the core's FaceTree. Same distances
-  /// either way (exact point-to-triangle distances; TestCellLocatorDistances).
+  /// The plain closest-face queries of the builder (e.g. a VTK cell locator the user set on
+  /// the filter): verifyBound's distances and the mirrored-face proof of every fold
+  /// (MirroredFacesWithin, over the node's region); empty: the core's FaceTree. The same
+  /// distances either way (exact point-to-triangle distances; TestCellLocatorDistances), so
+  /// the same trees but where triangles tie for the closest.
   ClosestFaceQueryFactory verificationQueries;
   /**
    * How a vertex of a kept face lying on the discarded side reaches the fold plane. By

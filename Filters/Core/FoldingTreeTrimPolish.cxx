@@ -239,8 +239,17 @@ std::vector<char> Builder::Trim(const WorkMesh& w,
   ShrinkingSubsetDistances distances(pm, plane, this->Options.symmetry.compatibilityAngle, eps);
   ShrinkingMirrorBudget budget(
     w.points, w.budget, plane, eps, std::max(eps, 1e-12 * this->Tree.diagonal));
-  MirroredFaceCache mirroredFaces(
-    pm, [&]() -> const FaceTree& { return region; }, plane, MirroredFaceLevels);
+  // The mirrored-face proof's closest triangles: the region's face tree, or the user's
+  // locator over the region (built when a face first needs it).
+  const FaceTreeQuery treeQueries(region);
+  std::unique_ptr<ClosestFaceQuery> locatorQueries;
+  const auto queries = [&]() -> const ClosestFaceQuery&
+  {
+    if (this->Options.verificationQueries && !locatorQueries)
+      locatorQueries = this->Options.verificationQueries(TriangleMesh{ pm.points, pm.triangles });
+    return locatorQueries ? *locatorQueries : static_cast<const ClosestFaceQuery&>(treeQueries);
+  };
+  MirroredFaceCache mirroredFaces(pm, queries, plane, MirroredFaceLevels);
   for (int iteration = 0; iteration < 8; ++iteration)
   {
     if (!distances.Update(S))

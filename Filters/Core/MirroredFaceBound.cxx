@@ -17,7 +17,7 @@ namespace
 struct Corner
 {
   Vec3 x;
-  FaceTree::Hit hit; ///< closest triangle of the mesh (within the search radius)
+  ClosestFaceHit hit; ///< closest triangle of the mesh (within the search radius)
 };
 
 double TriangleDistance(const PreparedMesh& mesh, const Vec3& p, int face)
@@ -29,7 +29,7 @@ double TriangleDistance(const PreparedMesh& mesh, const Vec3& p, int face)
 
 /// True when the sub-triangle with these corners is proved within `limit` (see the header).
 bool Within(const PreparedMesh& mesh,
-  const FaceTree& tree,
+  const ClosestFaceQuery& queries,
   const std::array<Corner, 3>& c,
   double limit,
   double radius,
@@ -41,7 +41,7 @@ bool Within(const PreparedMesh& mesh,
   // Candidates T: the triangles closest to the centroid (inside a face this piece may lie
   // on: the one tie-free choice for a copy that coincides with a face) and to the corners.
   const Vec3 centroid = (c[0].x + c[1].x + c[2].x) / 3.0;
-  const FaceTree::Hit centre = tree.ClosestFace(centroid, radius);
+  const ClosestFaceHit centre = queries.ClosestWithin(centroid, radius);
   if (!(centre.face >= 0 && centre.distance < limit))
     return false;
   // The distance is 1-Lipschitz: at most dist(centroid) + the corners' distance to it (this
@@ -69,21 +69,21 @@ bool Within(const PreparedMesh& mesh,
   }
   if (levels <= 0)
     return false;
-  auto corner = [&](const Vec3& x) { return Corner{ x, tree.ClosestFace(x, radius) }; };
+  auto corner = [&](const Vec3& x) { return Corner{ x, queries.ClosestWithin(x, radius) }; };
   const Corner m01 = corner(0.5 * (c[0].x + c[1].x)), m12 = corner(0.5 * (c[1].x + c[2].x)),
                m20 = corner(0.5 * (c[2].x + c[0].x));
   for (const std::array<Corner, 3>& child : { std::array<Corner, 3>{ c[0], m01, m20 },
          std::array<Corner, 3>{ m01, c[1], m12 },
          std::array<Corner, 3>{ m20, m12, c[2] },
          std::array<Corner, 3>{ m12, m20, m01 } })
-    if (!Within(mesh, tree, child, limit, radius, levels - 1))
+    if (!Within(mesh, queries, child, limit, radius, levels - 1))
       return false;
   return true;
 }
 }
 
 std::vector<char> MirroredFacesWithin(const PreparedMesh& mesh,
-  const std::function<const FaceTree&()>& tree,
+  const std::function<const ClosestFaceQuery&()>& queries,
   const Plane& plane,
   const std::vector<Triangle>& faces,
   const std::vector<Vec3>& points,
@@ -135,7 +135,7 @@ std::vector<char> MirroredFacesWithin(const PreparedMesh& mesh,
     }
   if (open.empty())
     return ok;
-  const FaceTree& faceTree = tree();
+  const ClosestFaceQuery& closest = queries();
   std::vector<Corner> mirrored(corners.size());
   ForRanges(static_cast<vtkIdType>(corners.size()),
     0,
@@ -144,7 +144,7 @@ std::vector<char> MirroredFacesWithin(const PreparedMesh& mesh,
       for (vtkIdType i = begin; i < end; ++i)
       {
         mirrored[i].x = plane.Reflect(points[corners[i]]);
-        mirrored[i].hit = faceTree.ClosestFace(mirrored[i].x, radius);
+        mirrored[i].hit = closest.ClosestWithin(mirrored[i].x, radius);
       }
     });
   ForRanges(static_cast<vtkIdType>(open.size()),
@@ -157,7 +157,7 @@ std::vector<char> MirroredFacesWithin(const PreparedMesh& mesh,
         const std::array<Corner, 3> c = { mirrored[cornerIndex[faces[k][0]]],
           mirrored[cornerIndex[faces[k][1]]],
           mirrored[cornerIndex[faces[k][2]]] };
-        ok[k] = Within(mesh, faceTree, c, limit[k], radius, depth);
+        ok[k] = Within(mesh, closest, c, limit[k], radius, depth);
       }
     });
   return ok;

@@ -14,8 +14,11 @@ namespace foldingmeshes
 /**
  * For every triangle `faces[k]` (indices into `points`): true when every point x of its
  * mirror image through `plane` is provably closer than limit[k] to the surface of `mesh`
- * (plain Euclidean distance to its non-degenerate triangles; `tree` returns a FaceTree over
- * it, and is called once, serially, only if a face needs more than the quick proof). The
+ * (plain Euclidean distance to its triangles; `queries` returns a closest-triangle query over
+ * them - a FaceTreeQuery, which leaves degenerate triangles out, or a VTK cell locator, which
+ * measures them as their edges - and is called once, serially, only if a face needs more
+ * than the quick proof; any query gives a sound proof, the answers can differ only where
+ * triangles tie for the closest). The
  * proof: dist(x, mesh) <= dist(x, T) for any triangle T of the mesh, and dist(., T) is convex,
  * so on a (sub)triangle P it is at most max over P's corners of dist(corner, T); T ranges
  * over the triangles closest to P's centroid and corners. Where that bound is not below the limit,
@@ -29,7 +32,7 @@ namespace foldingmeshes
  * it (MirroredFaceCache relies on that).
  */
 std::vector<char> MirroredFacesWithin(const PreparedMesh& mesh,
-  const std::function<const FaceTree&()>& tree,
+  const std::function<const ClosestFaceQuery&()>& queries,
   const Plane& plane,
   const std::vector<Triangle>& faces,
   const std::vector<Vec3>& points,

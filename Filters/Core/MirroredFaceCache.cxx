@@ -7,11 +7,11 @@
 namespace foldingmeshes
 {
 MirroredFaceCache::MirroredFaceCache(const PreparedMesh& mesh,
-  std::function<const FaceTree&()> tree,
+  std::function<const ClosestFaceQuery&()> queries,
   const Plane& plane,
   int depth)
   : Mesh(mesh)
-  , Tree(std::move(tree))
+  , Queries(std::move(queries))
   , Mirror(plane)
   , Depth(depth)
 {
@@ -70,7 +70,7 @@ std::vector<char> MirroredFaceCache::Within(const std::vector<int>& keys,
     testLimit.push_back(limit[k]);
   }
   const std::vector<char> tested = MirroredFacesWithin(this->Mesh,
-    this->Tree,
+    this->Queries,
     this->Mirror,
     testFaces,
     points,

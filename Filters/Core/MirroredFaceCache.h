@@ -11,7 +11,7 @@
 namespace foldingmeshes
 {
 /**
- * MirroredFacesWithin with one mesh, tree, plane and depth for faces that keep an identity
+ * MirroredFacesWithin with one mesh, query, plane and depth for faces that keep an identity
  * (a key, e.g. their id in the node's region) from call to call - Builder::Trim's iterations
  * over a shrinking region, where most faces keep their corners, corner distances and limit.
  *
@@ -23,11 +23,11 @@ class MirroredFaceCache
 {
 public:
   MirroredFaceCache(const PreparedMesh& mesh,
-    std::function<const FaceTree&()> tree,
+    std::function<const ClosestFaceQuery&()> queries,
     const Plane& plane,
     int depth);
 
-  /// MirroredFacesWithin(mesh, tree, plane, faces, points, cornerDistance, limit, depth), with
+  /// MirroredFacesWithin(mesh, queries, plane, faces, points, cornerDistance, limit, depth), with
   /// keys[k] (>= 0) the identity of faces[k].
   std::vector<char> Within(const std::vector<int>& keys,
     const std::vector<Triangle>& faces,
@@ -52,7 +52,7 @@ private:
     double limit);
 
   const PreparedMesh& Mesh;
-  const std::function<const FaceTree&()> Tree;
+  const std::function<const ClosestFaceQuery&()> Queries;
   const Plane Mirror;
   const int Depth;
   std::vector<Entry> Entries; ///< per key

@@ -67,10 +67,11 @@ bool Within(const PreparedMesh& mesh,
   for (const Vec3& x : image)
     points.push_back(plane.Reflect(x));
   const FaceTree tree(mesh);
+  const FaceTreeQuery queries(tree);
   // cornerDistance 1: the quick proof never applies (it is tested on its own below).
   return MirroredFacesWithin(
     mesh,
-    [&]() -> const FaceTree& { return tree; },
+    [&]() -> const ClosestFaceQuery& { return queries; },
     plane,
     { Triangle{ 0, 1, 2 } },
     points,
@@ -119,12 +120,13 @@ int main(int argc, char* argv[])
       plane.Reflect(Vec3(0.5, 0.52, 0.01)) };
     bool called = false;
     const FaceTree tree(flat);
+    const FaceTreeQuery queries(tree);
     const std::vector<char> ok = MirroredFacesWithin(
       flat,
-      [&]() -> const FaceTree&
+      [&]() -> const ClosestFaceQuery&
       {
         called = true;
-        return tree;
+        return queries;
       },
       plane,
       { Triangle{ 0, 1, 2 } },

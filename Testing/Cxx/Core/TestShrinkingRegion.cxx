@@ -79,11 +79,12 @@ public:
     , Eps(eps)
     , Name(name)
     , Region(mesh)
+    , RegionQueries(Region)
     , Distances(mesh, plane, kCompatibilityAngle, eps)
     , Budget(mesh.points, this->PointBudget, plane, eps, eps)
     , Faces(
         mesh,
-        [this]() -> const FaceTree& { return this->Region; },
+        [this]() -> const ClosestFaceQuery& { return this->RegionQueries; },
         plane,
         kLevels)
   {
@@ -166,7 +167,7 @@ public:
       const std::vector<char> within = this->Faces.Within(keys, faces, spm.points, d, scaled);
       const std::vector<char> fresh = MirroredFacesWithin(
         this->Mesh,
-        [this]() -> const FaceTree& { return this->Region; },
+        [this]() -> const ClosestFaceQuery& { return this->RegionQueries; },
         this->Mirror,
         faces,
         spm.points,
@@ -192,6 +193,7 @@ private:
   const std::string Name;
   std::vector<double> PointBudget;
   const FaceTree Region;
+  const FaceTreeQuery RegionQueries;
   ShrinkingSubsetDistances Distances;
   ShrinkingMirrorBudget Budget;
   MirroredFaceCache Faces;
