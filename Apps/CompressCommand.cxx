@@ -1,5 +1,7 @@
 // foldingmeshes compress: a mesh folded and written as a compact folding tree (.fmz). Its
-// counterpart, decompress, is the unfold command on a .fmz file (FoldCommands.cxx).
+// counterpart, decompress, is the unfold command on a .fmz file (FoldCommands.cxx). With
+// --search, a few other fold settings are tried as well and the smallest file is kept.
+#include "CompressionSearch.h"
 #include "FoldCommandSupport.h"
 #include "MeshIO.h"
 #include "vtkFoldingTreeCompactWriter.h"
@@ -18,11 +20,59 @@ namespace foldingmeshes
 {
 namespace cli
 {
+namespace
+{
+/// One fold and write: the builder (for the tree's numbers) and the writer (bytes, bits).
+struct CompressedCandidate
+{
+  vtkSmartPointer<vtkFoldingTreeBuilder> builder;
+  vtkSmartPointer<vtkFoldingTreeCompactWriter> writer;
+  long long bytes = 0;
+};
+
+/// Folds `mesh` with `f` (and `variant`'s settings, if any) and writes the tree to `path`; false
+/// with `error` (and `code`: 2 the fold failed, 3 the file could not be written).
+bool FoldAndWrite(vtkPolyData* mesh,
+  const FoldSettings& f,
+  const FoldSearchVariant* variant,
+  int bits,
+  bool keepArrays,
+  const std::string& path,
+  CompressedCandidate& c,
+  std::string& error,
+  int& code)
+{
+  c.builder = vtkSmartPointer<vtkFoldingTreeBuilder>::New();
+  ConfigureBuilder(c.builder, f);
+  if (variant)
+    ApplyFoldSearchVariant(c.builder, *variant);
+  c.builder->SetInputData(mesh);
+  if (!RunFilter(c.builder, "folding", f.quiet, error))
+  {
+    error = f.meshPath + ": " + error;
+    code = 2;
+    return false;
+  }
+  c.writer = vtkSmartPointer<vtkFoldingTreeCompactWriter>::New();
+  c.writer->SetInputConnection(c.builder->GetOutputPort(0));
+  c.writer->SetFileName(path.c_str());
+  c.writer->SetQuantizationBits(bits);
+  c.writer->SetStoreUserArrays(keepArrays);
+  if (!MakeOutdir(f.outdir, error) || !RunFilter(c.writer, "writing", true, error))
+  {
+    code = 3;
+    return false;
+  }
+  c.bytes = static_cast<long long>(c.writer->GetBytesWritten());
+  return true;
+}
+}
+
 int Compress(int argc, char* argv[])
 {
   // --quantization-bits and --keep-arrays are compress's own; the rest are the fold command's.
   int bits = 0;
-  bool keepArrays = false;
+  bool keepArrays = false, search = false;
   std::vector<char*> foldArguments;
   for (int i = 0; i < argc; ++i)
   {
@@ -35,6 +85,8 @@ int Compress(int argc, char* argv[])
     }
     else if (std::string(argv[i]) == "--keep-arrays")
       keepArrays = true;
+    else if (std::string(argv[i]) == "--search")
+      search = true;
     else
       foldArguments.push_back(argv[i]);
   }
@@ -52,26 +104,48 @@ int Compress(int argc, char* argv[])
     return 2;
   }
   const auto start = std::chrono::steady_clock::now();
-  vtkNew<vtkFoldingTreeBuilder> builder;
-  ConfigureBuilder(builder, f);
-  builder->SetInputData(mesh);
-  if (!RunFilter(builder, "folding", f.quiet, error))
-  {
-    std::cerr << "foldingmeshes: " << f.meshPath << ": " << error << "\n";
-    return 2;
-  }
   const std::string stem = std::filesystem::path(f.meshPath).stem().string();
   const std::string output = (std::filesystem::path(f.outdir) / (stem + ".fmz")).string();
-  vtkNew<vtkFoldingTreeCompactWriter> writer;
-  writer->SetInputConnection(builder->GetOutputPort(0));
-  writer->SetFileName(output.c_str());
-  writer->SetQuantizationBits(bits);
-  writer->SetStoreUserArrays(keepArrays);
-  if (!MakeOutdir(f.outdir, error) || !RunFilter(writer, "writing", true, error))
+  CompressedCandidate best;
+  int code = 0;
+  if (!FoldAndWrite(mesh, f, nullptr, bits, keepArrays, output, best, error, code))
   {
     std::cerr << "foldingmeshes: " << error << "\n";
-    return 3;
+    return code;
   }
+  // --search: the other settings, each written beside the output; a smaller file replaces it.
+  std::string chosen = "";
+  int tried = 1;
+  const std::string candidatePath = output + ".candidate";
+  for (const FoldSearchVariant& v : FoldSearchVariants)
+  {
+    if (!search)
+      break;
+    CompressedCandidate c;
+    ++tried;
+    if (!FoldAndWrite(mesh, f, &v, bits, keepArrays, candidatePath, c, error, code))
+    {
+      std::cerr << "foldingmeshes: " << error << "\n";
+      std::filesystem::remove(candidatePath);
+      return code;
+    }
+    std::error_code renamed;
+    if (c.bytes < best.bytes)
+    {
+      std::filesystem::rename(candidatePath, output, renamed);
+      if (renamed)
+      {
+        std::cerr << "foldingmeshes: cannot replace " << output << ": " << renamed.message()
+                  << "\n";
+        return 3;
+      }
+      best = c;
+      chosen = v.options;
+    }
+  }
+  std::filesystem::remove(candidatePath);
+  vtkFoldingTreeBuilder* builder = best.builder;
+  vtkFoldingTreeCompactWriter* writer = best.writer;
   const double seconds =
     std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   auto* tree = vtkMultiBlockDataSet::SafeDownCast(builder->GetOutputDataObject(0));
@@ -83,6 +157,7 @@ int Compress(int argc, char* argv[])
     std::printf("{\n  \"mesh\": %s,\n  \"output\": %s,\n  \"bytes\": %lld,\n"
                 "  \"originalFaces\": %d,\n  \"storedFaces\": %d,\n  \"rootEpsilon\": %.9g,\n"
                 "  \"quantizationBits\": %d,\n  \"quantizationError\": %.9g,\n"
+                "  \"foldSettingsTried\": %d,\n  \"foldOptions\": %s,\n"
                 "  \"seconds\": %.3f\n}\n",
       JsonString(f.meshPath).c_str(),
       JsonString(output).c_str(),
@@ -92,6 +167,8 @@ int Compress(int argc, char* argv[])
       epsilon,
       writer->GetQuantizationBitsUsed(),
       writer->GetQuantizationError(),
+      tried,
+      JsonString(chosen).c_str(),
       seconds);
   else
   {
@@ -102,6 +179,10 @@ int Compress(int argc, char* argv[])
       writer->GetQuantizationBitsUsed(),
       writer->GetQuantizationError(),
       epsilon);
+    if (search)
+      std::printf("fold settings:           %d tried, the smallest file with %s\n",
+        tried,
+        chosen.empty() ? "the options given" : chosen.c_str());
     std::printf("time:                    %.3f s\n", seconds);
     std::printf("wrote:                   %s (%lld bytes)\n", output.c_str(), bytes);
   }

@@ -2,12 +2,15 @@
 // with the proved Hausdorff distance of the decompressed mesh (issue 18). Prints numbers; not
 // a test. Usage:
 //   BenchmarkCompression [--threads N] [--bits N] [--rotation] DIR_OR_MESH...
-// (--rotation: the builder's RotationNodes on, issue 22.)
+// (--rotation: the builder's RotationNodes on, issue 22. --search: as `foldingmeshes compress
+// --search`, the fold settings of CompressionSearch.h are tried too and the smallest file is
+// kept; the last column names the settings that made it, t_c counts every fold.)
 // Columns: faces; binary PLY; zlib'd VTP (inline binary); Draco at draco_encoder's defaults
 // (11 position bits, -cl 7); Draco at the tree's bits; the .fmz; the ratio .fmz / Draco at the
 // same bits; the .fmz's quantisation bits; proved Hausdorff of the decompressed mesh to the
 // input over the diagonal (root epsilon: 0.02); compress (fold + encode) and decompress
 // (decode + unfold) seconds.
+#include "CompressionSearch.h"
 #include "MeshIO.h"
 #include "vtkFoldingTreeBuilder.h"
 #include "vtkFoldingTreeCompactReader.h"
@@ -35,6 +38,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <map>
 #include <string>
 #include <vector>
@@ -137,7 +141,7 @@ int main(int argc, char* argv[])
 {
   vtkSMPTools::SetBackend("STDThread");
   int bits = 0;
-  bool rotation = false;
+  bool rotation = false, search = false;
   std::vector<std::string> paths;
   for (int i = 1; i < argc; ++i)
   {
@@ -148,6 +152,8 @@ int main(int argc, char* argv[])
       bits = std::atoi(argv[++i]);
     else if (a == "--rotation")
       rotation = true;
+    else if (a == "--search")
+      search = true;
     else
     {
       const std::vector<std::string> found = foldingmeshes::MeshFiles(a);
@@ -156,11 +162,12 @@ int main(int argc, char* argv[])
   }
   if (paths.empty())
   {
-    std::fprintf(
-      stderr, "usage: %s [--threads N] [--bits N] [--rotation] DIR_OR_MESH...\n", argv[0]);
+    std::fprintf(stderr,
+      "usage: %s [--threads N] [--bits N] [--rotation] [--search] DIR_OR_MESH...\n",
+      argv[0]);
     return 1;
   }
-  std::printf("%-28s %7s %9s %9s %8s %8s %8s %6s %4s %8s %6s %6s\n",
+  std::printf("%-28s %7s %9s %9s %8s %8s %8s %6s %4s %8s %6s %6s %s\n",
     "mesh",
     "faces",
     "PLY",
@@ -172,7 +179,8 @@ int main(int argc, char* argv[])
     "Q",
     "Hmax/dg",
     "t_c",
-    "t_d");
+    "t_d",
+    search ? "settings (--search; none: the defaults)" : "");
   std::vector<double> ratios, table1Ratios;
   std::vector<std::string> table1Rows;
   for (const std::string& path : paths)
@@ -193,16 +201,34 @@ int main(int argc, char* argv[])
     const std::string stem = std::filesystem::path(path).stem().string();
 
     auto start = Clock::now();
-    vtkNew<vtkFoldingTreeBuilder> builder;
-    builder->SetInputData(mesh);
-    builder->SetRotationNodes(rotation);
-    vtkNew<vtkFoldingTreeCompactWriter> writer;
-    writer->SetInputConnection(builder->GetOutputPort(0));
-    writer->WriteToOutputStringOn();
-    writer->SetQuantizationBits(bits);
-    writer->Write();
+    // The default settings, then (--search) the variants; the smallest file wins, the earlier
+    // on ties.
+    std::string bytes;
+    int q = 0;
+    const char* chosen = "";
+    for (int k = -1;
+         k < (search ? static_cast<int>(std::size(foldingmeshes::FoldSearchVariants)) : 0);
+         ++k)
+    {
+      vtkNew<vtkFoldingTreeBuilder> builder;
+      builder->SetInputData(mesh);
+      builder->SetRotationNodes(rotation);
+      if (k >= 0)
+        foldingmeshes::ApplyFoldSearchVariant(builder, foldingmeshes::FoldSearchVariants[k]);
+      vtkNew<vtkFoldingTreeCompactWriter> writer;
+      writer->SetInputConnection(builder->GetOutputPort(0));
+      writer->WriteToOutputStringOn();
+      writer->SetQuantizationBits(bits);
+      writer->Write();
+      const std::string candidate = writer->GetOutputString();
+      if (!candidate.empty() && (bytes.empty() || candidate.size() < bytes.size()))
+      {
+        bytes = candidate;
+        q = writer->GetQuantizationBitsUsed();
+        chosen = k >= 0 ? foldingmeshes::FoldSearchVariants[k].options : "";
+      }
+    }
     const double compressSeconds = Since(start);
-    const std::string bytes = writer->GetOutputString();
     if (bytes.empty())
     {
       std::printf("%-28s compress failed\n", stem.c_str());
@@ -222,14 +248,13 @@ int main(int argc, char* argv[])
     const double bound = Field(unfolder->GetOutput(), "HausdorffToOriginalBoundRelative");
     std::filesystem::remove(file);
 
-    const int q = writer->GetQuantizationBitsUsed();
     const size_t draco11 = DracoBytes(mesh, 11), dracoQ = DracoBytes(mesh, q);
     const double ratio = dracoQ ? double(bytes.size()) / double(dracoQ) : 0.0;
     ratios.push_back(ratio);
     char row[512];
     std::snprintf(row,
       sizeof(row),
-      "%-28s %7lld %9zu %9zu %8zu %8zu %8zu %6.3f %4d %8.4f %6.3f %6.3f",
+      "%-28s %7lld %9zu %9zu %8zu %8zu %8zu %6.3f %4d %8.4f %6.3f %6.3f %s",
       stem.c_str(),
       static_cast<long long>(mesh->GetNumberOfCells()),
       PlyBytes(mesh),
@@ -241,7 +266,8 @@ int main(int argc, char* argv[])
       q,
       bound,
       compressSeconds,
-      decompressSeconds);
+      decompressSeconds,
+      chosen);
     std::printf("%s\n", row);
     std::fflush(stdout);
     const auto t = Table1.find(stem);

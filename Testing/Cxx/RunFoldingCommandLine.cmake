@@ -17,6 +17,8 @@
 # 4f. compress writes STEM.fmz (JSON output and bytes, smaller than the .vtm tree), decompress
 #     --original gives the mesh back within the root epsilon (proved), unfold reads a .fmz,
 #     decompress refuses a .vtm and a 3-byte file (exit 2);
+# 4f'. compress --search tries six fold settings and keeps the smallest file (no larger than
+#     compress's own), which decompresses within the root epsilon;
 # 4g. roundtrip measures its distances through vtkStaticCellLocator by default (JSON
 #     distanceLocator "static"); --distance-locator facetree gives the same Hausdorff values;
 #     another value, and the option on fold, exit 1 and name it;
@@ -261,6 +263,32 @@ if (CMAKE_VERSION VERSION_GREATER_EQUAL 3.19)
     message(FATAL_ERROR "roundtrip --no-stitch --no-close-holes: ${rawOpen} open edges, "
       "stitched and repaired ${repairedOpen} (exit ${rc}): ${rawOut}${err}")
   endif ()
+endif ()
+
+# 4f'. compress --search: six fold settings tried, a file no larger than compress's own, and
+# it decompresses within the root epsilon (proved).
+execute_process(COMMAND "${FOLDINGMESHES}" compress "${MESH}" --search --outdir "${WORK_DIR}/search"
+  --json --quiet RESULT_VARIABLE rc OUTPUT_VARIABLE sout ERROR_VARIABLE err)
+if (NOT rc EQUAL 0)
+  message(FATAL_ERROR "compress --search exited with ${rc}: ${err}")
+endif ()
+string(JSON searchBytes ERROR_VARIABLE jsonError GET "${sout}" bytes)
+string(JSON searchTried ERROR_VARIABLE jsonError2 GET "${sout}" foldSettingsTried)
+string(JSON searchOptions ERROR_VARIABLE jsonError3 GET "${sout}" foldOptions)
+string(JSON plainBytes GET "${cout}" bytes)
+message("compress --search: ${searchBytes} bytes (plain ${plainBytes}), ${searchTried} settings tried, chose '${searchOptions}'")
+if (jsonError OR jsonError2 OR jsonError3 OR NOT searchTried EQUAL 6 OR searchBytes GREATER plainBytes)
+  message(FATAL_ERROR "compress --search JSON: ${sout} ${jsonError} ${jsonError2} ${jsonError3}")
+endif ()
+file(GLOB leftovers "${WORK_DIR}/search/*.candidate")
+if (leftovers)
+  message(FATAL_ERROR "compress --search left ${leftovers} behind")
+endif ()
+execute_process(COMMAND "${FOLDINGMESHES}" decompress "${WORK_DIR}/search/${stem}.fmz" --original "${MESH}"
+  --outdir "${WORK_DIR}/search" --json --quiet RESULT_VARIABLE rc OUTPUT_VARIABLE dout2 ERROR_VARIABLE err)
+string(JSON searchBound ERROR_VARIABLE jsonError GET "${dout2}" hausdorffToOriginalBoundRelative)
+if (NOT rc EQUAL 0 OR jsonError OR searchBound LESS 0 OR searchBound GREATER epsilonFraction)
+  message(FATAL_ERROR "decompress of the --search file: exit ${rc}, bound ${searchBound} (root epsilon ${epsilonFraction}) ${err}")
 endif ()
 
 # 4g. The locator behind roundtrip's distances.
