@@ -142,11 +142,12 @@ its size, the stored faces and the quantisation.
                            the unfolded mesh stays within the root epsilon
   --keep-arrays            also store the mesh's point and cell arrays (lossless; a larger
                            file: the geometry is then coded in the leaves' order)
-  --search                 also fold with five other settings (--keep fewer, --min-faces 400,
-                           --min-area-fraction 0.2 and combinations) and keep the smallest
-                           file (JSON "foldOptions": the settings that made it; "" the ones
-                           given); six folds: about six times the time, files 6-44% smaller
-                           on the Table 1 stand-ins
+  --search                 also fold with up to five other settings (--keep fewer, --min-faces
+                           400, --min-area-fraction 0.2 and combinations, on top of the options
+                           given; settings already folded are not folded again) and keep the
+                           smallest file (JSON "foldOptions": what was added; "" none;
+                           "foldSettingsTried"); up to six folds: about six times the time,
+                           files 6-44% smaller on the Table 1 stand-ins
 decompress: unfolds a .fmz file like unfold (same options, --original too) and writes
 STEM.vtp and STEM.png in --outdir (JSON: "output"). Not kept in a .fmz: input ids, and user
 arrays without --keep-arrays (keep the .vtm for those). unfold reads .fmz files too.

@@ -12,8 +12,10 @@
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
+#include <set>
 #include <stdexcept>
 #include <string>
+#include <tuple>
 #include <vector>
 
 namespace foldingmeshes
@@ -30,11 +32,32 @@ struct CompressedCandidate
   long long bytes = 0;
 };
 
-/// Folds `mesh` with `f` (and `variant`'s settings, if any) and writes the tree to `path`; false
-/// with `error` (and `code`: 2 the fold failed, 3 the file could not be written).
+/// The settings a --search fold differs in (a variant that gives the user's own, or an
+/// earlier variant's, is not folded again).
+std::tuple<int, bool, int, bool, double> SearchKey(vtkFoldingTreeBuilder* b)
+{
+  return { b->GetKeepSide(),
+    b->GetUseMinimumFaces(),
+    b->GetMinimumFaces(),
+    b->GetUseMinimumAreaFraction(),
+    b->GetMinimumAreaFraction() };
+}
+
+/// A builder with `f`'s settings and (if any) `variant`'s.
+vtkSmartPointer<vtkFoldingTreeBuilder> MakeBuilder(const FoldSettings& f,
+  const FoldSearchVariant* variant)
+{
+  auto builder = vtkSmartPointer<vtkFoldingTreeBuilder>::New();
+  ConfigureBuilder(builder, f);
+  if (variant)
+    ApplyFoldSearchVariant(builder, *variant);
+  return builder;
+}
+
+/// Folds `mesh` with c.builder's settings and writes the tree to `path`; false with `error`
+/// (and `code`: 2 the fold failed, 3 the file could not be written).
 bool FoldAndWrite(vtkPolyData* mesh,
   const FoldSettings& f,
-  const FoldSearchVariant* variant,
   int bits,
   bool keepArrays,
   const std::string& path,
@@ -42,10 +65,6 @@ bool FoldAndWrite(vtkPolyData* mesh,
   std::string& error,
   int& code)
 {
-  c.builder = vtkSmartPointer<vtkFoldingTreeBuilder>::New();
-  ConfigureBuilder(c.builder, f);
-  if (variant)
-    ApplyFoldSearchVariant(c.builder, *variant);
   c.builder->SetInputData(mesh);
   if (!RunFilter(c.builder, "folding", f.quiet, error))
   {
@@ -107,27 +126,32 @@ int Compress(int argc, char* argv[])
   const std::string stem = std::filesystem::path(f.meshPath).stem().string();
   const std::string output = (std::filesystem::path(f.outdir) / (stem + ".fmz")).string();
   CompressedCandidate best;
+  best.builder = MakeBuilder(f, nullptr);
   int code = 0;
-  if (!FoldAndWrite(mesh, f, nullptr, bits, keepArrays, output, best, error, code))
+  if (!FoldAndWrite(mesh, f, bits, keepArrays, output, best, error, code))
   {
     std::cerr << "foldingmeshes: " << error << "\n";
     return code;
   }
   // --search: the other settings, each written beside the output; a smaller file replaces it.
+  // A variant that fails is skipped (the output holds the smallest file so far).
   std::string chosen = "";
   int tried = 1;
   const std::string candidatePath = output + ".candidate";
+  std::set<std::tuple<int, bool, int, bool, double>> folded{ SearchKey(best.builder) };
   for (const FoldSearchVariant& v : FoldSearchVariants)
   {
     if (!search)
       break;
     CompressedCandidate c;
+    c.builder = MakeBuilder(f, &v);
+    if (!folded.insert(SearchKey(c.builder)).second)
+      continue;
     ++tried;
-    if (!FoldAndWrite(mesh, f, &v, bits, keepArrays, candidatePath, c, error, code))
+    if (!FoldAndWrite(mesh, f, bits, keepArrays, candidatePath, c, error, code))
     {
-      std::cerr << "foldingmeshes: " << error << "\n";
-      std::filesystem::remove(candidatePath);
-      return code;
+      std::cerr << "foldingmeshes: --search, " << v.options << ": " << error << " (skipped)\n";
+      continue;
     }
     std::error_code renamed;
     if (c.bytes < best.bytes)
@@ -137,13 +161,15 @@ int Compress(int argc, char* argv[])
       {
         std::cerr << "foldingmeshes: cannot replace " << output << ": " << renamed.message()
                   << "\n";
+        std::filesystem::remove(candidatePath, renamed);
         return 3;
       }
       best = c;
       chosen = v.options;
     }
   }
-  std::filesystem::remove(candidatePath);
+  std::error_code removed;
+  std::filesystem::remove(candidatePath, removed);
   vtkFoldingTreeBuilder* builder = best.builder;
   vtkFoldingTreeCompactWriter* writer = best.writer;
   const double seconds =

@@ -16,7 +16,8 @@ struct FoldSearchVariant
   double minimumAreaFraction; ///< MinimumAreaFraction; 0: left as it is
 };
 
-/// In the order tried after the user's settings (a tie keeps the earlier file). Each is the
+/// In the order tried after the user's settings (a tie keeps the earlier file; a variant whose
+/// settings, on top of the user's, were folded already is skipped). Each is the
 /// smallest on at least one Table 1 stand-in (docs/compression.md, 2026-12-05).
 constexpr FoldSearchVariant FoldSearchVariants[] = {
   { "--keep fewer", true, 0, 0.0 },

@@ -323,9 +323,17 @@ int main(int argc, char* argv[])
     else if (arg == "--no-unfold")
       settings.unfold = false;
     else if (arg == "--distance-locator" && i + 1 < argc)
-      settings.locator = std::string(argv[++i]) == "facetree"
-        ? foldingmeshes::DistanceLocator::FaceTree
-        : foldingmeshes::DistanceLocator::StaticCellLocator;
+    {
+      const std::string which = argv[++i];
+      if (which != "static" && which != "facetree")
+      {
+        std::fprintf(
+          stderr, "--distance-locator must be static or facetree, not '%s'\n", which.c_str());
+        return 1;
+      }
+      settings.locator = which == "facetree" ? foldingmeshes::DistanceLocator::FaceTree
+                                             : foldingmeshes::DistanceLocator::StaticCellLocator;
+    }
     else
     {
       const std::vector<std::string> found = foldingmeshes::MeshFiles(arg);
