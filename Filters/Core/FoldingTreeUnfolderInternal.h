@@ -308,12 +308,12 @@ private:
     const std::vector<char>& isTear,
     double tol,
     std::vector<double>& rough);
-  static void FillSeamGaps(Piece& out,
+  void FillSeamGaps(Piece& out,
     std::vector<int>& faceChild,
     const std::vector<std::vector<int>>& children,
     const std::vector<char>& isTear,
     double tol,
-    SeamReport& seam);
+    SeamReport& seam) const;
 
   // FoldingTreeUnfolderStitching.cxx
   void Stitch(const FoldingNode& node,

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <functional>
 #include <limits>
 #include <map>
 #include <set>
@@ -173,13 +174,15 @@ public:
     const std::vector<std::vector<int>>& children,
     const std::vector<char>& isTear,
     double tol,
-    SeamReport& seam)
+    SeamReport& seam,
+    std::function<bool(int, int)> inputBorderEdge)
     : Out(out)
     , FaceChild(faceChild)
     , Children(children)
     , IsTear(isTear)
     , Tol(tol)
     , Seam(seam)
+    , InputBorderEdge(std::move(inputBorderEdge))
   {
     for (int f = 0; f < out.NumberOfFaces(); ++f)
     {
@@ -289,6 +292,12 @@ private:
     kids.erase(std::unique(kids.begin(), kids.end()), kids.end());
     if (kids.size() < 2 || 2 * tears < n)
       return false;
+    // A loop along the input's own border is the surface's edge, not a crack between the
+    // children (on a piece of a few faces it can look narrow: a fan's two leaves, 2026-12-05);
+    // a gap that opens into the border is the final repair's (CloseBorderGaps).
+    for (int i = 0; i < n; ++i)
+      if (this->InputBorderEdge(loop[i], loop[(i + 1) % n]))
+        return false;
     const double reach = 2.0 * std::max(this->Tol, perimeter / n);
     bool narrow = true;
     for (int i = 0; i < n && narrow; ++i)
@@ -320,7 +329,9 @@ private:
     ClipShortestEars(
       this->Out.points,
       poly,
-      [&](int a, int c) { return !this->Uses.count({ std::min(a, c), std::max(a, c) }); },
+      [&](int a, int c) {
+        return !this->Uses.count({ std::min(a, c), std::max(a, c) });
+      },
       [&](int a, int b, int c)
       {
         added.push_back({ a, b, c });
@@ -339,9 +350,8 @@ private:
       return false;
     }
     added.push_back({ poly[0], poly[1], poly[2] });
-    addedFace.push_back(this->HalfEdges.count({ poly[1], poly[0] })
-        ? this->HalfEdges[{ poly[1], poly[0] }]
-        : -1);
+    addedFace.push_back(
+      this->HalfEdges.count({ poly[1], poly[0] }) ? this->HalfEdges[{ poly[1], poly[0] }] : -1);
     if (!unfolder_detail::FillWithinTolerance(this->Out.points, loop, added, this->Tol))
     {
       // Not a narrow crack (nor small and flat): a flat fill may leave the surface by more
@@ -382,6 +392,7 @@ private:
   const std::vector<std::vector<int>>& Children;
   const std::vector<char>& IsTear;
   const double Tol;
+  const std::function<bool(int, int)> InputBorderEdge; ///< Unfolder::IsInputBorderEdge
   SeamReport& Seam;
   std::map<std::pair<int, int>, int> HalfEdges; // directed edge -> face
   std::map<std::pair<int, int>, int> Uses;      // undirected edge -> faces
@@ -396,7 +407,8 @@ private:
  * filled when it has 3..MaximumGapLoop vertices, touches two children, at least half of its
  * vertices are tear vertices of this level, and every vertex has a vertex of another child
  * on the loop within 2 * max(tol, mean loop edge): loops that include an ancestor's open
- * fold line or the input's own border fail that test and stay open; so does a loop whose
+ * fold line fail that test and stay open, a loop with an edge of the input's own border is
+ * never filled (IsInputBorderEdge); so does a loop whose
  * fill would not stay within `tol` of it (FillWithinTolerance: a narrow crack, or small and
  * flat), which bounds the fill by the seam's tolerance. New triangles take the attributes of
  * the face across their first loop edge.
@@ -406,9 +418,16 @@ void Unfolder::FillSeamGaps(Piece& out,
   const std::vector<std::vector<int>>& children,
   const std::vector<char>& isTear,
   double tol,
-  SeamReport& seam)
+  SeamReport& seam) const
 {
-  SeamGapFiller(out, faceChild, children, isTear, tol, seam).Run();
+  SeamGapFiller(out,
+    faceChild,
+    children,
+    isTear,
+    tol,
+    seam,
+    [this, &out](int a, int b) { return this->IsInputBorderEdge(out, a, b); })
+    .Run();
 }
 } // namespace unfolder_detail
 } // namespace foldingmeshes

@@ -32,8 +32,8 @@
 //   block) and every input face comes back (face count, no face dropped, the input's
 //   non-manifold edges, Hausdorff within the root epsilon).
 // - folds down to single faces (UseMinimumFaces off, and no stop criterion at all): a
-//   square and a single triangle keep their area, stay within the root epsilon, and the
-//   build ends (a fold removing no face is not made).
+//   square, a single triangle and a flat hexagonal fan keep their area, stay within the root
+//   epsilon, and the build ends (a fold removing no face is not made).
 //
 //   TestUnfoldingAccuracy [MESH...]
 #include "MeshIO.h"
@@ -403,6 +403,18 @@ void FoldsDownToSingleFaces()
       Triangles(
         { { 0, 0, 0 }, { 1, 0, 0 }, { 0, 1, 0 }, { 1, 1, 0 } }, { { 0, 1, 2 }, { 1, 3, 2 } }) },
     { "single triangle", Triangles({ { 0, 0, 0 }, { 1, 0, 0 }, { 0, 1, 0 } }, { { 0, 1, 2 } }) },
+    // A flat hexagon of six triangles around its centre (the option sweep's fan6): its two
+    // one-face leaves once made the seam-gap filler take the disc's own border for a gap,
+    // and the repair then capped it: twice the area, 14 faces.
+    { "hexagonal fan",
+      Triangles({ { 0, 0, 0 },
+                  { 1, 0, 0 },
+                  { 0.5, 0.8660254037844386, 0 },
+                  { -0.5, 0.8660254037844386, 0 },
+                  { -1, 0, 0 },
+                  { -0.5, -0.8660254037844386, 0 },
+                  { 0.5, -0.8660254037844386, 0 } },
+        { { 0, 1, 2 }, { 0, 2, 3 }, { 0, 3, 4 }, { 0, 4, 5 }, { 0, 5, 6 }, { 0, 6, 1 } }) },
   };
   for (const bool noStop : { false, true })
     for (const auto& [name, mesh] : meshes)
