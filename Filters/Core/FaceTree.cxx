@@ -57,6 +57,18 @@ FaceTree::FaceTree(const PreparedMesh& mesh)
   }
 }
 
+bool FaceTree::CompatibleAt(int face,
+  const ClosestPointOnTriangle& cp,
+  const Vec3& normal,
+  double cosLimit) const
+{
+  const Triangle& t = Mesh.triangles[face];
+  const Vec3 n = cp.barycentric[0] * Mesh.vertexNormals[t[0]] +
+    cp.barycentric[1] * Mesh.vertexNormals[t[1]] + cp.barycentric[2] * Mesh.vertexNormals[t[2]];
+  const double len = n.norm();
+  return len > 0.0 && n.dot(normal) >= cosLimit * len;
+}
+
 ClosestPointOnTriangle FaceTree::ClosestPoint(const Vec3& p, int k) const
 {
   const PackedFace& face = this->Packed[k];
@@ -217,14 +229,10 @@ bool FaceTree::TryFace(const Vec3& p,
   const int f = this->Order[k];
   if (excluded(f))
     return false;
-  const Triangle& t = Mesh.triangles[f];
   const ClosestPointOnTriangle cp = this->ClosestPoint(p, k);
   if (cp.squaredDistance > best2 || (cp.squaredDistance == best2 && hit.face >= 0 && f > hit.face))
     return false;
-  const Vec3 n = cp.barycentric[0] * Mesh.vertexNormals[t[0]] +
-    cp.barycentric[1] * Mesh.vertexNormals[t[1]] + cp.barycentric[2] * Mesh.vertexNormals[t[2]];
-  const double len = n.norm();
-  if (!(len > 0.0 && n.dot(normal) >= cosLimit * len))
+  if (!this->CompatibleAt(f, cp, normal, cosLimit))
     return false;
   best2 = cp.squaredDistance;
   hit.face = f;
@@ -299,13 +307,8 @@ bool FaceTree::CompatibleFaceHit(const Vec3& p,
   if (face < 0 || face >= Mesh.NumberOfFaces() || this->OrderIndex[face] < 0)
     return false;
   const ClosestPointOnTriangle cp = this->ClosestPoint(p, this->OrderIndex[face]);
-  if (!(cp.squaredDistance <= maxDistance * maxDistance))
-    return false;
-  const Triangle& t = Mesh.triangles[face];
-  const Vec3 n = cp.barycentric[0] * Mesh.vertexNormals[t[0]] +
-    cp.barycentric[1] * Mesh.vertexNormals[t[1]] + cp.barycentric[2] * Mesh.vertexNormals[t[2]];
-  const double len = n.norm();
-  if (!(len > 0.0 && n.dot(normal) >= cosLimit * len))
+  if (!(cp.squaredDistance <= maxDistance * maxDistance) ||
+    !this->CompatibleAt(face, cp, normal, cosLimit))
     return false;
   hit.face = face;
   hit.point = cp.point;

@@ -131,6 +131,12 @@ private:
     bool regular;    ///< IsRegularTriangle(a, b, c)
     bool planeBound; ///< `normal` is accurate enough for the plane bound of Beyond
   };
+  /// The compatibility test of ClosestCompatibleFace: the normal interpolated (from the vertex
+  /// normals) at `cp`, the closest point of face `face`, is within acos(cosLimit) of `normal`.
+  bool CompatibleAt(int face,
+    const ClosestPointOnTriangle& cp,
+    const Vec3& normal,
+    double cosLimit) const;
   /// Closest point on the packed face k (index into Order), without the sphere test.
   ClosestPointOnTriangle ClosestPoint(const Vec3& p, int k) const;
   /// True when packed face k is provably farther than sqrt(best2) from p. The face lies in

@@ -16,18 +16,16 @@ struct SurfaceDistanceQuery::Internal
   PreparedMesh Mesh; // only what FaceTree reads: points, triangles, centroids, normals
   std::unique_ptr<FaceTree> Tree;
   std::unique_ptr<ClosestFaceQuery> External; // the factory's query, when given
+  std::unique_ptr<FaceTreeQuery> Own;         // else the tree's
 
   ClosestFaceHit Closest(const Vec3& p) const
   {
-    if (this->External)
-      return this->External->Closest(p);
-    const FaceTree::Hit hit = this->Tree->ClosestFace(p, std::numeric_limits<double>::infinity());
-    return { hit.face, hit.distance };
+    return this->External ? this->External->Closest(p) : this->Own->Closest(p);
   }
 };
 
-SurfaceDistanceQuery::SurfaceDistanceQuery(
-  const TriangleMesh& surface, const ClosestFaceQueryFactory& factory)
+SurfaceDistanceQuery::SurfaceDistanceQuery(const TriangleMesh& surface,
+  const ClosestFaceQueryFactory& factory)
   : Impl(new Internal)
 {
   PreparedMesh& m = this->Impl->Mesh;
@@ -45,7 +43,10 @@ SurfaceDistanceQuery::SurfaceDistanceQuery(
   if (factory)
     this->Impl->External = factory(surface);
   if (!this->Impl->External)
+  {
     this->Impl->Tree.reset(new FaceTree(m));
+    this->Impl->Own.reset(new FaceTreeQuery(*this->Impl->Tree));
+  }
 }
 
 SurfaceDistanceQuery::~SurfaceDistanceQuery() = default;
@@ -152,8 +153,9 @@ void OneWay(const TriangleMesh& from,
 }
 }
 
-SurfaceComparison CompareSurfaces(
-  const TriangleMesh& a, const TriangleMesh& b, const ClosestFaceQueryFactory& factory)
+SurfaceComparison CompareSurfaces(const TriangleMesh& a,
+  const TriangleMesh& b,
+  const ClosestFaceQueryFactory& factory)
 {
   SurfaceComparison result;
   const bool aEmpty = a.triangles.empty(), bEmpty = b.triangles.empty();
