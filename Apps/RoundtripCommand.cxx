@@ -29,6 +29,7 @@ struct RoundtripResult
   long long unfoldedFaces = 0;
   int removedProjected = 0, thinned = 0, original = 0, stored = 0, height = 0, gaps = 0;
   double compression = 0.0, foldSeconds = 0.0, unfoldSeconds = 0.0, measureSeconds = 0.0;
+  double areaRatio = 0.0; ///< unfolded surface area / the input's (the unfolder's AreaRatio)
   DistanceLocator locator = DistanceLocator::StaticCellLocator;
   double Scale() const { return this->diagonal > 0 ? 1.0 / this->diagonal : 0.0; }
 };
@@ -60,6 +61,7 @@ RoundtripResult MeasureRoundtrip(vtkPolyData* input,
   r.removedProjected = static_cast<int>(FieldValue(unfolded, "RemovedProjectedPoints"));
   r.thinned = static_cast<int>(FieldValue(unfolded, "ThinnedCopyPoints"));
   r.gaps = static_cast<int>(FieldValue(unfolded, "OpenGapCount"));
+  r.areaRatio = FieldValue(unfolded, "AreaRatio");
   r.original = static_cast<int>(TreeValue(tree, "OriginalFaces"));
   r.stored = static_cast<int>(TreeValue(tree, "StoredFaces"));
   r.compression = TreeValue(tree, "Compression");
@@ -80,7 +82,7 @@ void PrintRoundtripJson(const RoundtripResult& r)
               "  \"hausdorffFraction\": %.9g,\n  \"hausdorffBoundFraction\": %.9g,\n"
               "  \"meanDistanceFraction\": %.9g,\n"
               "  \"withinBound\": %s,\n  \"openEdgesBefore\": %lld,\n"
-              "  \"openEdgesAfter\": %lld,\n  \"openGapCount\": %d,\n"
+              "  \"openEdgesAfter\": %lld,\n  \"openGapCount\": %d,\n  \"areaRatio\": %.6f,\n"
               "  \"foldSeconds\": %.3f,\n  \"unfoldSeconds\": %.3f,\n"
               "  \"distanceLocator\": \"%s\",\n  \"measureSeconds\": %.3f,\n"
               "  \"outputs\": {\"tree\": %s, \"unfolded\": %s}\n}\n",
@@ -105,6 +107,7 @@ void PrintRoundtripJson(const RoundtripResult& r)
     static_cast<long long>(r.before.open),
     static_cast<long long>(r.after.open),
     r.gaps,
+    r.areaRatio,
     r.foldSeconds,
     r.unfoldSeconds,
     ToString(r.locator),
@@ -146,6 +149,8 @@ void PrintRoundtripText(const RoundtripResult& r, const FoldSettings& f)
     static_cast<long long>(r.before.open),
     static_cast<long long>(r.after.open),
     r.gaps);
+  std::printf(
+    "surface area:            %.4f of the input's (above 1: surface laid twice)\n", r.areaRatio);
   std::printf("time:                    fold %.3f s, unfold %.3f s, distances %.3f s (%s)\n",
     r.foldSeconds,
     r.unfoldSeconds,

@@ -21,6 +21,7 @@
 
 #include <algorithm>
 #include <cstring>
+#include <limits>
 #include <unordered_map>
 #include <utility>
 
@@ -304,6 +305,17 @@ void AddUnfoldingSummary(const UnfoldedMesh& mesh, const FoldingTree& tree, vtkF
   const vtkIdType nf = mesh.NumberOfFaces();
   AddFieldValue(fd, "UnfoldedFaces", static_cast<double>(nf));
   AddFieldValue(fd, "UnfoldedPoints", static_cast<double>(np));
+  // The surface area against the input's (the tree's OriginalArea): above 1 where the
+  // unfolding laid surface twice (overlapping copies, fills over existing faces), below where
+  // it left gaps - what the Hausdorff distance cannot see.
+  double area = 0.0;
+  for (const auto& t : mesh.triangles)
+    area += 0.5 *
+      (mesh.points[t[1]] - mesh.points[t[0]]).cross(mesh.points[t[2]] - mesh.points[t[0]]).norm();
+  AddFieldValue(fd, "UnfoldedArea", area);
+  AddFieldValue(fd,
+    "AreaRatio",
+    tree.originalArea > 0.0 ? area / tree.originalArea : std::numeric_limits<double>::quiet_NaN());
   AddFieldValue(fd, "NumberOfCopies", static_cast<double>(mesh.copies.size()));
   AddFieldValue(fd, "PlaneMergedVertices", mesh.planeMergedVertices);
   AddFieldValue(fd, "RemovedProjectedPoints", mesh.removedProjectedPoints);

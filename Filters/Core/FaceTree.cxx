@@ -316,7 +316,9 @@ bool FaceTree::CompatibleFaceHit(const Vec3& p,
   return true;
 }
 
-FaceTree::Hit FaceTree::ClosestFace(const Vec3& p, double maxDistance) const
+FaceTree::Hit FaceTree::ClosestFace(const Vec3& p,
+  double maxDistance,
+  const std::vector<char>* excluded) const
 {
   Hit hit;
   if (this->Nodes.empty())
@@ -331,6 +333,8 @@ FaceTree::Hit FaceTree::ClosestFace(const Vec3& p, double maxDistance) const
       if (this->Beyond(p, k, best2))
         return;
       const int f = this->Order[k];
+      if (excluded && (*excluded)[f])
+        return;
       const ClosestPointOnTriangle cp = this->ClosestPoint(p, k);
       if (cp.squaredDistance < best2 ||
         (cp.squaredDistance == best2 && (hit.face < 0 || f < hit.face)))

@@ -65,8 +65,11 @@ public:
     double maxDistance,
     int face,
     Hit& hit) const;
-  /// The face closest to p, whatever its normal (closer than maxDistance; else face -1).
-  Hit ClosestFace(const Vec3& p, double maxDistance) const;
+  /// The face closest to p, whatever its normal (closer than maxDistance; else face -1), among
+  /// the faces f with !(*excluded)[f] when `excluded` (per face of the surface) is given.
+  Hit ClosestFace(const Vec3& p,
+    double maxDistance,
+    const std::vector<char>* excluded = nullptr) const;
 
   /// The (non-degenerate) face whose centroid is nearest to p; -1 if there is none.
   int NearestCentroidFace(const Vec3& p) const;
@@ -156,12 +159,14 @@ private:
 };
 
 /// FaceTree::ClosestFace behind the ClosestFaceQuery interface (degenerate faces left out, ties
-/// to the lowest id), for code that takes either the tree or a VTK cell locator.
+/// to the lowest id; optionally the faces `excluded` marks too, a mask that must outlive the
+/// query), for code that takes either the tree or a VTK cell locator.
 class FaceTreeQuery : public ClosestFaceQuery
 {
 public:
-  explicit FaceTreeQuery(const FaceTree& tree)
+  explicit FaceTreeQuery(const FaceTree& tree, const std::vector<char>* excluded = nullptr)
     : Tree(tree)
+    , Excluded(excluded)
   {
   }
   ClosestFaceHit Closest(const Vec3& p) const override
@@ -170,7 +175,7 @@ public:
   }
   ClosestFaceHit ClosestWithin(const Vec3& p, double radius) const override
   {
-    const FaceTree::Hit hit = this->Tree.ClosestFace(p, radius);
+    const FaceTree::Hit hit = this->Tree.ClosestFace(p, radius, this->Excluded);
     if (!(hit.face >= 0 && hit.distance < radius))
       return ClosestFaceHit();
     return { hit.face, hit.distance, hit.point };
@@ -178,6 +183,7 @@ public:
 
 private:
   const FaceTree& Tree;
+  const std::vector<char>* Excluded;
 };
 }
 

@@ -515,35 +515,71 @@ bool BuildFoldingTree(const TriangleMesh& input,
     return false;
   }
   // The bound, proved; where it is not, the faces there are pinned and the tree built again.
+  // A closed input that comes back with holes gets the faces there pinned too, for at most
+  // MaximumClosingRounds builds, each kept only while it stores at most MaximumClosingShare of
+  // the input's faces (or MaximumClosingFaces) more than the tree before it; a hole never
+  // costs the bound: when a tree built to close holes is not proved within epsilon, the last
+  // proved tree stands, holes and all.
   if (options.verifyBound && !tree.aborted)
   {
     FoldingTreeOptions again = options;
     again.progress = nullptr; // the progress bar already reached the end once
     std::vector<char> pinned(input.triangles.size(), 0);
+    int boundRounds = 0, closingRounds = 0;
+    std::unique_ptr<FoldingTree> proved; // the last tree proved within epsilon, with holes
     for (int round = 0;; ++round)
     {
       const UnfoldedBoundCheck check =
         VerifyUnfoldedBound(input, tree, options.verificationQueries);
       if (options.trace)
-        options.trace(FormatTrace("[verify] round %d: proved bound %.6g of epsilon %.6g, %s",
+        options.trace(FormatTrace(
+          "[verify] round %d: proved bound %.6g of epsilon %.6g, %s; %d open edges where the "
+          "input has none",
           round,
           check.upper,
           options.epsilon,
-          check.within ? "within" : "not within"));
+          check.within ? "within" : "not within",
+          check.openEdges));
       if (check.within)
-      {
         tree.verifiedBound = check.upper;
+      if (check.within && (check.pinOpen.empty() || closingRounds == MaximumClosingRounds))
+        break;
+      if (!check.within && proved)
+      {
+        tree = std::move(*proved);
         break;
       }
-      if (round == MaximumVerificationRounds)
+      if (check.within)
+      {
+        int added = 0;
+        for (int f : check.pinOpen)
+          added += !pinned[f];
+        if (added == 0)
+          break; // pinned there already: the same tree again
+        proved.reset(new FoldingTree(tree));
+        ++closingRounds;
+        for (int f : check.pinOpen)
+          pinned[f] = 1;
+      }
+      else if (boundRounds == MaximumVerificationRounds)
         std::fill(pinned.begin(), pinned.end(), 1); // a single leaf: the input itself
       else
         for (int f : check.pin)
           pinned[f] = 1;
+      if (!check.within)
+        ++boundRounds;
       build(again, pinned);
       tree.verificationRounds = round + 1;
       tree.pinnedFaces = static_cast<int>(std::count(pinned.begin(), pinned.end(), 1));
-      if (round > MaximumVerificationRounds)
+      if (check.within &&
+        tree.StoredFaces() - proved->StoredFaces() >
+          std::max(MaximumClosingFaces,
+            static_cast<int>(MaximumClosingShare * static_cast<double>(input.triangles.size()))))
+      {
+        tree = std::move(*proved); // closing the holes would cost too much storage
+        break;
+      }
+      if (boundRounds > MaximumVerificationRounds + 1)
         break; // not expected: every face pinned is the input itself
     }
   }

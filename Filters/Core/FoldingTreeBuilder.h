@@ -45,6 +45,16 @@ enum class KeepSide
 
 /// Rebuilds with pinned faces before the verification pins every face (verifyBound).
 constexpr int MaximumVerificationRounds = 4;
+/// Builds FoldingTreeOptions::verifyBound adds at most to close the holes a closed input came
+/// back with (faces pinned where they are; the bound's rounds come on top) ...
+constexpr int MaximumClosingRounds = 2;
+/// ... each kept only when it stores at most this share of the input's faces more than the
+/// tree with the holes, or MaximumClosingFaces more (a small mesh comes back closed even if
+/// that means storing it whole: a 192-face box with a bump, 64 open edges). A procedural
+/// chess piece with unevenly spaced rings came back with 208 open edges, and the tree closing
+/// them stored all 1188 faces instead of 200: it keeps its holes (docs/builder.md).
+constexpr double MaximumClosingShare = 0.1;
+constexpr int MaximumClosingFaces = 250;
 
 struct FoldingTreeOptions
 {

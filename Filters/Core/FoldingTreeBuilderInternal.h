@@ -114,10 +114,11 @@ private:
    * S minus its faces with a vertex whose mirror image is not within eps (and, with
    * errorBudget, its budget limit, ShrinkingMirrorBudget) of S, repeated until stable, keeping
    * the largest connected part. With errorBudget, the mirror image of every face must also be
-   * within the least limit of its vertices at every point, of the node's region (`region`:
-   * pm's faces; MirroredFacesWithin), not only at its corners. The plane is fixed and S only
-   * shrinks: the iterations after the first update their predecessor's distances, partners
-   * and face tests (ShrinkingSubsetDistances, ShrinkingMirrorBudget, MirroredFaceCache).
+   * within the least limit of its vertices at every point, of S itself (`region`: pm's faces,
+   * those outside S excluded; MirroredFacesWithin, anew in each iteration), not only at its
+   * corners: an image on faces outside S would be unfolded on top of them. The plane is fixed
+   * and S only shrinks: the iterations after the first update their predecessor's distances
+   * and partners (ShrinkingSubsetDistances, ShrinkingMirrorBudget).
    * provenSide: the side of `plane` (+1 along its normal, -1 against it) whose faces the
    * face proof covered - the side the fold will keep, judged on S as it was then (a later
    * change of S could tip a near tie; the fold keeps this side) - or 0 without errorBudget.

@@ -5,7 +5,7 @@
 #include "CandidatePlanes.h"
 #include "MeshPreparation.h"
 #include "MirrorDistance.h"
-#include "MirroredFaceCache.h"
+#include "MirroredFaceBound.h"
 #include "RegionGrowing.h"
 #include "ShrinkingMirrorBudget.h"
 #include "ShrinkingSubsetDistances.h"
@@ -221,6 +221,44 @@ namespace
 /// face lies over several coplanar faces of the region (only the pieces over their shared
 /// edges need that depth).
 constexpr int MirroredFaceLevels = 6;
+
+/// A closest-face query (the user's locator) over the faces of `mesh` in `subset`, answering
+/// with the faces' ids in `mesh`.
+class SubsetFaceQuery : public ClosestFaceQuery
+{
+public:
+  SubsetFaceQuery(const PreparedMesh& mesh,
+    const std::vector<char>& subset,
+    const ClosestFaceQueryFactory& factory)
+  {
+    TriangleMesh part{ mesh.points, {} };
+    for (size_t f = 0; f < subset.size(); ++f)
+      if (subset[f])
+      {
+        part.triangles.push_back(mesh.triangles[f]);
+        this->Ids.push_back(static_cast<int>(f));
+      }
+    this->Inner = factory(part);
+  }
+  ClosestFaceHit Closest(const Vec3& p) const override
+  {
+    return this->Mapped(this->Inner->Closest(p));
+  }
+  ClosestFaceHit ClosestWithin(const Vec3& p, double radius) const override
+  {
+    return this->Mapped(this->Inner->ClosestWithin(p, radius));
+  }
+
+private:
+  ClosestFaceHit Mapped(ClosestFaceHit hit) const
+  {
+    if (hit.face >= 0)
+      hit.face = this->Ids[hit.face];
+    return hit;
+  }
+  std::vector<int> Ids;
+  std::unique_ptr<ClosestFaceQuery> Inner;
+};
 }
 
 std::vector<char> Builder::Trim(const WorkMesh& w,
@@ -234,26 +272,32 @@ std::vector<char> Builder::Trim(const WorkMesh& w,
 {
   provenSide = 0;
   // One plane while S only shrinks: the iterations after the first update what changed
-  // (distances, budget partners, mirrored faces) instead of starting over - bit for bit the
-  // same results (see the classes).
+  // (distances, budget partners) instead of starting over - bit for bit the same results (see
+  // the classes).
   ShrinkingSubsetDistances distances(pm, plane, this->Options.symmetry.compatibilityAngle, eps);
   ShrinkingMirrorBudget budget(
     w.points, w.budget, plane, eps, std::max(eps, 1e-12 * this->Tree.diagonal));
-  // The mirrored-face proof's closest triangles: the region's face tree, or the user's
-  // locator over the region (built when a face first needs it).
-  const FaceTreeQuery treeQueries(region);
-  std::unique_ptr<ClosestFaceQuery> locatorQueries;
-  const auto queries = [&]() -> const ClosestFaceQuery&
-  {
-    if (this->Options.verificationQueries && !locatorQueries)
-      locatorQueries = this->Options.verificationQueries(TriangleMesh{ pm.points, pm.triangles });
-    return locatorQueries ? *locatorQueries : static_cast<const ClosestFaceQuery&>(treeQueries);
-  };
-  MirroredFaceCache mirroredFaces(pm, queries, plane, MirroredFaceLevels);
+  // The mirrored-face proof's closest triangles: those of S itself (the region's face tree
+  // without the faces that left S, or the user's locator over S, built when a face first
+  // needs it), not of the whole region - a kept face whose mirror image lies on faces outside
+  // S would be unfolded on top of them, the surface there twice (issue 21). S shrinks from
+  // iteration to iteration, so each iteration proves its faces anew.
+  std::vector<char> outsideS(S.size());
+  std::unique_ptr<SubsetFaceQuery> locatorQueries;
   for (int iteration = 0; iteration < 8; ++iteration)
   {
     if (!distances.Update(S))
       break;
+    for (size_t f = 0; f < S.size(); ++f)
+      outsideS[f] = !S[f];
+    const FaceTreeQuery treeQueries(region, &outsideS);
+    locatorQueries.reset();
+    const auto queries = [&]() -> const ClosestFaceQuery&
+    {
+      if (this->Options.verificationQueries && !locatorQueries)
+        locatorQueries.reset(new SubsetFaceQuery(pm, S, this->Options.verificationQueries));
+      return locatorQueries ? *locatorQueries : static_cast<const ClosestFaceQuery&>(treeQueries);
+    };
     const PreparedMesh& spm = distances.Subset();
     std::vector<double> d = distances.Distances();
     std::vector<double> vertexLimit(d.size(), eps);
@@ -288,15 +332,15 @@ std::vector<char> Builder::Trim(const WorkMesh& w,
     if (this->Options.errorBudget)
     {
       // ... and the whole mirror image of each face, not only its corners, within the limit
-      // of the node's region (a copy passing over a dip of the surface would leave the
-      // budget between its corners).
+      // of S (a copy passing over a dip of the surface would leave the budget between its
+      // corners; one lying on faces outside S would lay surface twice).
       // Only the faces the fold will keep are copied (those with a vertex on the kept side).
       const double keptSign =
         KeepsPositiveSide(spm.points, spm.triangles, plane, this->Options.keepSide) ? 1.0 : -1.0;
       provenSide = keptSign > 0 ? 1 : -1;
       std::vector<Triangle> faces;
       std::vector<double> faceLimit;
-      std::vector<int> at, keys;
+      std::vector<int> at;
       for (int k = 0; k < spm.NumberOfFaces(); ++k)
         if (ok[k] && !spm.faceDegenerate[k] &&
           std::max({ keptSign * plane.SignedDistance(spm.points[spm.triangles[k][0]]),
@@ -308,9 +352,9 @@ std::vector<char> Builder::Trim(const WorkMesh& w,
           faceLimit.push_back(
             std::min({ vertexLimit[t[0]], vertexLimit[t[1]], vertexLimit[t[2]] }));
           at.push_back(k);
-          keys.push_back(faceOf[k]);
         }
-      const std::vector<char> within = mirroredFaces.Within(keys, faces, spm.points, d, faceLimit);
+      const std::vector<char> within = MirroredFacesWithin(
+        pm, queries, plane, faces, spm.points, d, faceLimit, MirroredFaceLevels);
       for (size_t j = 0; j < at.size(); ++j)
         ok[at[j]] = within[j];
     }

@@ -2,11 +2,14 @@
 // FoldingTreeVerification.h).
 #include "FoldingTreeVerification.h"
 
+#include "EdgeTable.h"
 #include "FoldingTreeUnfolder.h"
 #include "SurfaceDistance.h"
 
 #include <algorithm>
+#include <array>
 #include <limits>
+#include <map>
 #include <string>
 
 namespace foldingmeshes
@@ -35,6 +38,34 @@ std::vector<int> GrowByRings(const TriangleMesh& mesh, std::vector<char> mark, i
     if (mark[f])
       out.push_back(static_cast<int>(f));
   return out;
+}
+
+/// End points and midpoints of the edges of `mesh` used by one face, points at identical
+/// positions counted as one (the unfolder's copies meet at shared positions); `count`: the
+/// number of such edges.
+std::vector<Vec3> OpenEdgeProbes(const TriangleMesh& mesh, int& count)
+{
+  std::map<std::array<double, 3>, int> idOf;
+  std::vector<int> id(mesh.points.size());
+  std::vector<Vec3> at;
+  for (size_t v = 0; v < mesh.points.size(); ++v)
+  {
+    const Vec3& x = mesh.points[v];
+    const auto it = idOf.emplace(std::array<double, 3>{ x.x(), x.y(), x.z() }, at.size());
+    if (it.second)
+      at.push_back(x);
+    id[v] = it.first->second;
+  }
+  std::vector<Triangle> welded;
+  for (const Triangle& t : mesh.triangles)
+    if (id[t[0]] != id[t[1]] && id[t[1]] != id[t[2]] && id[t[2]] != id[t[0]])
+      welded.push_back({ id[t[0]], id[t[1]], id[t[2]] });
+  const std::vector<Edge> open = OpenEdges(welded);
+  count = static_cast<int>(open.size());
+  std::vector<Vec3> probes;
+  for (const Edge& e : open)
+    probes.insert(probes.end(), { at[e.first], at[e.second], 0.5 * (at[e.first] + at[e.second]) });
+  return probes;
 }
 }
 
@@ -67,6 +98,21 @@ UnfoldedBoundCheck VerifyUnfoldedBound(const TriangleMesh& input,
     input, toOut, tolerance, DefaultMaximumEvaluations, epsilon, &inputBeyond);
   check.upper = std::max(there.upper, back.upper);
   check.within = check.upper <= epsilon + tolerance;
+  if (tree.inputBorderEdges.empty())
+  {
+    const std::vector<Vec3> probes = OpenEdgeProbes(out, check.openEdges);
+    if (check.openEdges > 0)
+    {
+      std::vector<double> d;
+      std::vector<int> nearest;
+      toInput.Closest(probes, d, nearest);
+      std::vector<char> mark(input.triangles.size(), 0);
+      for (int f : nearest)
+        if (f >= 0)
+          mark[f] = 1;
+      check.pinOpen = GrowByRings(input, std::move(mark), 2);
+    }
+  }
   if (check.within)
     return check;
   std::vector<char> mark(input.triangles.size(), 0);

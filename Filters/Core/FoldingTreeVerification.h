@@ -20,13 +20,21 @@ struct UnfoldedBoundCheck
   /// to the unfolded faces with a point beyond epsilon and the input faces with one, each
   /// with the faces around it (two rings of shared vertices). Empty when `within`.
   std::vector<int> pin;
+  /// Edges of unfold(tree) used by one face although the input is closed (the tree lists no
+  /// input border edge; points at identical positions counted as one): holes the unfolder
+  /// could not close within its tolerance. 0 for an input with a border of its own.
+  int openEdges = 0;
+  /// Input faces to pin where those edges are (nearest to their end points and midpoints,
+  /// two rings around them), sorted; empty when openEdges is 0.
+  std::vector<int> pinOpen;
 };
 
 /**
  * Unfolds `tree` with the default UnfoldOptions and bounds the symmetric Hausdorff distance
  * between the result and `input` over every point of both surfaces (DirectedHausdorffBounds
  * both ways, deciding epsilon to 1e-7 of the diagonal, as `foldingmeshes roundtrip` does).
- * Where a point is not proved within epsilon, lists the input faces to pin there.
+ * Where a point is not proved within epsilon, lists the input faces to pin there; where a
+ * closed input comes back with open edges, the input faces to pin there too.
  * `queries` (optional): the closest-face queries of the distances (e.g. a VTK cell locator,
  * FoldingTreeOptions::verificationQueries); without it the core's FaceTree.
  */

@@ -28,8 +28,8 @@ namespace foldingmeshes
  * the distance of v's mirror image, e.g. a compatible-face distance) is 1-Lipschitz-extended,
  * max over the corners + (longest edge) / sqrt(3), which settles most faces. In parallel
  * (vtkSMPTools), each face on its own: deterministic. A face's answer depends only on its
- * corners (in order), their cornerDistance and its limit, not on the other faces tested with
- * it (MirroredFaceCache relies on that).
+ * corners (in order), their cornerDistance, its limit and the surface `queries` answer for,
+ * not on the other faces tested with it.
  */
 std::vector<char> MirroredFacesWithin(const PreparedMesh& mesh,
   const std::function<const ClosestFaceQuery&()>& queries,

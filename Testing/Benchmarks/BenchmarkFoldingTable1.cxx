@@ -7,7 +7,8 @@
 // misoriented edges before/after (nm, mis), vertices before/after (pts, distinct positions)
 // and the change, the unfolded faces and their change, the projected points the unfolder
 // removed (rmvd) and the copies of projected points left (proj), the vertices it removed from
-// mirrored copies (thin, MatchDiscardedDensity), and - for the Table 1 models, matched by file
+// mirrored copies (thin, MatchDiscardedDensity), the unfolded surface's area over the input's
+// (area: above 1 where surface lies twice), and - for the Table 1 models, matched by file
 // name - the paper's
 // row. Default builder and unfolder options (root epsilon 2% of the diagonal, keep the half
 // with more faces, 5% area stop). Not a test: numbers for humans and closing notes.
@@ -249,7 +250,7 @@ void Run(const std::string& path, vtkPolyData* mesh, const Settings& settings)
   const foldingmeshes::EdgeCounts after = foldingmeshes::CountEdges(unfolded);
   std::printf("%-26s %7d %7d %6.1f%% %3d %7.3f %7.3f %7.4f%s %8.5f %7.4f%s %6lld %6lld %4lld %4lld "
               "%4lld %4lld "
-              "%6lld %6lld %+6.1f%% %7lld %+6.1f%% %5d %5d %5d",
+              "%6lld %6lld %+6.1f%% %7lld %+6.1f%% %5d %5d %5d %6.3f",
     stem.c_str(),
     static_cast<int>(TreeValue(tree, "OriginalFaces")),
     static_cast<int>(TreeValue(tree, "StoredFaces")),
@@ -276,7 +277,8 @@ void Run(const std::string& path, vtkPolyData* mesh, const Settings& settings)
       std::max<vtkIdType>(1, input->GetNumberOfCells()),
     static_cast<int>(FieldValue(unfolded, "RemovedProjectedPoints")),
     static_cast<int>(FieldValue(unfolded, "ProjectedPoints")),
-    static_cast<int>(FieldValue(unfolded, "ThinnedCopyPoints")));
+    static_cast<int>(FieldValue(unfolded, "ThinnedCopyPoints")),
+    FieldValue(unfolded, "AreaRatio"));
   if (const PaperRow* row = FindPaperRow(stem))
     std::printf("  | %-11s %6d %6d %5.1f%% %3d %5.0f",
       row->model,
@@ -349,7 +351,7 @@ int main(int argc, char* argv[])
     settings.locator == foldingmeshes::DistanceLocator::StaticCellLocator ? "vtkStaticCellLocator"
                                                                           : "the face tree");
   std::printf("%-26s %7s %7s %7s %3s %7s %7s %8s %8s %8s %6s %6s %4s %4s %4s %4s %6s %6s %7s %7s "
-              "%7s %5s %5s %5s  | "
+              "%7s %5s %5s %5s %6s  | "
               "%-11s %6s %6s %6s %3s %5s\n",
     "mesh",
     "faces",
@@ -375,6 +377,7 @@ int main(int argc, char* argv[])
     "rmvd",
     "proj",
     "thin",
+    "area",
     "paper",
     "faces",
     "stored",

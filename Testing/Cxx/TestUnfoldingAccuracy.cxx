@@ -14,7 +14,7 @@
 //   points per face within 5% of M's (no duplicated seam vertices; the face count is twice
 //   the kept half's), open and non-manifold edges reported and below 5% of the edges; exact
 //   cases closed with M's point count;
-// - the final repair (CloseHoles, default on): a closed manifold M (dino, triceratops, the
+// - the final repair (CloseHoles, default on): a closed manifold M (dino, triceratops, fandisk, the
 //   procedural meshes) comes back without non-manifold or misoriented edges and with open
 //   edges below 1% of the edges (none at all for the real meshes), every open edge in a
 //   reported loop (OpenLoopEdges +
@@ -22,15 +22,17 @@
 //   as M has, at least 90% of its length (never filled); with CloseHoles off the closed inputs
 //   have more open edges (the repair is what closes them), with it the Hausdorff bound holds;
 // - vertex count (RemoveProjectedPoints and MatchDiscardedDensity, default on): the real
-//   meshes come back within 0.5% (anchor), 1% (teapot), 2% (dino, bearing, hammer, wingnut,
-//   triceratops) or 5% (queen) of M's point count, the differently tessellated blob within
-//   5%; all of them exceed that with the mirrored copies kept as dense as the kept halves.
+//   meshes come back within 0.5% (anchor), 1.5% (teapot), 2% (dino, bearing, hammer, wingnut,
+//   triceratops), 3% (fandisk) or 6.5% (queen) of M's point count, the differently tessellated blob
+//   within 5%; all of them exceed that with the mirrored copies kept as dense as the kept halves.
 // - seam gap fills bounded by the seam's tolerance: the queen at epsilon 0.5% without the
 //   final repair stays within it.
 // - non-manifold inputs (a fan of 10 triangles on one edge, duplicate faces, a two-sided
 //   sphere): the tree lists their non-manifold edges ("InputNonManifoldEdges" on the "Tree"
 //   block) and every input face comes back (face count, no face dropped, the input's
 //   non-manifold edges, Hausdorff within the root epsilon).
+// - a fold's mirror image never lies on faces outside its region (a moved octagonal prism,
+//   face stop off: the cap came back twice) - area kept, AreaRatio reported;
 // - folds down to single faces (UseMinimumFaces off, and no stop criterion at all): a
 //   square, a single triangle and a flat hexagonal fan keep their area, stay within the root
 //   epsilon, and the build ends (a fold removing no face is not made).
@@ -493,6 +495,86 @@ void SmallFoldsOfAClosedBox()
     }
 }
 
+/**
+ * An octagonal prism (vtkCylinderSource, 8 sides, welded) under a rigid motion, its
+ * coordinates float values (held as doubles), folded with the face stop off (the option sweep's
+ * cyl8 case). A fold kept nine faces of a region of seventeen: the mirror image of a cap face lay
+ * on two cap faces outside the fold's region S (a leaf of their own), whose vertices are S's, so
+ * the vertex distances passed and the mirrored-face proof, measured to the whole node, did too;
+ * unfolded, the cap was there twice (area 1.079, 36 faces; the repair's fills on top). The proof
+ * now measures to S itself. Also: the unfolder's AreaRatio is the unfolded area over the input's.
+ */
+void MirrorImagesOutsideTheRegion()
+{
+  const vtkSmartPointer<vtkPolyData> mesh =
+    Triangles({ { -2.7645309f, -5.46642017f, 0.278567165f },
+                { -2.59576392f, -4.62338877f, -0.232134014f },
+                { -2.44866276f, -5.62105227f, 0.127693549f },
+                { -2.27989578f, -4.77802038f, -0.383007646f },
+                { -2.07953167f, -5.6343317f, 0.227756202f },
+                { -1.91076469f, -4.7913003f, -0.282944977f },
+                { -1.87336981f, -5.49847984f, 0.520139813f },
+                { -1.70460284f, -4.65544844f, 0.00943864509f },
+                { -1.95094395f, -5.29307699f, 0.833570063f },
+                { -1.78217697f, -4.45004511f, 0.322868854f },
+                { -2.26681209f, -5.1384449f, 0.984443665f },
+                { -2.09804511f, -4.29541349f, 0.473742485f },
+                { -2.63594317f, -5.12516546f, 0.884380996f },
+                { -2.4671762f, -4.28213406f, 0.373679817f },
+                { -2.84210515f, -5.26101732f, 0.591997385f },
+                { -2.67333817f, -4.41798592f, 0.0812961981f } },
+      { { 0, 1, 2 },
+        { 3, 2, 1 },
+        { 2, 3, 4 },
+        { 5, 4, 3 },
+        { 4, 5, 6 },
+        { 7, 6, 5 },
+        { 6, 7, 8 },
+        { 9, 8, 7 },
+        { 8, 9, 10 },
+        { 11, 10, 9 },
+        { 10, 11, 12 },
+        { 13, 12, 11 },
+        { 12, 13, 14 },
+        { 15, 14, 13 },
+        { 14, 15, 0 },
+        { 1, 0, 15 },
+        { 0, 2, 14 },
+        { 14, 2, 12 },
+        { 12, 2, 10 },
+        { 10, 2, 8 },
+        { 2, 4, 8 },
+        { 6, 8, 4 },
+        { 13, 11, 15 },
+        { 15, 11, 1 },
+        { 1, 11, 3 },
+        { 3, 11, 5 },
+        { 11, 9, 5 },
+        { 7, 5, 9 } });
+  const vtkSmartPointer<vtkPolyData> out =
+    FoldAndUnfold(mesh, [](vtkFoldingTreeBuilder* b) { b->UseMinimumFacesOff(); });
+  const EdgeCounts edges = CountEdges(out);
+  const double area = TotalArea(out), inputArea = TotalArea(mesh);
+  const double epsilon = Field(out, "RootEpsilon");
+  const double bound = Field(out, "HausdorffToOriginalBound");
+  std::printf("moved octagonal prism (face stop off): %lld faces, area %.6f of %.6f (AreaRatio "
+              "%.6f), open %lld, bound/eps %.3f\n",
+    static_cast<long long>(out->GetNumberOfCells()),
+    area,
+    inputArea,
+    Field(out, "AreaRatio"),
+    edges.open,
+    bound / epsilon);
+  EXPECT(std::abs(area - inputArea) <= 0.01 * inputArea,
+    "octagonal prism: area " << area << " unfolded, input " << inputArea << " (surface twice)");
+  EXPECT(std::abs(Field(out, "AreaRatio") - area / inputArea) <= 1e-9,
+    "octagonal prism: AreaRatio " << Field(out, "AreaRatio") << ", measured " << area / inputArea);
+  EXPECT(edges.open == 0 && edges.nonManifold == 0,
+    "octagonal prism: " << edges.open << " open, " << edges.nonManifold
+                        << " non-manifold edges (closed input)");
+  EXPECT(bound <= epsilon, "octagonal prism: proved bound " << bound << " above " << epsilon);
+}
+
 int main(int argc, char* argv[])
 {
   namespace pm = foldingmeshes::testing;
@@ -500,6 +582,7 @@ int main(int argc, char* argv[])
   NonManifoldInputs();
   FoldsDownToSingleFaces();
   SmallFoldsOfAClosedBox();
+  MirrorImagesOutsideTheRegion();
   RoundTrip("bilateral blob", pm::MakeBilateralBlob(3000).mesh, false);
   // +0.3% (+44% with the mirrored copies kept dense: the finer half doubled; +9.6% without
   // the root's thinning after the final repair, see TestMatchDiscardedDensity).
@@ -526,11 +609,16 @@ int main(int argc, char* argv[])
     // triceratops +0.0% / +13.3% (+3.1% without the root's thinning after the final
     // repair); queen +4.3% / +17.9% (+4.1% before the repair kept its non-manifold edges;
     // this test counts a little differently: dino +1.3%, triceratops +0.2%, queen +4.5%).
-    // Each bound fails with the copies kept dense.
+    // Each bound failed with the copies kept dense. Since fold images must lie on the fold's
+    // own region (2026-12-05, MirrorImagesOutsideTheRegion) the trees changed: queen +5.7% /
+    // +18.8% (this test +6.0%), teapot -1.3% either way (its new tree thins nothing).
+    // fandisk (a CAD part) came back with an 18-edge hole with that change: the builder's
+    // verification now rebuilds a closed input that comes back open (closing rounds); +1.9%.
     const std::string name = std::filesystem::path(argv[i]).stem().string();
     const double excess = name == "anchor_cgal" ? 0.005
-      : name == "teapot_newell"                 ? 0.01
-      : name == "queen_chess_quaddamage"        ? 0.05
+      : name == "teapot_newell"                 ? 0.015
+      : name == "queen_chess_quaddamage"        ? 0.065
+      : name == "fandisk_alec"                  ? 0.03
                                                 : 0.02;
     RoundTrip(name, mesh, false, &seconds, true, excess);
     std::printf("  (%.1f s)\n", seconds);
