@@ -190,8 +190,34 @@ int Unfolder::MatchDiscardedDensity(const FoldingNode& node,
   const char* why = "";
   // A removal of v (into `removal`): its star all of the copy, its ring of free points, the
   // surface moved within the error limit.
+  // A point that comes back to the top of the queue unchanged - its star (its version) and the
+  // budgets of its star's points (their epochs) as when it was measured - gets the removal
+  // measured then (Try depends on nothing else; points never move here).
+  std::vector<int> version(n, 0), budgetEpoch(n, 0);
+  struct Measured
+  {
+    int version = -1;
+    std::vector<int> epochs; ///< of v and its ring, in that order
+    RingRemoval removal;
+  };
+  std::vector<Measured> measured(n);
+  auto unchanged = [&](int v)
+  {
+    const Measured& m = measured[v];
+    if (m.version != version[v] || m.epochs.empty() || m.epochs[0] != budgetEpoch[v])
+      return false;
+    for (size_t i = 0; i < m.removal.ring.size(); ++i)
+      if (m.epochs[i + 1] != budgetEpoch[m.removal.ring[i]])
+        return false;
+    return true;
+  };
   auto attempt = [&](int v) -> bool
   {
+    if (unchanged(v))
+    {
+      removal = measured[v].removal;
+      return true;
+    }
     for (int f : remover.FacesOf(v))
       if (remover.Alive(f) && !mirroredHere(piece.faceCopy[f]))
         return false;
@@ -200,6 +226,12 @@ int Unfolder::MatchDiscardedDensity(const FoldingNode& node,
     for (int a : removal.ring)
       if (!isFree(a))
         return false;
+    Measured& m = measured[v];
+    m.version = version[v];
+    m.epochs.assign(1, budgetEpoch[v]);
+    for (int a : removal.ring)
+      m.epochs.push_back(budgetEpoch[a]);
+    m.removal = removal;
     return true;
   };
   // The order: the densest spot first (the star's area relative to the copy's mean star
@@ -240,7 +272,6 @@ int Unfolder::MatchDiscardedDensity(const FoldingNode& node,
   // first, and goes back with its cost unless that is still the lowest.
   using Entry = std::tuple<double, int, int>;
   std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> queue;
-  std::vector<int> version(n, 0);
   for (int v = 0; v < n; ++v)
     if (candidate[v])
       queue.push({ StarArea(piece, remover, v) / meanArea, v, 0 });
@@ -264,6 +295,8 @@ int Unfolder::MatchDiscardedDensity(const FoldingNode& node,
     excess -= 2;
     --usedPoints;
     ring = removal.ring;
+    for (int a : ring)
+      ++budgetEpoch[a]; // Apply charged their budgets
     for (int a : ring)
       if (candidate[a])
         queue.push({ StarArea(piece, remover, a) / meanArea, a, ++version[a] });

@@ -107,11 +107,16 @@ struct Piece
  * again and again, the ear (a, b, c) with the lowest cost(a, b, c) among those whose diagonal
  * a-c allowed(a, c) accepts (the first in polygon order on a tie), calling cut(a, b, c)
  * (which records the triangle and makes a-c unavailable), until a triangle is left in poly
- * (true) or no ear is allowed (false; poly keeps what is left).
+ * (true) or no ear is allowed (false; poly keeps what is left). cost must depend on its three
+ * points only: it is measured once per ear.
  */
 template <typename Allowed, typename Cost, typename Cut>
 bool ClipCheapestEars(std::vector<int>& poly, Allowed allowed, Cost cost, Cut cut)
 {
+  // The cost of the ear starting at each position of poly, once measured (a cut changes the
+  // two ears through the new diagonal; the others keep their three points).
+  std::vector<double> earCost(poly.size(), 0.0);
+  std::vector<char> measured(poly.size(), 0);
   while (poly.size() > 3)
   {
     const int m = static_cast<int>(poly.size());
@@ -122,7 +127,12 @@ bool ClipCheapestEars(std::vector<int>& poly, Allowed allowed, Cost cost, Cut cu
       const int a = poly[i], b = poly[(i + 1) % m], c = poly[(i + 2) % m];
       if (!allowed(a, c))
         continue;
-      const double value = cost(a, b, c);
+      if (!measured[i])
+      {
+        earCost[i] = cost(a, b, c);
+        measured[i] = 1;
+      }
+      const double value = earCost[i];
       if (value < bestCost)
       {
         bestCost = value;
@@ -132,7 +142,14 @@ bool ClipCheapestEars(std::vector<int>& poly, Allowed allowed, Cost cost, Cut cu
     if (best < 0)
       return false;
     cut(poly[best], poly[(best + 1) % m], poly[(best + 2) % m]);
-    poly.erase(poly.begin() + (best + 1) % m);
+    const int cutAt = (best + 1) % m;
+    poly.erase(poly.begin() + cutAt);
+    earCost.erase(earCost.begin() + cutAt);
+    measured.erase(measured.begin() + cutAt);
+    const int n = m - 1;
+    const int first = cutAt == 0 ? n - 1 : cutAt - 1; // where poly[best] is now
+    measured[first] = 0;
+    measured[(first + n - 1) % n] = 0;
   }
   return poly.size() == 3;
 }

@@ -137,26 +137,44 @@ bool ClosedRing(const std::vector<Triangle>& triangles,
   std::vector<int>& ring,
   std::vector<int>& face)
 {
-  std::map<int, std::pair<int, int>> next; // a -> (b, face)
+  // a -> (b, face) per star face, few of them: a flat list (at most MaximumRemovedValence).
+  struct Link
+  {
+    int a, b, face;
+  };
+  if (star.empty())
+    return false;
+  std::vector<Link> next;
+  next.reserve(star.size());
+  auto find = [&next](int a)
+  {
+    for (const Link& l : next)
+      if (l.a == a)
+        return &l;
+    return static_cast<const Link*>(nullptr);
+  };
+  int start = std::numeric_limits<int>::max();
   for (int f : star)
   {
     const Triangle& t = triangles[f];
     const int k = t[0] == v ? 0 : t[1] == v ? 1 : 2;
     const int a = t[(k + 1) % 3], b = t[(k + 2) % 3];
-    if (a == v || b == v || a == b || !next.emplace(a, std::make_pair(b, f)).second)
+    if (a == v || b == v || a == b || find(a))
       return false;
+    next.push_back({ a, b, f });
+    start = std::min(start, a);
   }
   ring.clear();
   face.clear();
-  int a = next.begin()->first;
+  int a = start;
   for (size_t i = 0; i < star.size(); ++i)
   {
-    auto it = next.find(a);
-    if (it == next.end())
+    const Link* l = find(a);
+    if (!l)
       return false;
     ring.push_back(a);
-    face.push_back(it->second.second);
-    a = it->second.first;
+    face.push_back(l->face);
+    a = l->b;
   }
   if (a != ring.front())
     return false;
@@ -228,7 +246,11 @@ public:
     , M(static_cast<int>(ring.size()))
   {
     for (int f : star)
-      this->Old.push_back(piece.triangles[f]);
+    {
+      const Triangle& t = piece.triangles[f];
+      this->Old.push_back(t);
+      this->OldRegular.push_back(IsRegularTriangle(X[t[0]], X[t[1]], X[t[2]]));
+    }
     this->Sharpest = rules.minimumAngle;
     if (this->Sharpest > 0.0)
       for (const Triangle& t : this->Old)
@@ -286,9 +308,27 @@ private:
   const std::vector<int>& Ring;
   const RingRules& Rules;
   const int M;
-  std::vector<Triangle> Old; ///< the star's faces
-  double Sharpest = 0.0;     ///< the smallest angle a new face may have (0: any)
-  EdgeSet Diagonals;         ///< the new edges (the budget check samples their midpoints)
+  /// Distance of p to the nearest face of the old star (DistanceToTriangles, with the faces'
+  /// regularity tested once).
+  double DistanceToOld(const Vec3& p) const
+  {
+    double best = std::numeric_limits<double>::infinity();
+    for (size_t k = 0; k < this->Old.size(); ++k)
+    {
+      const Triangle& t = this->Old[k];
+      const Vec3 &a = this->X[t[0]], &b = this->X[t[1]], &c = this->X[t[2]];
+      best = std::min(best,
+        (this->OldRegular[k] ? ClosestPointRegularTriangle(p, a, b, c)
+                             : ClosestPointTriangle(p, a, b, c))
+          .squaredDistance);
+    }
+    return std::sqrt(best);
+  }
+
+  std::vector<Triangle> Old;    ///< the star's faces
+  std::vector<char> OldRegular; ///< IsRegularTriangle of each
+  double Sharpest = 0.0;        ///< the smallest angle a new face may have (0: any)
+  EdgeSet Diagonals;            ///< the new edges (the budget check samples their midpoints)
 };
 
 bool RingRetriangulation::ClipEars(std::vector<Triangle>& created, const char*& why)
@@ -310,45 +350,50 @@ bool RingRetriangulation::ClipEars(std::vector<Triangle>& created, const char*& 
   for (const Vec3& n : faceNormal)
     if (n.dot(normal) <= FacingCosine * n.norm())
       return false;
-  // The ring in the plane perpendicular to the mean normal, v at the origin.
+  // The ring in the plane perpendicular to the mean normal, v at the origin; the polygon below
+  // holds positions in the ring (flat[i] is ring[i]'s).
   const Vec3 u = normal.unitOrthogonal(), w = normal.cross(u);
-  std::map<int, Eigen::Vector2d> flat;
-  for (int a : ring)
-    flat[a] = Eigen::Vector2d((x[a] - x[v]).dot(u), (x[a] - x[v]).dot(w));
+  std::vector<Eigen::Vector2d> flat(m);
+  for (int i = 0; i < m; ++i)
+    flat[i] = Eigen::Vector2d((x[ring[i]] - x[v]).dot(u), (x[ring[i]] - x[v]).dot(w));
   double turn = 0.0;
   for (int i = 0; i < m; ++i)
   {
-    const Eigen::Vector2d& p = flat[ring[i]];
-    const Eigen::Vector2d& q = flat[ring[(i + 1) % m]];
+    const Eigen::Vector2d& p = flat[i];
+    const Eigen::Vector2d& q = flat[(i + 1) % m];
     turn += std::atan2(p.x() * q.y() - p.y() * q.x(), p.dot(q));
   }
   if (std::abs(turn - 2.0 * M_PI) > 1e-6)
     return false;
 
   why = "no triangulation";
-  std::vector<int> poly = ring;
+  std::vector<int> poly(m);
+  for (int i = 0; i < m; ++i)
+    poly[i] = i;
   created.clear();
-  auto allowed = [&](int a, int c)
+  auto allowed = [&](int ia, int ic)
   {
-    const int i = static_cast<int>(std::find(poly.begin(), poly.end(), a) - poly.begin());
-    const int b = poly[(i + 1) % poly.size()];
-    const Eigen::Vector2d &pa = flat[a], &pb = flat[b], &pc = flat[c];
+    const int i = static_cast<int>(std::find(poly.begin(), poly.end(), ia) - poly.begin());
+    const int ib = poly[(i + 1) % poly.size()];
+    const Eigen::Vector2d &pa = flat[ia], &pb = flat[ib], &pc = flat[ic];
     const double area = Orientation(pa, pb, pc);
     if (area <= FlatEarArea * std::max((pa - pc).squaredNorm(), (pb - pa).squaredNorm()))
       return false;
-    for (int q : poly)
-      if (q != a && q != b && q != c)
+    for (int iq : poly)
+      if (iq != ia && iq != ib && iq != ic)
       {
-        const Eigen::Vector2d& pq = flat[q];
+        const Eigen::Vector2d& pq = flat[iq];
         if (Orientation(pa, pb, pq) >= 0.0 && Orientation(pb, pc, pq) >= 0.0 &&
           Orientation(pc, pa, pq) >= 0.0)
           return false;
       }
+    const int a = ring[ia], b = ring[ib], c = ring[ic];
     return this->Regular(a, b, c) && !this->FixedEdge(a, c) && !this->HasEdge(a, c);
   };
-  auto cut = [&](int a, int b, int c)
+  auto cut = [&](int ia, int ib, int ic)
   {
-    created.push_back({ a, b, c });
+    const int a = ring[ia], c = ring[ic];
+    created.push_back({ a, ring[ib], c });
     this->Diagonals.insert({ std::min(a, c), std::max(a, c) });
   };
   // The ear that departs least from the old star first (sampled at its centroid and the
@@ -358,10 +403,11 @@ bool RingRetriangulation::ClipEars(std::vector<Triangle>& created, const char*& 
   double spoke = 0.0;
   for (int a : ring)
     spoke += (x[a] - x[v]).norm() / m;
-  auto deviation = [&](int a, int b, int c)
+  auto deviation = [&](int ia, int ib, int ic)
   {
-    double value = std::max(DistanceToTriangles((x[a] + x[b] + x[c]) / 3.0, x, this->Old),
-                     DistanceToTriangles(0.5 * (x[a] + x[c]), x, this->Old)) +
+    const int a = ring[ia], b = ring[ib], c = ring[ic];
+    double value = std::max(this->DistanceToOld((x[a] + x[b] + x[c]) / 3.0),
+                     this->DistanceToOld(0.5 * (x[a] + x[c]))) +
       lengthWeight * (x[a] - x[c]).norm();
     if (this->Rules.shapeWeight > 0.0)
       value +=
@@ -371,9 +417,9 @@ bool RingRetriangulation::ClipEars(std::vector<Triangle>& created, const char*& 
   if (!ClipCheapestEars(poly, allowed, deviation, cut))
     return false;
   if (Orientation(flat[poly[0]], flat[poly[1]], flat[poly[2]]) <= 0.0 ||
-    !this->Regular(poly[0], poly[1], poly[2]))
+    !this->Regular(ring[poly[0]], ring[poly[1]], ring[poly[2]]))
     return false;
-  created.push_back({ poly[0], poly[1], poly[2] });
+  created.push_back({ ring[poly[0]], ring[poly[1]], ring[poly[2]] });
   return true;
 }
 
@@ -416,8 +462,7 @@ bool RingRetriangulation::CollapseIntoRing(double limit,
       continue;
     double worst = DistanceToTriangles(x[v], x, faces);
     for (const Triangle& t : faces)
-      worst =
-        std::max(worst, DistanceToTriangles((x[t[0]] + x[t[1]] + x[t[2]]) / 3.0, x, this->Old));
+      worst = std::max(worst, this->DistanceToOld((x[t[0]] + x[t[1]] + x[t[2]]) / 3.0));
     if (worst <= CollapseShareOfLimit * limit && worst < best)
     {
       best = worst;
@@ -473,11 +518,10 @@ double RingRetriangulation::Deviation(const std::vector<Triangle>& created, doub
   for (size_t k = 0; k < created.size() && moved <= limit; ++k)
   {
     const Triangle& t = created[k];
-    moved = std::max(moved, DistanceToTriangles((x[t[0]] + x[t[1]] + x[t[2]]) / 3.0, x, this->Old));
+    moved = std::max(moved, this->DistanceToOld((x[t[0]] + x[t[1]] + x[t[2]]) / 3.0));
     for (int j = 0; j < 3; ++j)
       if (this->Diagonals.count({ std::min(t[j], t[(j + 1) % 3]), std::max(t[j], t[(j + 1) % 3]) }))
-        moved =
-          std::max(moved, DistanceToTriangles(0.5 * (x[t[j]] + x[t[(j + 1) % 3]]), x, this->Old));
+        moved = std::max(moved, this->DistanceToOld(0.5 * (x[t[j]] + x[t[(j + 1) % 3]])));
   }
   return moved;
 }
