@@ -75,30 +75,50 @@ public:
   std::vector<int> Faces;
 };
 
-/// The edge table of `triangles`.
+/// The edge table of `triangles` (point ids >= 0). In linear time: the edge uses counted by
+/// their smaller point, then each point's few uses sorted by (larger point, face) - the order
+/// of sorting all (edge, face) pairs at once.
 inline EdgeTable EdgeFaces(const std::vector<Triangle>& triangles)
 {
-  std::vector<std::pair<Edge, int>> uses;
-  uses.reserve(3 * triangles.size());
+  int top = -1;
+  for (const Triangle& t : triangles)
+    for (int v : t)
+      top = std::max(top, v);
+  std::vector<size_t> first(static_cast<size_t>(top) + 2, 0); // uses of points < a
+  for (const Triangle& t : triangles)
+    for (int k = 0; k < 3; ++k)
+      ++first[static_cast<size_t>(std::min(t[k], t[(k + 1) % 3])) + 1];
+  for (size_t i = 1; i < first.size(); ++i)
+    first[i] += first[i - 1];
+  std::vector<std::pair<int, int>> uses(3 * triangles.size()); // (larger point, face)
+  std::vector<size_t> next(first.begin(), first.end() - 1);
   for (size_t f = 0; f < triangles.size(); ++f)
   {
     const Triangle& t = triangles[f];
     for (int k = 0; k < 3; ++k)
-      uses.push_back({ EdgeKey(t[k], t[(k + 1) % 3]), static_cast<int>(f) });
+    {
+      const Edge e = EdgeKey(t[k], t[(k + 1) % 3]);
+      uses[next[static_cast<size_t>(e.first)]++] = { e.second, static_cast<int>(f) };
+    }
   }
-  std::sort(uses.begin(), uses.end());
   EdgeTable table;
   table.Faces.reserve(uses.size());
-  for (size_t i = 0; i < uses.size(); ++i)
+  for (int a = 0; a <= top; ++a)
   {
-    if (i == 0 || uses[i].first != uses[i - 1].first)
+    const auto from = uses.begin() + static_cast<std::ptrdiff_t>(first[a]);
+    const auto to = uses.begin() + static_cast<std::ptrdiff_t>(first[a + 1]);
+    std::sort(from, to);
+    for (auto it = from; it != to; ++it)
     {
-      table.Edges.push_back(uses[i].first);
-      table.Offsets.push_back(i);
+      if (it == from || it->first != (it - 1)->first)
+      {
+        table.Edges.push_back({ a, it->first });
+        table.Offsets.push_back(table.Faces.size());
+      }
+      table.Faces.push_back(it->second);
     }
-    table.Faces.push_back(uses[i].second);
   }
-  table.Offsets.push_back(uses.size());
+  table.Offsets.push_back(table.Faces.size());
   return table;
 }
 
