@@ -159,7 +159,7 @@ struct FoldingTreeOptions
   bool verifyBound = true;
   /// The plain closest-face queries of the builder (e.g. a VTK cell locator the user set on
   /// the filter): verifyBound's distances and the mirrored-face proof of every fold
-  /// (MirroredFacesWithin, over the node's region); empty: the core's FaceTree. The same
+  /// (MirroredFacesWithin, over the fold's region S); empty: the core's FaceTree. The same
   /// distances either way (exact point-to-triangle distances; TestCellLocatorDistances), so
   /// the same trees but where triangles tie for the closest.
   ClosestFaceQueryFactory verificationQueries;

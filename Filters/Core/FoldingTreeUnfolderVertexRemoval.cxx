@@ -51,15 +51,23 @@ double SmallestAngle(const Vec3& a, const Vec3& b, const Vec3& c)
   return std::min({ angle(a, b, c), angle(b, c, a), angle(c, a, b) });
 }
 
-/// Distance of x to the nearest of `triangles`.
+/// Distance of x to the nearest of `triangles`; `regular` (optional): IsRegularTriangle of
+/// each, tested once by the caller for triangles measured many times.
 double DistanceToTriangles(const Vec3& x,
   const std::vector<Vec3>& points,
-  const std::vector<Triangle>& triangles)
+  const std::vector<Triangle>& triangles,
+  const std::vector<char>* regular = nullptr)
 {
   double best = std::numeric_limits<double>::infinity();
-  for (const Triangle& t : triangles)
-    best = std::min(
-      best, ClosestPointTriangle(x, points[t[0]], points[t[1]], points[t[2]]).squaredDistance);
+  for (size_t k = 0; k < triangles.size(); ++k)
+  {
+    const Triangle& t = triangles[k];
+    const Vec3 &a = points[t[0]], &b = points[t[1]], &c = points[t[2]];
+    best = std::min(best,
+      (regular && (*regular)[k] ? ClosestPointRegularTriangle(x, a, b, c)
+                                : ClosestPointTriangle(x, a, b, c))
+        .squaredDistance);
+  }
   return std::sqrt(best);
 }
 
@@ -308,21 +316,10 @@ private:
   const std::vector<int>& Ring;
   const RingRules& Rules;
   const int M;
-  /// Distance of p to the nearest face of the old star (DistanceToTriangles, with the faces'
-  /// regularity tested once).
+  /// Distance of p to the nearest face of the old star.
   double DistanceToOld(const Vec3& p) const
   {
-    double best = std::numeric_limits<double>::infinity();
-    for (size_t k = 0; k < this->Old.size(); ++k)
-    {
-      const Triangle& t = this->Old[k];
-      const Vec3 &a = this->X[t[0]], &b = this->X[t[1]], &c = this->X[t[2]];
-      best = std::min(best,
-        (this->OldRegular[k] ? ClosestPointRegularTriangle(p, a, b, c)
-                             : ClosestPointTriangle(p, a, b, c))
-          .squaredDistance);
-    }
-    return std::sqrt(best);
+    return DistanceToTriangles(p, this->X, this->Old, &this->OldRegular);
   }
 
   std::vector<Triangle> Old;    ///< the star's faces
