@@ -1,5 +1,7 @@
 #include "FaceTree.h"
 
+#include "FaceTreeFrame.h"
+
 #include "PointTriangleDistance.h"
 
 #include "ParallelTasks.h"
@@ -14,6 +16,24 @@ namespace
 constexpr int LeafSize = 8;
 /// Subtrees of at least this many faces build their two halves in parallel.
 constexpr int ParallelBuildFaces = 4096;
+/// In a rotated box frame a node is skipped only when its box is farther than
+/// sqrt(best2) + E, with E = PruneAbsoluteMargin * (|p| + the mesh's coordinate scale): the
+/// rotated coordinates (of p and of the box corners) are within ~1e-15 of that scale of the
+/// exact ones, and the frame is orthonormal within ~1e-15, so the box's computed distance
+/// exceeds every true distance to its faces by far less than E. With
+/// (a + E)^2 <= a^2 (1 + eta) + E^2 (1 + 1/eta), eta = PruneRelativeMargin, the test
+/// needs no square root.
+constexpr double PruneRelativeMargin = 1e-6;
+constexpr double PruneAbsoluteMargin = 1e-12;
+}
+
+double FaceTree::PruneAdd(const Vec3& p) const
+{
+  if (!this->Rotated)
+    return 0.0;
+  const double e = PruneAbsoluteMargin *
+    (p.cwiseAbs().maxCoeff() * std::sqrt(3.0) + this->CoordinateScale * std::sqrt(3.0));
+  return e * e * (1.0 + 1.0 / PruneRelativeMargin);
 }
 
 FaceTree::FaceTree(const PreparedMesh& mesh)
@@ -24,9 +44,31 @@ FaceTree::FaceTree(const PreparedMesh& mesh)
       this->Order.push_back(f);
   if (!this->Order.empty())
   {
+    this->Frame = BoxFrame(mesh, this->Order);
+    this->Rotated = !this->Frame.isIdentity(0.0);
+    this->CoordinateScale =
+      std::max(mesh.boundsMin.cwiseAbs().maxCoeff(), mesh.boundsMax.cwiseAbs().maxCoeff());
+    for (const Vec3& x : mesh.points)
+      this->CoordinateScale = std::max(this->CoordinateScale, x.cwiseAbs().maxCoeff());
     const int count = static_cast<int>(this->Order.size());
     this->Nodes.resize(SubtreeNodes(count));
-    this->Build(0, count, 0);
+    if (this->Rotated)
+    {
+      this->PruneScale = 1.0 + PruneRelativeMargin;
+      std::vector<Vec3> points(mesh.points.size()), centroids(mesh.faceCentroids.size());
+      ForRanges(static_cast<vtkIdType>(points.size()),
+        0,
+        [&](vtkIdType begin, vtkIdType end)
+        {
+          for (vtkIdType v = begin; v < end; ++v)
+            points[v] = this->Frame * mesh.points[v];
+        });
+      for (int f : this->Order)
+        centroids[f] = this->Frame * mesh.faceCentroids[f];
+      this->Build(0, count, 0, points, centroids);
+    }
+    else
+      this->Build(0, count, 0, mesh.points, mesh.faceCentroids);
   }
   this->OrderIndex.assign(mesh.NumberOfFaces(), -1);
   // Appended (reserve, not resize: value-initialising PackedFace zeroes every byte first).
@@ -110,7 +152,11 @@ int FaceTree::SubtreeNodes(int count)
   return count <= LeafSize ? 1 : 1 + SubtreeNodes(count / 2) + SubtreeNodes(count - count / 2);
 }
 
-void FaceTree::Build(int first, int count, int index)
+void FaceTree::Build(int first,
+  int count,
+  int index,
+  const std::vector<Vec3>& points,
+  const std::vector<Vec3>& centroids)
 {
   Node node;
   node.lo = Vec3::Constant(std::numeric_limits<double>::max());
@@ -121,12 +167,12 @@ void FaceTree::Build(int first, int count, int index)
     const int f = this->Order[k];
     for (int v : Mesh.triangles[f])
     {
-      node.lo = node.lo.cwiseMin(Mesh.points[v]);
-      node.hi = node.hi.cwiseMax(Mesh.points[v]);
+      node.lo = node.lo.cwiseMin(points[v]);
+      node.hi = node.hi.cwiseMax(points[v]);
       axis += Mesh.vertexNormals[v];
     }
-    clo = clo.cwiseMin(Mesh.faceCentroids[f]);
-    chi = chi.cwiseMax(Mesh.faceCentroids[f]);
+    clo = clo.cwiseMin(centroids[f]);
+    chi = chi.cwiseMax(centroids[f]);
   }
   node.clo = clo;
   node.chi = chi;
@@ -159,7 +205,7 @@ void FaceTree::Build(int first, int count, int index)
     this->Order.begin() + first + count,
     [&](int a, int b)
     {
-      const double ca = Mesh.faceCentroids[a][axisIndex], cb = Mesh.faceCentroids[b][axisIndex];
+      const double ca = centroids[a][axisIndex], cb = centroids[b][axisIndex];
       return ca != cb ? ca < cb : a < b;
     });
   node.first = first;
@@ -177,7 +223,7 @@ void FaceTree::Build(int first, int count, int index)
     [&](vtkIdType begin, vtkIdType end)
     {
       for (vtkIdType c = begin; c < end; ++c)
-        this->Build(firsts[c], counts[c], indices[c]);
+        this->Build(firsts[c], counts[c], indices[c], points, centroids);
     });
 }
 
@@ -186,15 +232,17 @@ void FaceTree::Traverse(const Vec3& p, const double& best2, Prune prune, Visit v
 {
   // Depth-first, nearer child first; `best2` shrinks as `visit` finds closer faces. Each
   // node's box distance is computed once, when its parent pushes it.
+  const Vec3 q = this->InFrame(p);
+  const double scale = this->PruneScale, add = this->PruneAdd(p);
   int stack[128];
   double stackDistance2[128];
   int top = 0;
   stack[top] = 0;
-  stackDistance2[top++] = BoxDistance2(this->Nodes[0].lo, this->Nodes[0].hi, p);
+  stackDistance2[top++] = BoxDistance2(this->Nodes[0].lo, this->Nodes[0].hi, q);
   while (top > 0)
   {
     --top;
-    if (stackDistance2[top] > best2)
+    if (stackDistance2[top] > best2 * scale + add)
       continue;
     const Node& node = this->Nodes[stack[top]];
     if (prune(node))
@@ -205,8 +253,8 @@ void FaceTree::Traverse(const Vec3& p, const double& best2, Prune prune, Visit v
         visit(k);
       continue;
     }
-    const double dl = BoxDistance2(this->Nodes[node.left].lo, this->Nodes[node.left].hi, p);
-    const double dr = BoxDistance2(this->Nodes[node.right].lo, this->Nodes[node.right].hi, p);
+    const double dl = BoxDistance2(this->Nodes[node.left].lo, this->Nodes[node.left].hi, q);
+    const double dr = BoxDistance2(this->Nodes[node.right].lo, this->Nodes[node.right].hi, q);
     const bool leftFirst = dl <= dr;
     stack[top] = leftFirst ? node.right : node.left;
     stackDistance2[top++] = leftFirst ? dr : dl;
@@ -356,15 +404,17 @@ int FaceTree::NearestCentroidFace(const Vec3& p) const
   if (this->Nodes.empty())
     return bestFace;
   // As Traverse, on the boxes of the face centroids.
+  const Vec3 q = this->InFrame(p);
+  const double scale = this->PruneScale, add = this->PruneAdd(p);
   int stack[128];
   double stackDistance2[128];
   int top = 0;
   stack[top] = 0;
-  stackDistance2[top++] = BoxDistance2(this->Nodes[0].clo, this->Nodes[0].chi, p);
+  stackDistance2[top++] = BoxDistance2(this->Nodes[0].clo, this->Nodes[0].chi, q);
   while (top > 0)
   {
     --top;
-    if (stackDistance2[top] > best2)
+    if (stackDistance2[top] > best2 * scale + add)
       continue;
     const Node& node = this->Nodes[stack[top]];
     if (node.count > 0)
@@ -381,8 +431,8 @@ int FaceTree::NearestCentroidFace(const Vec3& p) const
       }
       continue;
     }
-    const double dl = BoxDistance2(this->Nodes[node.left].clo, this->Nodes[node.left].chi, p);
-    const double dr = BoxDistance2(this->Nodes[node.right].clo, this->Nodes[node.right].chi, p);
+    const double dl = BoxDistance2(this->Nodes[node.left].clo, this->Nodes[node.left].chi, q);
+    const double dr = BoxDistance2(this->Nodes[node.right].clo, this->Nodes[node.right].chi, q);
     const bool leftFirst = dl <= dr;
     stack[top] = leftFirst ? node.right : node.left;
     stackDistance2[top++] = leftFirst ? dr : dl;

@@ -14,11 +14,12 @@ namespace foldingmeshes
 {
 /**
  * Faces are split recursively at the median centroid along the longest axis (leaves of
- * at most 8 faces). Every node stores the bounding box of its triangles and a cone
- * bounding the vertex normals of its faces, so a query skips whole subtrees that are
- * too far away *or* whose normals cannot be compatible with the query normal. Results
- * are exact (ties: lowest face id). Degenerate faces are left out. Queries are const and
- * thread-safe.
+ * at most 8 faces), in the frame BoxFrame chooses (the identity, or axes along the mesh's
+ * long edges when its faces' boxes are much smaller there: slivers of a rotated mesh). Every node
+ * stores the bounding box of its triangles and a cone bounding the vertex normals of its faces, so
+ * a query skips whole subtrees that are too far away *or* whose normals cannot be compatible with
+ * the query normal. Results are exact (ties: lowest face id). Degenerate faces are left out.
+ * Queries are const and thread-safe.
  *
  * Why not vtkStaticCellLocator: its API answers "closest cell" or "cells in a box", not
  * "closest cell whose interpolated normal is within 45 degrees of n". Emulating that with
@@ -75,6 +76,8 @@ public:
   int NearestCentroidFace(const Vec3& p) const;
 
   int NumberOfNodes() const { return static_cast<int>(this->Nodes.size()); }
+  /// True when the boxes are built in a rotated frame (see BoxFrame).
+  bool RotatedFrame() const { return this->Rotated; }
 
   /// The mesh whose faces this tree holds.
   const PreparedMesh& Surface() const { return this->Mesh; }
@@ -92,8 +95,19 @@ private:
   };
   /// Number of nodes of the subtree over `count` faces.
   static int SubtreeNodes(int count);
-  /// Builds the subtree over Order[first, first + count) as Nodes[index] and its successors.
-  void Build(int first, int count, int index);
+  /// Builds the subtree over Order[first, first + count) as Nodes[index] and its successors,
+  /// from the points and face centroids in the box frame.
+  void Build(int first,
+    int count,
+    int index,
+    const std::vector<Vec3>& points,
+    const std::vector<Vec3>& centroids);
+  /// p in the box frame.
+  Vec3 InFrame(const Vec3& p) const { return this->Rotated ? Vec3(this->Frame * p) : p; }
+  /// A node whose (frame) box is d2 away from the query is skipped when
+  /// d2 > best2 * PruneScale + PruneAdd(p): exact for the identity frame, and in a rotated one
+  /// with margins far above the rounding of the rotation (see Traverse).
+  double PruneAdd(const Vec3& p) const;
   /// Visits the faces of the leaves not farther than sqrt(best2) from p (best2 may shrink
   /// during the visit) and not pruned by prune(node).
   template <typename Prune, typename Visit>
@@ -152,6 +166,10 @@ private:
   bool Beyond(const Vec3& p, int k, double best2) const;
 
   const PreparedMesh& Mesh;
+  Eigen::Matrix3d Frame = Eigen::Matrix3d::Identity(); ///< rows: the box axes
+  bool Rotated = false;                                ///< Frame is not the identity
+  double PruneScale = 1.0;
+  double CoordinateScale = 0.0;   ///< largest |coordinate| of the mesh's points
   std::vector<int> Order;         ///< face ids, leaf ranges
   std::vector<PackedFace> Packed; ///< per Order entry
   std::vector<int> OrderIndex;    ///< face id -> index into Order (-1: degenerate)

@@ -21,6 +21,10 @@
 // - a soup: the blob with 60 long triangles and slivers spanning its box, checked like the
 //   blob above, near and far; and flat plates turned obliquely (where the nodes' oriented
 //   boxes, not their axis-aligned ones, prune): bit for bit the exhaustive scan.
+// - a capped cylinder of long slivers (the artist-like chair's legs) under a random rotation:
+//   the tree builds its boxes in a rotated frame (not for the cylinder as built, axis-aligned),
+//   and its answers - ClosestCompatibleFace, ClosestFace with and without excluded faces,
+//   NearestCentroidFace - are still bit for bit those of the exhaustive scan, near and far.
 #include "CoreTestUtilities.h"
 #include "FaceTree.h"
 #include "PointTriangleDistance.h"
@@ -305,6 +309,81 @@ void CheckExact(const char* name, const PreparedMesh& m, int queries, double far
   EXPECT(hits > queries / 3, name << ": only " << hits << " of " << queries << " queries hit");
 }
 
+/// ClosestFace against the exhaustive scan with its rule (closest point, ties: lowest id), with
+/// and without a third of the faces excluded, and a distance limit on every other query.
+void CheckPlainExact(const char* name, const PreparedMesh& m, int queries, double farthest)
+{
+  const FaceTree tree(m);
+  std::vector<char> excluded(m.NumberOfFaces());
+  for (char& x : excluded)
+    x = rng() % 3 == 0;
+  int mismatches = 0, hits = 0;
+  for (int q = 0; q < queries; ++q)
+  {
+    const int v = static_cast<int>(rng() % m.NumberOfPoints());
+    const Vec3 p = m.points[v] + U(-farthest, farthest) * m.diagonal * m.vertexNormals[v] +
+      U(0, 0.01) * m.diagonal * RandomUnit();
+    const double maxDistance = q % 2 == 0 ? kInf : 0.5 * farthest * m.diagonal;
+    const std::vector<char>* const masks[2] = { nullptr, &excluded };
+    for (const std::vector<char>* mask : masks)
+    {
+      FaceTree::Hit ref;
+      double best2 = maxDistance * maxDistance;
+      for (int f = 0; f < m.NumberOfFaces(); ++f)
+      {
+        if (m.faceDegenerate[f] || (mask && (*mask)[f]))
+          continue;
+        const auto& t = m.triangles[f];
+        const auto cp = ClosestPointTriangle(p, m.points[t[0]], m.points[t[1]], m.points[t[2]]);
+        if (cp.squaredDistance < best2 || (cp.squaredDistance == best2 && ref.face < 0))
+        {
+          best2 = cp.squaredDistance;
+          ref.face = f;
+          ref.point = cp.point;
+        }
+      }
+      if (ref.face >= 0)
+        ref.distance = std::sqrt(best2);
+      hits += ref.face >= 0;
+      const FaceTree::Hit hit = tree.ClosestFace(p, maxDistance, mask);
+      const bool same = hit.face == ref.face && hit.distance == ref.distance &&
+        (ref.face < 0 || hit.point == ref.point);
+      if (!same && ++mismatches <= 5)
+        EXPECT(false,
+          name << (mask ? ", faces excluded" : "") << ": ClosestFace " << p.transpose()
+               << ": tree face " << hit.face << " d " << hit.distance << ", exhaustive face "
+               << ref.face << " d " << ref.distance);
+    }
+  }
+  EXPECT(
+    mismatches == 0, name << ": " << mismatches << " ClosestFace answers differ from the scan");
+  EXPECT(hits > queries, name << ": only " << hits << " of " << 2 * queries << " queries hit");
+}
+
+/// A capped cylinder along z (radius r, length 2 h) of `segments` long side slivers and two fans.
+TriangleMesh SliverCylinder(double r, double h, int segments)
+{
+  TriangleMesh m;
+  for (int i = 0; i < segments; ++i)
+  {
+    const double a = 2.0 * kPi * i / segments;
+    m.points.push_back(Vec3(r * std::cos(a), r * std::sin(a), -h));
+    m.points.push_back(Vec3(r * std::cos(a), r * std::sin(a), h));
+  }
+  const int bottom = static_cast<int>(m.points.size());
+  m.points.push_back(Vec3(0, 0, -h));
+  m.points.push_back(Vec3(0, 0, h));
+  for (int i = 0; i < segments; ++i)
+  {
+    const int j = (i + 1) % segments;
+    m.triangles.push_back({ 2 * i, 2 * j, 2 * j + 1 });
+    m.triangles.push_back({ 2 * i, 2 * j + 1, 2 * i + 1 });
+    m.triangles.push_back({ bottom, 2 * j, 2 * i });
+    m.triangles.push_back({ bottom + 1, 2 * i + 1, 2 * j + 1 });
+  }
+  return m;
+}
+
 TriangleMesh Plate(double z, bool up, int n)
 {
   TriangleMesh m;
@@ -451,6 +530,28 @@ int main()
     CheckMesh("blob with large triangles", m, 600, angles, false);
     CheckExact("blob with large triangles, near", m, 400, 0.02);
     CheckExact("blob with large triangles, far", m, 400, 0.15);
+  }
+  {
+    // Long slivers, axis-aligned and turned: only the turned cylinder gets a rotated frame.
+    const TriangleMesh cylinder = SliverCylinder(0.025, 0.22, 300);
+    const PreparedMesh straight = coretest::Prepare(cylinder);
+    EXPECT(!FaceTree(straight).RotatedFrame(), "axis-aligned cylinder: rotated box frame");
+    TriangleMesh turned = cylinder;
+    const Eigen::Matrix3d rotation =
+      Eigen::AngleAxisd(0.7, Vec3(0.3, -0.8, 0.5).normalized()).toRotationMatrix();
+    for (Vec3& x : turned.points)
+      x = rotation * x + Vec3(0.4, -1.3, 2.2);
+    const PreparedMesh m = coretest::Prepare(turned);
+    EXPECT(FaceTree(m).RotatedFrame(), "turned cylinder of slivers: boxes not in a rotated frame");
+    CheckMesh("turned cylinder of slivers", m, 200, angles, false);
+    CheckExact("turned cylinder of slivers, near", m, 300, 0.02);
+    CheckExact("turned cylinder of slivers, far", m, 300, 0.3);
+    CheckPlainExact("turned cylinder of slivers, near", m, 300, 0.02);
+    CheckPlainExact("turned cylinder of slivers, far", m, 300, 0.3);
+    CheckPlainExact("blob with large triangles",
+      coretest::Prepare(coretest::ToTriangleMesh(MakeBilateralBlob(3000).mesh)),
+      300,
+      0.1);
   }
   std::printf("TestFaceTree: %.2f s\n", coretest::Seconds(t0));
   return coretest::Finish("TestFaceTree");
