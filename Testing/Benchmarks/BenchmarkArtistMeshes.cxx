@@ -1,4 +1,4 @@
-// The artist-like corpus of issue 21 (ArtistMeshes.h: furniture, a rack, a biplane, a figure and
+// The artist-like corpus of issue 21 (Testing/Cxx/ArtistMeshes.h: furniture, a rack, a biplane, a figure and
 // a soup of many separate parts, each as built, moved and deformed), timed as a user meets it:
 // detection (vtkSymmetryPlaneDetector), fold (vtkFoldingTreeBuilder, its proof of the bound
 // included) and unfold (vtkFoldingTreeUnfolder), all at default options. One line per mesh:
