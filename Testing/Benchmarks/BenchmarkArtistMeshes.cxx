@@ -1,7 +1,7 @@
-// The artist-like corpus of issue 21 (Testing/Cxx/ArtistMeshes.h: furniture, a rack, a biplane, a figure and
-// a soup of many separate parts, each as built, moved and deformed), timed as a user meets it:
-// detection (vtkSymmetryPlaneDetector), fold (vtkFoldingTreeBuilder, its proof of the bound
-// included) and unfold (vtkFoldingTreeUnfolder), all at default options. One line per mesh:
+// The artist-like corpus of issue 21 (Testing/Cxx/ArtistMeshes.h: furniture, a rack, a biplane, a
+// figure and a soup of many separate parts, each as built, moved and deformed), timed as a user
+// meets it: detection (vtkSymmetryPlaneDetector), fold (vtkFoldingTreeBuilder, its proof of the
+// bound included) and unfold (vtkFoldingTreeUnfolder), all at default options. One line per mesh:
 // faces, parts, open edges, detection s, the detected plane's angle to the built one (degrees;
 // '-' for the deformed variants, whose whole has no plane; 45 or 90 where the detector reports
 // another plane the mesh also has: the chair's square seat; the rack, the bench and the biplane
@@ -17,12 +17,10 @@
 #include "vtkFoldingTreeUnfolder.h"
 #include "vtkSymmetryPlaneDetector.h"
 
-#include <vtkCellArray.h>
 #include <vtkDataArray.h>
 #include <vtkFieldData.h>
 #include <vtkMultiBlockDataSet.h>
 #include <vtkNew.h>
-#include <vtkPoints.h>
 #include <vtkPolyData.h>
 #include <vtkSMPTools.h>
 
@@ -45,26 +43,6 @@ constexpr int GoalFaces = 50000;
 double Seconds(Clock::time_point t0)
 {
   return std::chrono::duration<double>(Clock::now() - t0).count();
-}
-
-/// The mesh as GenerateArtistMeshes writes it (a PLY file's float coordinates: the numbers are
-/// those of BenchmarkFoldingTable1 on its files).
-vtkNew<vtkPolyData> ToPolyData(const foldingmeshes::TriangleMesh& m)
-{
-  vtkNew<vtkPoints> points;
-  points->SetDataTypeToFloat();
-  for (const Vec3& p : m.points)
-    points->InsertNextPoint(p.data());
-  vtkNew<vtkCellArray> polys;
-  for (const foldingmeshes::Triangle& t : m.triangles)
-  {
-    const vtkIdType ids[3] = { t[0], t[1], t[2] };
-    polys->InsertNextCell(3, ids);
-  }
-  vtkNew<vtkPolyData> mesh;
-  mesh->SetPoints(points);
-  mesh->SetPolys(polys);
-  return mesh;
 }
 
 /// First tuple of a field-data array (component c), NaN if absent.
@@ -122,7 +100,7 @@ int main(int argc, char* argv[])
     if (!selected)
       continue;
     ++meshes;
-    vtkNew<vtkPolyData> input = ToPolyData(m.mesh);
+    vtkSmartPointer<vtkPolyData> input = foldingmeshes::artist::ToPolyData(m.mesh);
     const int faces = static_cast<int>(m.mesh.triangles.size());
 
     vtkNew<vtkSymmetryPlaneDetector> detector;

@@ -16,36 +16,18 @@
 #include "ArtistMeshes.h"
 #include "EdgeTable.h"
 
-#include <vtkCellArray.h>
 #include <vtkNew.h>
 #include <vtkPLYWriter.h>
-#include <vtkPoints.h>
-#include <vtkPolyData.h>
 
 #include <cstdio>
 #include <string>
 
 namespace
 {
-using foldingmeshes::Vec3;
-
 bool Write(const foldingmeshes::TriangleMesh& a, const std::string& path)
 {
-  vtkNew<vtkPoints> points;
-  points->SetDataTypeToDouble();
-  for (const Vec3& p : a.points)
-    points->InsertNextPoint(p.data());
-  vtkNew<vtkCellArray> polys;
-  for (const foldingmeshes::Triangle& t : a.triangles)
-  {
-    const vtkIdType ids[3] = { t[0], t[1], t[2] };
-    polys->InsertNextCell(3, ids);
-  }
-  vtkNew<vtkPolyData> mesh;
-  mesh->SetPoints(points);
-  mesh->SetPolys(polys);
   vtkNew<vtkPLYWriter> writer;
-  writer->SetInputData(mesh);
+  writer->SetInputData(foldingmeshes::artist::ToPolyData(a));
   writer->SetFileName(path.c_str());
   writer->SetFileTypeToBinary();
   return writer->Write() == 1;

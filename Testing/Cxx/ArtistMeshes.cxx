@@ -1,5 +1,9 @@
 #include "ArtistMeshes.h"
 
+#include <vtkCellArray.h>
+#include <vtkNew.h>
+#include <vtkPoints.h>
+
 #include <Eigen/Geometry>
 
 #include <array>
@@ -317,6 +321,24 @@ std::vector<ArtistMesh> MakeArtistCorpus()
       corpus.push_back(std::move(m));
     }
   return corpus;
+}
+
+vtkSmartPointer<vtkPolyData> ToPolyData(const TriangleMesh& m)
+{
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToFloat();
+  for (const Vec3& p : m.points)
+    points->InsertNextPoint(p.data());
+  vtkNew<vtkCellArray> polys;
+  for (const Triangle& t : m.triangles)
+  {
+    const vtkIdType ids[3] = { t[0], t[1], t[2] };
+    polys->InsertNextCell(3, ids);
+  }
+  auto mesh = vtkSmartPointer<vtkPolyData>::New();
+  mesh->SetPoints(points);
+  mesh->SetPolys(polys);
+  return mesh;
 }
 }
 }

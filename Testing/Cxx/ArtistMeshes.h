@@ -11,6 +11,9 @@
 
 #include "TriangleMesh.h"
 
+#include <vtkPolyData.h>
+#include <vtkSmartPointer.h>
+
 #include <string>
 #include <vector>
 
@@ -30,6 +33,10 @@ struct ArtistMesh
 /// The 21 meshes: chair, chair_dense, bench_slats, rack, biplane, figure, soup, each exact,
 /// moved and deformed (the same meshes on every call).
 std::vector<ArtistMesh> MakeArtistCorpus();
+
+/// The mesh as a vtkPolyData with float points (what a PLY file holds: GenerateArtistMeshes
+/// writes these, BenchmarkArtistMeshes times them).
+vtkSmartPointer<vtkPolyData> ToPolyData(const TriangleMesh& mesh);
 }
 }
 
