@@ -24,7 +24,9 @@
 // - a capped cylinder of long slivers (the artist-like chair's legs) under a random rotation:
 //   the tree builds its boxes in a rotated frame (not for the cylinder as built, axis-aligned),
 //   and its answers - ClosestCompatibleFace, ClosestFace with and without excluded faces,
-//   NearestCentroidFace - are still bit for bit those of the exhaustive scan, near and far.
+//   NearestCentroidFace - are still bit for bit those of the exhaustive scan, near and far,
+//   exactly on corners, edges and faces, 1e-9 off and 1e3 diagonals away, and 1e6 from the
+//   origin (each of the pruning's two margins is needed by some of these).
 #include "CoreTestUtilities.h"
 #include "FaceTree.h"
 #include "PointTriangleDistance.h"
@@ -360,6 +362,81 @@ void CheckPlainExact(const char* name, const PreparedMesh& m, int queries, doubl
   EXPECT(hits > queries, name << ": only " << hits << " of " << 2 * queries << " queries hit");
 }
 
+/// Queries where the pruning margins of a rotated box frame matter: exactly on a corner, an
+/// edge's midpoint, inside a face, at a centroid, 1e-9 of the diagonal off a corner (the
+/// absolute margin), and 1e3 diagonals away (the relative one); ClosestFace with maxDistance
+/// infinite, 0 and 0.01 of the diagonal, ClosestCompatibleFace with any normal and 45 degrees,
+/// NearestCentroidFace - each bit for bit the exhaustive scan's.
+void CheckExactAtSurface(const char* name, const PreparedMesh& m, int queries)
+{
+  const FaceTree tree(m);
+  int mismatches = 0;
+  for (int q = 0; q < queries; ++q)
+  {
+    const auto& t = m.triangles[rng() % m.NumberOfFaces()];
+    const Vec3 &a = m.points[t[0]], &b = m.points[t[1]], &c = m.points[t[2]];
+    const double u = U(0, 1), v = U(0, 1 - u);
+    const Vec3 points[6] = { a,
+      0.5 * (a + b),
+      a + u * (b - a) + v * (c - a),
+      (a + b + c) / 3.0,
+      a + 1e-9 * m.diagonal * RandomUnit(),
+      a + 1e3 * m.diagonal * RandomUnit() };
+    const Vec3& p = points[q % 6];
+    for (double maxDistance : { kInf, 0.0, 0.01 * m.diagonal })
+    {
+      FaceTree::Hit ref;
+      double best2 = maxDistance * maxDistance;
+      for (int f = 0; f < m.NumberOfFaces(); ++f)
+      {
+        if (m.faceDegenerate[f])
+          continue;
+        const auto& s = m.triangles[f];
+        const auto cp = ClosestPointTriangle(p, m.points[s[0]], m.points[s[1]], m.points[s[2]]);
+        if (cp.squaredDistance < best2 || (cp.squaredDistance == best2 && ref.face < 0))
+        {
+          best2 = cp.squaredDistance;
+          ref.face = f;
+          ref.point = cp.point;
+        }
+      }
+      if (ref.face >= 0)
+        ref.distance = std::sqrt(best2);
+      const FaceTree::Hit hit = tree.ClosestFace(p, maxDistance);
+      if (!(hit.face == ref.face && hit.distance == ref.distance &&
+            (ref.face < 0 || hit.point == ref.point)) &&
+        ++mismatches <= 5)
+        EXPECT(false,
+          name << ": ClosestFace at " << p.transpose() << " within " << maxDistance << ": face "
+               << hit.face << " d " << hit.distance << ", exhaustive " << ref.face << " d "
+               << ref.distance);
+    }
+    const Vec3 n = RandomUnit();
+    for (double cosLimit : { -1.0, std::cos(kPi / 4) })
+    {
+      const FaceTree::Hit ref = ExhaustiveCompatible(m, p, n, cosLimit, kInf);
+      const FaceTree::Hit hit = tree.ClosestCompatibleFace(p, n, cosLimit, kInf);
+      if (!(hit.face == ref.face && hit.distance == ref.distance &&
+            (ref.face < 0 || hit.point == ref.point)) &&
+        ++mismatches <= 5)
+        EXPECT(false,
+          name << ": ClosestCompatibleFace at " << p.transpose() << ": face " << hit.face
+               << ", exhaustive " << ref.face);
+    }
+    int nearest = -1;
+    double nearest2 = kInf;
+    for (int f = 0; f < m.NumberOfFaces(); ++f)
+      if (!m.faceDegenerate[f] && (m.faceCentroids[f] - p).squaredNorm() < nearest2)
+      {
+        nearest2 = (m.faceCentroids[f] - p).squaredNorm();
+        nearest = f;
+      }
+    if (tree.NearestCentroidFace(p) != nearest && ++mismatches <= 5)
+      EXPECT(false, name << ": NearestCentroidFace at " << p.transpose());
+  }
+  EXPECT(mismatches == 0, name << ": " << mismatches << " answers differ from the scan");
+}
+
 /// A capped cylinder along z (radius r, length 2 h) of `segments` long side slivers and two fans.
 TriangleMesh SliverCylinder(double r, double h, int segments)
 {
@@ -548,6 +625,14 @@ int main()
     CheckExact("turned cylinder of slivers, far", m, 300, 0.3);
     CheckPlainExact("turned cylinder of slivers, near", m, 300, 0.02);
     CheckPlainExact("turned cylinder of slivers, far", m, 300, 0.3);
+    CheckExactAtSurface("turned cylinder of slivers, on the surface and far", m, 900);
+    TriangleMesh far = turned;
+    for (Vec3& x : far.points)
+      x += Vec3(1e6, -2e6, 3e6);
+    const PreparedMesh farMesh = coretest::Prepare(far);
+    EXPECT(
+      FaceTree(farMesh).RotatedFrame(), "turned cylinder at 1e6: boxes not in a rotated frame");
+    CheckExactAtSurface("turned cylinder of slivers 1e6 from the origin", farMesh, 900);
     CheckPlainExact("blob with large triangles",
       coretest::Prepare(coretest::ToTriangleMesh(MakeBilateralBlob(3000).mesh)),
       300,
