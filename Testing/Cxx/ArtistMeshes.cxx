@@ -323,10 +323,13 @@ std::vector<ArtistMesh> MakeArtistCorpus()
   return corpus;
 }
 
-vtkSmartPointer<vtkPolyData> ToPolyData(const TriangleMesh& m)
+vtkSmartPointer<vtkPolyData> ToPolyData(const TriangleMesh& m, bool doublePoints)
 {
   vtkNew<vtkPoints> points;
-  points->SetDataTypeToFloat();
+  if (doublePoints)
+    points->SetDataTypeToDouble();
+  else
+    points->SetDataTypeToFloat();
   for (const Vec3& p : m.points)
     points->InsertNextPoint(p.data());
   vtkNew<vtkCellArray> polys;

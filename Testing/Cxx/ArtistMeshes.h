@@ -35,8 +35,9 @@ struct ArtistMesh
 std::vector<ArtistMesh> MakeArtistCorpus();
 
 /// The mesh as a vtkPolyData with float points (what a PLY file holds: GenerateArtistMeshes
-/// writes these, BenchmarkArtistMeshes times them).
-vtkSmartPointer<vtkPolyData> ToPolyData(const TriangleMesh& mesh);
+/// writes these, BenchmarkArtistMeshes times them), or double ones (the corpus as built; the
+/// dense chair folds worse there, docs/benchmarks.md).
+vtkSmartPointer<vtkPolyData> ToPolyData(const TriangleMesh& mesh, bool doublePoints = false);
 }
 }
 
