@@ -223,14 +223,15 @@ void CheckMesh(const char* name,
     name << ": " << centroidMismatches << " NearestCentroidFace mismatches");
 }
 
-/// Exhaustive scan with FaceTree's per-face rule: the result the tree must give bit for bit
-/// (without the faces f with (*excluded)[f]).
-FaceTree::Hit ExhaustiveCompatible(const PreparedMesh& m,
+/// Exhaustive scan with FaceTree's per-face rule: over the non-degenerate faces (without those
+/// `excluded` marks) closer than maxDistance whose closest point `accept`s, the closest point,
+/// ties to the lowest id - the result the tree must give bit for bit.
+template <typename Accept>
+FaceTree::Hit ExhaustiveScan(const PreparedMesh& m,
   const Vec3& p,
-  const Vec3& n,
-  double cosLimit,
   double maxDistance,
-  const std::vector<char>* excluded = nullptr)
+  const std::vector<char>* excluded,
+  Accept accept)
 {
   FaceTree::Hit hit;
   double best2 = maxDistance * maxDistance;
@@ -242,10 +243,7 @@ FaceTree::Hit ExhaustiveCompatible(const PreparedMesh& m,
     const auto cp = ClosestPointTriangle(p, m.points[t[0]], m.points[t[1]], m.points[t[2]]);
     if (cp.squaredDistance > best2 || (cp.squaredDistance == best2 && hit.face >= 0))
       continue; // ascending ids: on a tie the earlier (lower) id stays
-    const Vec3 ni = cp.barycentric[0] * m.vertexNormals[t[0]] +
-      cp.barycentric[1] * m.vertexNormals[t[1]] + cp.barycentric[2] * m.vertexNormals[t[2]];
-    const double len = ni.norm();
-    if (!(len > 0.0 && ni.dot(n) >= cosLimit * len))
+    if (!accept(t, cp))
       continue;
     best2 = cp.squaredDistance;
     hit.face = f;
@@ -254,6 +252,42 @@ FaceTree::Hit ExhaustiveCompatible(const PreparedMesh& m,
   if (hit.face >= 0)
     hit.distance = std::sqrt(best2);
   return hit;
+}
+
+/// ClosestCompatibleFace's rule: the interpolated vertex normal n_i at the closest point
+/// satisfies n_i . n >= cosLimit |n_i|.
+FaceTree::Hit ExhaustiveCompatible(const PreparedMesh& m,
+  const Vec3& p,
+  const Vec3& n,
+  double cosLimit,
+  double maxDistance,
+  const std::vector<char>* excluded = nullptr)
+{
+  return ExhaustiveScan(m,
+    p,
+    maxDistance,
+    excluded,
+    [&](const foldingmeshes::Triangle& t, const foldingmeshes::ClosestPointOnTriangle& cp)
+    {
+      const Vec3 ni = cp.barycentric[0] * m.vertexNormals[t[0]] +
+        cp.barycentric[1] * m.vertexNormals[t[1]] + cp.barycentric[2] * m.vertexNormals[t[2]];
+      const double len = ni.norm();
+      return len > 0.0 && ni.dot(n) >= cosLimit * len;
+    });
+}
+
+/// ClosestFace's rule: every face.
+FaceTree::Hit ExhaustiveClosest(const PreparedMesh& m,
+  const Vec3& p,
+  double maxDistance,
+  const std::vector<char>* excluded = nullptr)
+{
+  return ExhaustiveScan(m,
+    p,
+    maxDistance,
+    excluded,
+    [](const foldingmeshes::Triangle&, const foldingmeshes::ClosestPointOnTriangle&)
+    { return true; });
 }
 
 /// Queries at heights of up to `farthest` above or below random surface points, with the
@@ -329,23 +363,7 @@ void CheckPlainExact(const char* name, const PreparedMesh& m, int queries, doubl
     const std::vector<char>* const masks[2] = { nullptr, &excluded };
     for (const std::vector<char>* mask : masks)
     {
-      FaceTree::Hit ref;
-      double best2 = maxDistance * maxDistance;
-      for (int f = 0; f < m.NumberOfFaces(); ++f)
-      {
-        if (m.faceDegenerate[f] || (mask && (*mask)[f]))
-          continue;
-        const auto& t = m.triangles[f];
-        const auto cp = ClosestPointTriangle(p, m.points[t[0]], m.points[t[1]], m.points[t[2]]);
-        if (cp.squaredDistance < best2 || (cp.squaredDistance == best2 && ref.face < 0))
-        {
-          best2 = cp.squaredDistance;
-          ref.face = f;
-          ref.point = cp.point;
-        }
-      }
-      if (ref.face >= 0)
-        ref.distance = std::sqrt(best2);
+      const FaceTree::Hit ref = ExhaustiveClosest(m, p, maxDistance, mask);
       hits += ref.face >= 0;
       const FaceTree::Hit hit = tree.ClosestFace(p, maxDistance, mask);
       const bool same = hit.face == ref.face && hit.distance == ref.distance &&
@@ -385,23 +403,7 @@ void CheckExactAtSurface(const char* name, const PreparedMesh& m, int queries)
     const Vec3& p = points[q % 6];
     for (double maxDistance : { kInf, 0.0, 0.01 * m.diagonal })
     {
-      FaceTree::Hit ref;
-      double best2 = maxDistance * maxDistance;
-      for (int f = 0; f < m.NumberOfFaces(); ++f)
-      {
-        if (m.faceDegenerate[f])
-          continue;
-        const auto& s = m.triangles[f];
-        const auto cp = ClosestPointTriangle(p, m.points[s[0]], m.points[s[1]], m.points[s[2]]);
-        if (cp.squaredDistance < best2 || (cp.squaredDistance == best2 && ref.face < 0))
-        {
-          best2 = cp.squaredDistance;
-          ref.face = f;
-          ref.point = cp.point;
-        }
-      }
-      if (ref.face >= 0)
-        ref.distance = std::sqrt(best2);
+      const FaceTree::Hit ref = ExhaustiveClosest(m, p, maxDistance);
       const FaceTree::Hit hit = tree.ClosestFace(p, maxDistance);
       if (!(hit.face == ref.face && hit.distance == ref.distance &&
             (ref.face < 0 || hit.point == ref.point)) &&
