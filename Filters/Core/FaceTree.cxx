@@ -31,8 +31,8 @@ double FaceTree::PruneAdd(const Vec3& p) const
 {
   if (!this->Rotated)
     return 0.0;
-  const double e = PruneAbsoluteMargin *
-    (p.cwiseAbs().maxCoeff() * std::sqrt(3.0) + this->CoordinateScale * std::sqrt(3.0));
+  const double e =
+    PruneAbsoluteMargin * std::sqrt(3.0) * (p.cwiseAbs().maxCoeff() + this->CoordinateScale);
   return e * e * (1.0 + 1.0 / PruneRelativeMargin);
 }
 
@@ -46,14 +46,13 @@ FaceTree::FaceTree(const PreparedMesh& mesh)
   {
     this->Frame = BoxFrame(mesh, this->Order);
     this->Rotated = !this->Frame.isIdentity(0.0);
-    this->CoordinateScale =
-      std::max(mesh.boundsMin.cwiseAbs().maxCoeff(), mesh.boundsMax.cwiseAbs().maxCoeff());
-    for (const Vec3& x : mesh.points)
-      this->CoordinateScale = std::max(this->CoordinateScale, x.cwiseAbs().maxCoeff());
     const int count = static_cast<int>(this->Order.size());
     this->Nodes.resize(SubtreeNodes(count));
     if (this->Rotated)
     {
+      // The margins of PruneAdd (only a rotated frame has them).
+      for (const Vec3& x : mesh.points)
+        this->CoordinateScale = std::max(this->CoordinateScale, x.cwiseAbs().maxCoeff());
       this->PruneScale = 1.0 + PruneRelativeMargin;
       std::vector<Vec3> points(mesh.points.size()), centroids(mesh.faceCentroids.size());
       ForRanges(static_cast<vtkIdType>(points.size()),
