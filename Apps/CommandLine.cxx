@@ -42,6 +42,8 @@ connected region that has it (Folding meshes, SGP 2006, section 3).
                            instead of the principal axes)
   --candidates N           voted candidate planes tried by the robust method (default 8,
                            range 0..64)
+  --sampled-search-above N meshes with more than N faces search candidate planes on a
+                           sampled copy (default 15000; 0: always; a huge N: the full search)
   --separate-parts         regions never span separate parts (default: parts touching within
                            epsilon are connected)
   --seed N                 seed of the candidate sampling (default 1)

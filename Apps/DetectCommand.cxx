@@ -86,6 +86,9 @@ DetectArguments ParseDetectArguments(int argc, char* argv[], vtkSymmetryPlaneDet
     }
     else if (arg == "--candidates")
       detector->SetNumberOfCandidates(ParseInteger(arg, value("--candidates"), 0, 64));
+    else if (arg == "--sampled-search-above")
+      detector->SetSampledSearchAboveFaces(
+        ParseInteger(arg, value("--sampled-search-above"), 0, 1000000000));
     else if (arg == "--seed")
       detector->SetRandomSeed(ParseInteger(arg, value("--seed"), -2147483647, 2147483647));
     else if (arg == "--separate-parts")

@@ -217,6 +217,7 @@ foldingmeshes::SymmetryOptions SymmetryOptionsOf(vtkSymmetryPlaneDetector* self,
     options.initialPlane.normal = normal;
   }
   options.numberOfCandidates = self->GetNumberOfCandidates();
+  options.sampledSearchAboveFaces = self->GetSampledSearchAboveFaces();
   options.maximumIterations = self->GetMaximumIterations();
   options.compatibilityAngle = self->GetCompatibilityAngle();
   options.minimumSymmetricAreaFraction = self->GetMinimumSymmetricAreaFraction();

@@ -14,7 +14,7 @@ namespace foldingmeshes
 {
 /// Meshes with more faces than this are searched for candidate planes on a sampled copy by
 /// default (SymmetryOptions::sampledSearchAboveFaces).
-constexpr int SampledSearchAboveFaces = 50000;
+constexpr int SampledSearchAboveFaces = 15000;
 /// The sampled copy has about this fraction of the mesh's faces ...
 constexpr double SampledFaceFraction = 0.25;
 /// ... and at most this many.

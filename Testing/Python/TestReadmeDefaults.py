@@ -67,6 +67,7 @@ CLI_OPTIONS = {
     ("detect", "--tolerance"): ("vtkSymmetryPlaneDetector", "Tolerance"),
     ("detect", "--candidates"): ("vtkSymmetryPlaneDetector", "NumberOfCandidates"),
     ("detect", "--seed"): ("vtkSymmetryPlaneDetector", "RandomSeed"),
+    ("detect", "--sampled-search-above"): ("vtkSymmetryPlaneDetector", "SampledSearchAboveFaces"),
     ("fold", "--tolerance"): ("vtkFoldingTreeBuilder", "Tolerance"),
     ("fold", "--min-area-fraction"): ("vtkFoldingTreeBuilder", "MinimumAreaFraction"),
     ("fold", "--max-folds"): ("vtkFoldingTreeBuilder", "MaximumFolds"),
