@@ -537,7 +537,7 @@ bool BuildFoldingTree(const TriangleMesh& input,
           "input has none",
           round,
           check.upper,
-          options.epsilon,
+          tree.rootEpsilon,
           check.within ? "within" : "not within",
           check.openEdges));
       if (check.within)
@@ -561,6 +561,9 @@ bool BuildFoldingTree(const TriangleMesh& input,
         for (int f : check.pinOpen)
           pinned[f] = 1;
       }
+      else if (boundRounds == 0 && check.upper > again.epsilon &&
+        check.upper <= NearMissBoundRatio * again.epsilon)
+        again.epsilon *= NearMissEpsilonMargin * again.epsilon / check.upper; // no pins
       else if (boundRounds == MaximumVerificationRounds)
         std::fill(pinned.begin(), pinned.end(), 1); // a single leaf: the input itself
       else

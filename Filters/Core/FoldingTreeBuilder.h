@@ -45,6 +45,11 @@ enum class KeepSide
 
 /// Rebuilds with pinned faces before the verification pins every face (verifyBound).
 constexpr int MaximumVerificationRounds = 4;
+/// A first proof that misses epsilon by at most this factor (a near miss: the tree is about
+/// right, its budgets a little too loose) rebuilds the tree at a smaller epsilon instead of
+/// pinning faces: epsilon * epsilon / bound * NearMissEpsilonMargin, no pins.
+constexpr double NearMissBoundRatio = 1.25;
+constexpr double NearMissEpsilonMargin = 0.97;
 /// Builds FoldingTreeOptions::verifyBound adds at most to close the holes a closed input came
 /// back with (faces pinned where they are; the bound's rounds come on top) ...
 constexpr int MaximumClosingRounds = 2;

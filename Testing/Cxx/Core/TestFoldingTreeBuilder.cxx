@@ -150,8 +150,14 @@ void CheckInvariants(const char* name, const Case& c, const FoldingTree& t, doub
     return;
   EXPECT(t.numberOfOriginalFaces == static_cast<int>(c.mesh.triangles.size()),
     name << ": original faces");
-  EXPECT(
-    t.rootEpsilon == rootEpsilon && t.nodes[0].epsilon == rootEpsilon, name << ": root epsilon");
+  // The requested epsilon, or the smaller one of a near-miss rebuild (NearMissBoundRatio).
+  const bool nearMiss = t.verificationRounds >= 1 && t.rootEpsilon < rootEpsilon &&
+    t.rootEpsilon >= rootEpsilon * NearMissEpsilonMargin / NearMissBoundRatio;
+  EXPECT((t.rootEpsilon == rootEpsilon || nearMiss) && t.nodes[0].epsilon == t.rootEpsilon,
+    name << ": root epsilon " << t.rootEpsilon << " of " << rootEpsilon << ", "
+         << t.verificationRounds << " verification rounds");
+  if (nearMiss)
+    std::printf("%s: a near-miss rebuild at %.4f of epsilon\n", name, t.rootEpsilon / rootEpsilon);
   int stored = 0;
   const SurfaceDistanceQuery inputSurface(c.mesh);
   for (int i = 0; i < t.NumberOfNodes(); ++i)
