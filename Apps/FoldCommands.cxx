@@ -74,6 +74,7 @@ int Fold(int argc, char* argv[])
   const int leaves = static_cast<int>(TreeValue(tree, "NumberOfLeaves"));
   const int nodes = static_cast<int>(TreeValue(tree, "NumberOfNodes"));
   const double epsilon = TreeValue(tree, "RootEpsilon");
+  const double requested = TreeValue(tree, "RequestedEpsilon", epsilon);
   const double buildSeconds = TreeValue(tree, "BuildSeconds");
   const double verifiedBound = TreeValue(tree, "VerifiedBound", -1.0);
   const int pinnedFaces = static_cast<int>(TreeValue(tree, "PinnedFaces"));
@@ -84,7 +85,7 @@ int Fold(int argc, char* argv[])
       "{\n  \"mesh\": %s,\n  \"originalFaces\": %d,\n  \"storedFaces\": %d,\n"
       "  \"compression\": %.6f,\n  \"treeHeight\": %d,\n  \"folds\": %d,\n"
       "  \"rotations\": %d,\n  \"leaves\": %d,\n  \"nodes\": %d,\n  \"rootEpsilon\": %.9g,\n"
-      "  \"verifiedBound\": %.9g,\n  \"pinnedFaces\": %d,\n"
+      "  \"requestedEpsilon\": %.9g,\n  \"verifiedBound\": %.9g,\n  \"pinnedFaces\": %d,\n"
       "  \"verificationRounds\": %d,\n"
       "  \"buildSeconds\": %.3f,\n  \"seconds\": %.3f,\n"
       "  \"outputs\": {\"tree\": %s, \"segmentation\": %s, \"picture\": %s}\n}\n",
@@ -98,6 +99,7 @@ int Fold(int argc, char* argv[])
       leaves,
       nodes,
       epsilon,
+      requested,
       verifiedBound,
       pinnedFaces,
       rounds,
@@ -120,7 +122,14 @@ int Fold(int argc, char* argv[])
       rotations,
       leaves,
       nodes);
-    std::printf("root epsilon:            %.6g\n", epsilon);
+    if (epsilon < requested)
+      std::printf("root epsilon:            %.6g (%.3f of the requested %.6g: the first tree "
+                  "was proved a little beyond it and rebuilt at a smaller epsilon)\n",
+        epsilon,
+        epsilon / requested,
+        requested);
+    else
+      std::printf("root epsilon:            %.6g\n", epsilon);
     if (verifiedBound >= 0.0)
       std::printf("proved bound:            %.6g (unfold vs mesh; %d faces pinned in %d extra "
                   "build(s))\n",

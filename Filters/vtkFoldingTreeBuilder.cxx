@@ -12,6 +12,7 @@
 
 #include <vtkAbstractCellLocator.h>
 #include <vtkCellData.h>
+#include <vtkDoubleArray.h>
 #include <vtkInformation.h>
 #include <vtkInformationVector.h>
 #include <vtkIntArray.h>
@@ -247,6 +248,12 @@ int vtkFoldingTreeBuilder::RequestWholeData(vtkInformation*,
         : this->Locator                         ? this->Locator->GetClassName()
                                                 : "FaceTree");
     info->GetFieldData()->AddArray(locator);
+    // The epsilon asked for (Tolerance): the tree's RootEpsilon is smaller after a near-miss
+    // rebuild of VerifyBound.
+    vtkNew<vtkDoubleArray> requested;
+    requested->SetName("RequestedEpsilon");
+    requested->InsertNextValue(epsilon);
+    info->GetFieldData()->AddArray(requested);
   }
   this->OriginalFaces = folding.numberOfOriginalFaces;
   this->StoredFaces = folding.StoredFaces();

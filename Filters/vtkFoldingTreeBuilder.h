@@ -20,7 +20,9 @@
  * TreeHeight, NumberOfNodes, NumberOfLeaves, NumberOfFolds, NumberOfRotations,
  * MaximumFoldsOnPath, OriginalArea,
  * BuildSeconds, RootEpsilon, Diagonal, Aborted, VerifiedBound, PinnedFaces and
- * VerificationRounds (see VerifyBound; optional on reading), InputNonManifoldEdges (vtkIdType, 3
+ * VerificationRounds (see VerifyBound; optional on reading), RequestedEpsilon (the builder's
+ * Tolerance as a length; RootEpsilon is smaller after a near-miss rebuild; not read back),
+ * InputNonManifoldEdges (vtkIdType, 3
  * components per edge of the input used by more than two faces: its input point ids a < b and
  * the number of faces; only when there are any; optional on reading: the tree's
  * inputNonManifoldEdges, whose faces the unfolder's repair keeps), and what the unfolder
@@ -285,7 +287,11 @@ public:
   ///@}
 
   ///@{
-  /** Results of the last run: root epsilon as a length, faces, stored faces, compression. */
+  /**
+   * Results of the last run: the requested root epsilon as a length (Tolerance; the tree's
+   * RootEpsilon is smaller after a near-miss rebuild, see VerifyBound), faces, stored faces,
+   * compression.
+   */
   vtkGetMacro(ToleranceLength, double);
   vtkGetMacro(OriginalFaces, int);
   vtkGetMacro(StoredFaces, int);

@@ -543,6 +543,7 @@ void vtkSymmetryPlaneDetector::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "InitialPlaneNormal: " << this->InitialPlaneNormal[0] << " "
      << this->InitialPlaneNormal[1] << " " << this->InitialPlaneNormal[2] << "\n";
   os << indent << "NumberOfCandidates: " << this->NumberOfCandidates << "\n";
+  os << indent << "SampledSearchAboveFaces: " << this->SampledSearchAboveFaces << "\n";
   os << indent << "MaximumIterations: " << this->MaximumIterations << "\n";
   os << indent << "CompatibilityAngle: " << this->CompatibilityAngle << "\n";
   os << indent << "ConnectNearbyParts: " << this->ConnectNearbyParts << "\n";

@@ -31,8 +31,9 @@
  *   the lowest sum of rho. This finds local symmetries on asymmetric bodies and
  *   resists large asymmetric attachments. The finalists end with a polish
  *   phase at sigma = epsilon (support d <= 2 epsilon). Meshes above
- *   SampledSearchAboveFaces (15k) faces search candidates on a sampled copy (some of their own
- * vertices, measured against the full mesh) and refine the best on the full mesh.
+ *   SampledSearchAboveFaces (15k) faces search candidates on a sampled copy
+ *   (some of their own vertices, measured against the full mesh) and refine
+ *   the best on the full mesh.
  * - PAPER: exactly one start (the principal axes of the area-weighted mesh, or
  *   the user's initial plane), as in the paper.
  *

@@ -527,6 +527,10 @@ bool BuildFoldingTree(const TriangleMesh& input,
     std::vector<char> pinned(input.triangles.size(), 0);
     int boundRounds = 0, closingRounds = 0;
     std::unique_ptr<FoldingTree> proved; // the last tree proved within epsilon, with holes
+    // A near miss of the first tree: it is rebuilt at a smaller epsilon, no pins; should that
+    // tree miss too, the rounds go on at epsilon with the first tree's pins (firstPins).
+    bool nearMissTree = false;
+    std::vector<int> firstPins;
     for (int round = 0;; ++round)
     {
       const UnfoldedBoundCheck check =
@@ -541,7 +545,10 @@ bool BuildFoldingTree(const TriangleMesh& input,
           check.within ? "within" : "not within",
           check.openEdges));
       if (check.within)
+      {
         tree.verifiedBound = check.upper;
+        nearMissTree = false;
+      }
       if (check.within && (check.pinOpen.empty() || closingRounds == MaximumClosingRounds))
         break;
       if (!check.within && proved)
@@ -561,9 +568,21 @@ bool BuildFoldingTree(const TriangleMesh& input,
         for (int f : check.pinOpen)
           pinned[f] = 1;
       }
-      else if (boundRounds == 0 && check.upper > again.epsilon &&
+      else if (round == 0 && check.upper > again.epsilon &&
         check.upper <= NearMissBoundRatio * again.epsilon)
+      {
         again.epsilon *= NearMissEpsilonMargin * again.epsilon / check.upper; // no pins
+        nearMissTree = true;
+        firstPins = check.pin;
+        --boundRounds; // not a round of pins
+      }
+      else if (nearMissTree)
+      {
+        again.epsilon = options.epsilon; // the near-miss rebuild missed too
+        nearMissTree = false;
+        for (int f : firstPins)
+          pinned[f] = 1;
+      }
       else if (boundRounds == MaximumVerificationRounds)
         std::fill(pinned.begin(), pinned.end(), 1); // a single leaf: the input itself
       else

@@ -103,8 +103,15 @@ vtkSmartPointer<vtkMultiBlockDataSet> RunCase(const Case& c, const std::string& 
   const double compression = FieldValue(fd, "Compression");
   EXPECT(std::abs(diagonal - pm::BoundsDiagonal(input)) <= 1e-9 * diagonal,
     c.label << ": Diagonal " << diagonal);
-  EXPECT(std::abs(rootEpsilon - 0.02 * diagonal) <= 1e-9 * diagonal,
-    c.label << ": RootEpsilon " << rootEpsilon);
+  // The requested epsilon, or after a near-miss rebuild of the proof (VerifyBound) a little
+  // less; RequestedEpsilon is always the requested one.
+  const double requested = FieldValue(fd, "RequestedEpsilon");
+  const double rounds = FieldValue(fd, "VerificationRounds");
+  EXPECT(std::abs(requested - 0.02 * diagonal) <= 1e-9 * diagonal,
+    c.label << ": RequestedEpsilon " << requested);
+  EXPECT(std::abs(rootEpsilon - requested) <= 1e-9 * diagonal ||
+      (rounds >= 1 && rootEpsilon < requested && rootEpsilon >= 0.97 / 1.25 * requested),
+    c.label << ": RootEpsilon " << rootEpsilon << " of the requested " << requested);
   EXPECT(
     originalFaces == input->GetNumberOfCells(), c.label << ": OriginalFaces " << originalFaces);
   EXPECT(std::abs(compression - (1.0 - storedFaces / originalFaces)) < 1e-12,
@@ -243,8 +250,8 @@ vtkSmartPointer<vtkMultiBlockDataSet> RunCase(const Case& c, const std::string& 
     EventLog readLog;
     const int readStatus = UpdateCapturing(reader, readLog);
     EXPECT(readStatus == 1 && readLog.errors.empty(),
-      c.label << ": reading the " << mode << " .vtm failed: "
-              << (readLog.errors.empty() ? "" : readLog.errors[0]));
+      c.label << ": reading the " << mode
+              << " .vtm failed: " << (readLog.errors.empty() ? "" : readLog.errors[0]));
     vtkMultiBlockDataSet* readBack = vtkMultiBlockDataSet::SafeDownCast(reader->GetOutput());
     EXPECT(readBack, c.label << ": nothing read back from the " << mode << " .vtm");
     if (readStatus != 1 || !readLog.errors.empty() || !readBack)
@@ -477,8 +484,7 @@ int TestFoldingTreeFilters(int argc, char* argv[])
       defaults->GetMinimumAreaFraction() == 0.05 && defaults->GetMaximumFolds() == 8 &&
       defaults->GetRequireMeaningfulSymmetry() && !defaults->GetRequireTightSymmetry() &&
       defaults->GetConnectNearbyParts() && defaults->GetMethod() == 0 &&
-      defaults->GetRandomSeed() == 1 &&
-      defaults->GetSampledSearchAboveFaces() == 1000,
+      defaults->GetRandomSeed() == 1 && defaults->GetSampledSearchAboveFaces() == 1000,
     "builder defaults differ from FoldingTreeOptions");
 
   std::vector<Case> cases;

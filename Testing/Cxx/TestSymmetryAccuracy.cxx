@@ -1,6 +1,7 @@
 // Accuracy of vtkSymmetryPlaneDetector against exact ground truth: procedural meshes with
 // known mirror planes under random rigid motions, with noise, different tessellations,
 // asymmetric attachments, symmetric sub-parts, several parts, infinite symmetry and none.
+#include "Core/SymmetryDetection.h"
 #include "ProceduralMeshes.h"
 #include "vtkSymmetryPlaneDetector.h"
 
@@ -144,7 +145,9 @@ int main()
     // SampledSearchAboveFaces (default 15000: this 8000-face mesh gets the full search): the
     // candidates searched on a sampled copy too find the body's plane and region.
     vtkNew<vtkSymmetryPlaneDetector> defaults;
-    Check(defaults->GetSampledSearchAboveFaces() == 15000, "SampledSearchAboveFaces default");
+    Check(defaults->GetSampledSearchAboveFaces() == 15000 &&
+        foldingmeshes::SymmetryOptions().sampledSearchAboveFaces == 15000,
+      "SampledSearchAboveFaces default: the filter's and the core's");
     std::printf("blob with an asymmetric attachment of 30%%, sampled candidate search\n");
     ProceduralMesh m = MakeBlobWithAsymmetricPart(8000, 0.3, 8);
     Moved(m, 8);
