@@ -8,6 +8,9 @@
 // - random points against a bumpy procedural mesh: equal to the brute-force minimum over all
 //   triangles (ClosestPointTriangle);
 // - the comparison is symmetric, does not depend on the SMP backend, and handles empty meshes;
+// - a query factory (a VTK cell locator in the filters) answers every query, asked within a
+//   radius the face tree bounds (the same distances), and unbounded where it finds nothing
+//   within that radius;
 // - SymmetricHausdorffBounds (over whole surfaces): exact cases bracketed within the
 //   tolerance; a coarse plate over a plate with a dip between its samples, where the sampled
 //   measure misses the farthest point: the bounds bracket a dense brute-force measure, the
@@ -18,6 +21,8 @@
 #include "SurfaceDistance.h"
 
 #include <vtkSMPTools.h>
+
+#include <atomic>
 
 #include <cmath>
 #include <limits>
@@ -99,6 +104,47 @@ double MaxAbsDifference(const std::vector<double>& d, double value)
   return worst;
 }
 }
+
+/// A brute-force closest-face query (every triangle) that counts how it is asked; with
+/// `refuseBounded`, its bounded queries find nothing (the fallback must then ask unbounded).
+class CountingQuery : public foldingmeshes::ClosestFaceQuery
+{
+public:
+  CountingQuery(const TriangleMesh& m, bool refuseBounded, std::atomic<int>* counts)
+    : Mesh(m)
+    , RefuseBounded(refuseBounded)
+    , Counts(counts)
+  {
+  }
+  foldingmeshes::ClosestFaceHit Closest(const Vec3& p) const override
+  {
+    ++this->Counts[0];
+    foldingmeshes::ClosestFaceHit hit;
+    for (size_t f = 0; f < this->Mesh.triangles.size(); ++f)
+    {
+      const auto& t = this->Mesh.triangles[f];
+      const auto cp = foldingmeshes::ClosestPointTriangle(
+        p, this->Mesh.points[t[0]], this->Mesh.points[t[1]], this->Mesh.points[t[2]]);
+      if (std::sqrt(cp.squaredDistance) < hit.distance)
+        hit = { static_cast<int>(f), std::sqrt(cp.squaredDistance), cp.point };
+    }
+    return hit;
+  }
+  foldingmeshes::ClosestFaceHit ClosestWithin(const Vec3& p, double radius) const override
+  {
+    ++this->Counts[1];
+    if (this->RefuseBounded || !std::isfinite(radius))
+      return {};
+    --this->Counts[0]; // counted as a bounded query only
+    const foldingmeshes::ClosestFaceHit hit = this->Closest(p);
+    return hit.distance < radius ? hit : foldingmeshes::ClosestFaceHit();
+  }
+
+private:
+  const TriangleMesh Mesh;
+  const bool RefuseBounded;
+  std::atomic<int>* Counts; // [0] unbounded queries, [1] bounded ones
+};
 
 int main()
 {
@@ -234,6 +280,29 @@ int main()
     EXPECT(std::isinf(SymmetricHausdorffBounds(empty, b, tol).upper) &&
         SymmetricHausdorffBounds(empty, empty, tol).upper == 0.0,
       "bounds: empty meshes");
+  }
+  // A query factory: every distance through it, bounded by the tree's radius; unbounded
+  // where the bounded query finds nothing.
+  for (const bool refuse : { false, true })
+  {
+    const TriangleMesh surface = coretest::ToTriangleMesh(testing::MakeBilateralBlob(600).mesh);
+    std::vector<Vec3> points;
+    for (int i = 0; i < 200; ++i)
+      points.push_back(Vec3(std::sin(1.7 * i), std::cos(2.3 * i), std::sin(0.9 * i + 1.0)));
+    std::atomic<int> counts[2] = { 0, 0 };
+    const SurfaceDistanceQuery plain(surface);
+    const SurfaceDistanceQuery viaFactory(surface,
+      [&](const TriangleMesh& m) { return std::make_unique<CountingQuery>(m, refuse, counts); });
+    const std::vector<double> a = plain.Distances(points), b = viaFactory.Distances(points);
+    double worst = 0.0;
+    for (size_t i = 0; i < a.size(); ++i)
+      worst = std::max(worst, std::abs(a[i] - b[i]));
+    EXPECT(worst <= 1e-12, "factory query: distances differ from the tree's by " << worst);
+    EXPECT(counts[1] == static_cast<int>(points.size()) &&
+        counts[0] == (refuse ? static_cast<int>(points.size()) : 0),
+      "factory query (bounded queries refused: " << refuse << "): " << counts[1] << " bounded and "
+                                                 << counts[0] << " unbounded queries for "
+                                                 << points.size() << " points");
   }
   // Empty meshes.
   {
