@@ -225,7 +225,8 @@ public:
    * where a point is not proved within epsilon, keep the input faces there out of every fold
    * and build again (at most four times, then the input is stored whole) - but a first tree
    * proved at most 1.25 epsilon away is built again at 0.97 epsilon^2 / bound instead, without
-   * pinning, and reports that smaller epsilon as its RootEpsilon; a closed input that
+   * pinning, and reports that smaller epsilon as its RootEpsilon (if that tree misses it too,
+   * the rounds go on at epsilon with the first tree's pins); a closed input that
    * comes back with holes gets the faces there kept out of every fold too (at most two more
    * builds, each kept when it stores at most a tenth of the input's faces, or 250, more). The
    * tree's "VerifiedBound" (the proved bound; -1 when off), "PinnedFaces" and

@@ -573,6 +573,9 @@ bool BuildFoldingTree(const TriangleMesh& input,
       {
         again.epsilon *= NearMissEpsilonMargin * again.epsilon / check.upper; // no pins
         nearMissTree = true;
+        if (options.trace)
+          options.trace(
+            FormatTrace("[verify] a near miss: rebuilt at epsilon %.6g", again.epsilon));
         firstPins = check.pin;
         --boundRounds; // not a round of pins
       }
@@ -580,6 +583,10 @@ bool BuildFoldingTree(const TriangleMesh& input,
       {
         again.epsilon = options.epsilon; // the near-miss rebuild missed too
         nearMissTree = false;
+        if (options.trace)
+          options.trace(FormatTrace("[verify] the near-miss rebuild missed too: epsilon %.6g with "
+                                    "the first tree's pins",
+            again.epsilon));
         for (int f : firstPins)
           pinned[f] = 1;
       }

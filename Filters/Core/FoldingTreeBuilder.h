@@ -47,7 +47,9 @@ enum class KeepSide
 constexpr int MaximumVerificationRounds = 4;
 /// A first proof that misses epsilon by at most this factor (a near miss: the tree is about
 /// right, its budgets a little too loose) rebuilds the tree at a smaller epsilon instead of
-/// pinning faces: epsilon * epsilon / bound * NearMissEpsilonMargin, no pins.
+/// pinning faces: epsilon * epsilon / bound * NearMissEpsilonMargin, no pins. Should that tree
+/// miss its smaller epsilon too, the rounds go on at epsilon with the first tree's pins (the
+/// near miss does not count among the MaximumVerificationRounds).
 constexpr double NearMissBoundRatio = 1.25;
 constexpr double NearMissEpsilonMargin = 0.97;
 /// Builds FoldingTreeOptions::verifyBound adds at most to close the holes a closed input came
