@@ -93,6 +93,12 @@ FaceTree::FaceTree(const PreparedMesh& mesh)
       (face.c - face.b).squaredNorm() });
     face.planeBound = face.regular && cross.squaredNorm() > 1e-12 * longest2 * longest2;
     face.normal = face.planeBound ? Vec3(cross.normalized()) : Vec3::Zero();
+    face.cone = NormalCone::Around(
+      [&](const auto& visit)
+      {
+        for (int v : t)
+          visit(mesh.vertexNormals[v]);
+      });
     this->Packed.push_back(face);
     this->OrderIndex[f] = static_cast<int>(k);
   }
@@ -146,6 +152,28 @@ bool FaceTree::Beyond(const Vec3& p, int k, double best2) const
   return h2 + lateral * lateral > limit + slack;
 }
 
+template <typename ForEachNormal>
+FaceTree::NormalCone FaceTree::NormalCone::Around(ForEachNormal forEachNormal)
+{
+  NormalCone cone;
+  Vec3 axis = Vec3::Zero();
+  forEachNormal([&](const Vec3& n) { axis += n; });
+  if (!(axis.norm() > 0.0))
+    return cone;
+  cone.axis = axis.normalized();
+  double minCos = 1.0;
+  forEachNormal([&](const Vec3& n) { minCos = std::min(minCos, n.dot(cone.axis)); });
+  // Convex combinations of normals stay in the cone only if it is narrower than 90 degrees.
+  if (minCos > 1e-6)
+  {
+    cone.cos = minCos;
+    cone.sin = std::sqrt(std::max(0.0, 1.0 - minCos * minCos));
+  }
+  else
+    cone.axis = Vec3::UnitX();
+  return cone;
+}
+
 int FaceTree::SubtreeNodes(int count)
 {
   return count <= LeafSize ? 1 : 1 + SubtreeNodes(count / 2) + SubtreeNodes(count - count / 2);
@@ -160,7 +188,7 @@ void FaceTree::Build(int first,
   Node node;
   node.lo = Vec3::Constant(std::numeric_limits<double>::max());
   node.hi = -node.lo;
-  Vec3 clo = node.lo, chi = node.hi, axis = Vec3::Zero();
+  Vec3 clo = node.lo, chi = node.hi;
   for (int k = first; k < first + count; ++k)
   {
     const int f = this->Order[k];
@@ -168,26 +196,19 @@ void FaceTree::Build(int first,
     {
       node.lo = node.lo.cwiseMin(points[v]);
       node.hi = node.hi.cwiseMax(points[v]);
-      axis += Mesh.vertexNormals[v];
     }
     clo = clo.cwiseMin(centroids[f]);
     chi = chi.cwiseMax(centroids[f]);
   }
   node.clo = clo;
   node.chi = chi;
-  node.coneCos = -1.0;
-  node.coneAxis = Vec3::UnitX();
-  if (axis.norm() > 0.0)
-  {
-    node.coneAxis = axis.normalized();
-    double minCos = 1.0;
-    for (int k = first; k < first + count; ++k)
-      for (int v : Mesh.triangles[this->Order[k]])
-        minCos = std::min(minCos, Mesh.vertexNormals[v].dot(node.coneAxis));
-    // Convex combinations of normals stay in the cone only if it is narrower than 90 degrees.
-    node.coneCos = minCos > 1e-6 ? minCos : -1.0;
-    node.coneSin = std::sqrt(std::max(0.0, 1.0 - node.coneCos * node.coneCos));
-  }
+  node.cone = NormalCone::Around(
+    [&](const auto& visit)
+    {
+      for (int k = first; k < first + count; ++k)
+        for (int v : Mesh.triangles[this->Order[k]])
+          visit(Mesh.vertexNormals[v]);
+    });
   if (count <= LeafSize)
   {
     node.first = first;
@@ -266,6 +287,7 @@ template <typename Excluded>
 bool FaceTree::TryFace(const Vec3& p,
   const Vec3& normal,
   double cosLimit,
+  double sinLimit,
   int k,
   double& best2,
   Hit& hit,
@@ -275,6 +297,10 @@ bool FaceTree::TryFace(const Vec3& p,
     return false;
   const int f = this->Order[k];
   if (excluded(f))
+    return false;
+  // No interpolated normal of the face is compatible (on a box or a thin plate, most faces
+  // near a mirrored point face away from it): no closest point to compute.
+  if (this->Packed[k].cone.Excludes(normal, std::clamp(cosLimit, -1.0, 1.0), sinLimit))
     return false;
   const ClosestPointOnTriangle cp = this->ClosestPoint(p, k);
   if (cp.squaredDistance > best2 || (cp.squaredDistance == best2 && hit.face >= 0 && f > hit.face))
@@ -316,29 +342,19 @@ FaceTree::Hit FaceTree::ClosestCompatibleFaceAmong(const Vec3& p,
   Hit hit;
   if (this->Nodes.empty())
     return hit;
-  // Angle between the query normal and a cone: compatible only if
-  // angle(normal, axis) <= halfAngle + compatibilityAngle.
-  // cos(a) < cos(h + l) = cos h cos l - sin h sin l, valid while h + l < 180 degrees.
+  // For the normal cones of nodes and faces (NormalCone::Excludes).
   const double cosL = std::clamp(cosLimit, -1.0, 1.0);
   const double sinL = std::sqrt(1.0 - cosL * cosL);
   double best2 = maxDistance * maxDistance;
   // A compatible hint bounds the search from the start; the minimum (lowest id on ties) is
   // the same with or without it.
   if (hintFace >= 0 && hintFace < Mesh.NumberOfFaces() && this->OrderIndex[hintFace] >= 0)
-    this->TryFace(p, normal, cosLimit, this->OrderIndex[hintFace], best2, hit, excluded);
+    this->TryFace(p, normal, cosLimit, sinL, this->OrderIndex[hintFace], best2, hit, excluded);
   this->Traverse(
     p,
     best2,
-    [&](const Node& node)
-    {
-      // Skip when angle(normal, axis) > h + l, i.e. cos < cos(h + l); only meaningful
-      // while h + l < 180 degrees, i.e. cos l > -cos h.
-      if (node.coneCos <= -1.0)
-        return false;
-      const double cosSum = node.coneCos * cosL - node.coneSin * sinL;
-      return cosL > -node.coneCos && normal.dot(node.coneAxis) < cosSum - 1e-12;
-    },
-    [&](int k) { this->TryFace(p, normal, cosLimit, k, best2, hit, excluded); });
+    [&](const Node& node) { return node.cone.Excludes(normal, cosL, sinL); },
+    [&](int k) { this->TryFace(p, normal, cosLimit, sinL, k, best2, hit, excluded); });
   if (hit.face >= 0)
     hit.distance = std::sqrt(best2);
   return hit;

@@ -83,13 +83,32 @@ public:
   const PreparedMesh& Surface() const { return this->Mesh; }
 
 private:
+  /// A cone holding unit vertex normals: every normal interpolated between them points into
+  /// it (it is narrower than 90 degrees, else coneCos is -1: no bound).
+  struct NormalCone
+  {
+    Vec3 axis = Vec3::UnitX(); ///< unit mean of the vertex normals
+    double cos = -1.0;         ///< cos of the half-angle (-1: no bound)
+    double sin = 0.0;          ///< sin of the half-angle
+    /// The cone around the mean of unit vertex normals: forEachNormal(visit) calls
+    /// visit(n) for each of them (twice: for the mean, then for the half-angle).
+    template <typename ForEachNormal>
+    static NormalCone Around(ForEachNormal forEachNormal);
+    /// True when no direction in the cone is within acos(cosL) of the unit vector `normal`
+    /// (sinL = sqrt(1 - cosL^2)): angle(normal, axis) > half-angle + acos(cosL).
+    bool Excludes(const Vec3& normal, double cosL, double sinL) const
+    {
+      // cos(h + l) = cos h cos l - sin h sin l, valid while h + l < 180 degrees.
+      if (this->cos <= -1.0 || !(cosL > -this->cos))
+        return false;
+      return normal.dot(this->axis) < this->cos * cosL - this->sin * sinL - 1e-12;
+    }
+  };
   struct Node
   {
     Vec3 lo, hi;      ///< box of the triangles
     Vec3 clo, chi;    ///< box of the face centroids
-    Vec3 coneAxis;    ///< unit mean of the vertex normals
-    double coneCos;   ///< cos of the cone half-angle (-1: no bound)
-    double coneSin;   ///< sin of the cone half-angle
+    NormalCone cone;  ///< of the vertex normals of its faces
     int first, count; ///< leaf: range in Order; inner: count == 0
     int left, right;  ///< inner node children
   };
@@ -122,11 +141,13 @@ private:
     int hintFace,
     Excluded excluded) const;
   /// Leaf test of ClosestCompatibleFace: takes face f when it is not excluded, compatible and
-  /// closer (or as close with a lower id) than best2; true if taken.
+  /// closer (or as close with a lower id) than best2; true if taken. sinLimit is
+  /// sqrt(1 - cosLimit^2) with cosLimit clamped to [-1, 1] (for the face's normal cone).
   template <typename Excluded>
   bool TryFace(const Vec3& p,
     const Vec3& normal,
     double cosLimit,
+    double sinLimit,
     int k,
     double& best2,
     Hit& hit,
@@ -139,14 +160,17 @@ private:
 
   /// A face's corners, bounding sphere and plane, stored in tree order (Order) for the leaf
   /// tests.
-  struct PackedFace
+  /// What Beyond reads comes first, in one 64-byte line; the corners and the normal cone
+  /// after it.
+  struct alignas(64) PackedFace
   {
-    Vec3 a, b, c;
     Vec3 center;     ///< centroid
     Vec3 normal;     ///< unit normal if planeBound, else zero
     double radius;   ///< largest distance of a corner to the centroid
     bool regular;    ///< IsRegularTriangle(a, b, c)
     bool planeBound; ///< `normal` is accurate enough for the plane bound of Beyond
+    Vec3 a, b, c;
+    NormalCone cone; ///< of the face's three vertex normals
   };
   /// The compatibility test of ClosestCompatibleFace: the normal interpolated (from the vertex
   /// normals) at `cp`, the closest point of face `face`, is within acos(cosLimit) of `normal`.

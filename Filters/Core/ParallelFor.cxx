@@ -185,6 +185,14 @@ void ParallelForRanges(vtkIdType n, vtkIdType grain, const RangeBody& body)
 {
   if (n <= 0)
     return;
+  // Serial without asking VTK for the thread count: GetEstimatedNumberOfThreads reads
+  // /sys on every call (std::thread::hardware_concurrency), which cost a quarter of a
+  // compress run when FaceTree::Build asked it at each of its small inner nodes.
+  if (insideLoop || (grain > 0 && grain >= n))
+  {
+    body(0, n);
+    return;
+  }
   const int threads = vtkSMPTools::GetEstimatedNumberOfThreads();
   if (grain <= 0)
     grain = std::max<vtkIdType>(1, n / (4 * std::max(1, threads)));
