@@ -10,6 +10,7 @@
 #include <map>
 #include <set>
 #include <unordered_map>
+#include <unordered_set>
 
 namespace foldingmeshes
 {
@@ -39,7 +40,9 @@ int Unfolder::Zip(Piece& out,
 {
   using Edge = std::pair<int, int>;
   auto key = [](int a, int b) { return Edge{ std::min(a, b), std::max(a, b) }; };
-  std::map<Edge, std::vector<int>> edgeFaces;
+  // Hashed (the open edges are sorted below: the same order as an ordered map's).
+  std::unordered_map<Edge, std::vector<int>, EdgeHash> edgeFaces;
+  edgeFaces.reserve(3 * static_cast<size_t>(out.NumberOfFaces()));
   auto addFace = [&](int f)
   {
     const Triangle& t = out.triangles[f];
@@ -70,6 +73,7 @@ int Unfolder::Zip(Piece& out,
     for (const auto& e : edgeFaces)
       if (e.second.size() == 1 && isTear[e.first.first] && isTear[e.first.second])
         open.push_back(e.first);
+    std::sort(open.begin(), open.end());
     // Cells of at least tol, and no smaller than an eighth of the longest open edge: an
     // edge much longer than tol would otherwise cover (length / tol)^3 cells.
     double longest = 0.0;
@@ -184,6 +188,10 @@ public:
     , Seam(seam)
     , InputBorderEdge(std::move(inputBorderEdge))
   {
+    const size_t edges = 3 * static_cast<size_t>(out.NumberOfFaces());
+    this->HalfEdges.reserve(edges);
+    this->Uses.reserve(edges);
+    this->FaceSets.reserve(static_cast<size_t>(out.NumberOfFaces()));
     for (int f = 0; f < out.NumberOfFaces(); ++f)
     {
       const Triangle& t = out.triangles[f];
@@ -199,10 +207,16 @@ public:
 
   void Run()
   {
-    std::vector<std::pair<int, int>> holes;
+    // The open half-edges in increasing order (as an ordered map holds them): the loops are
+    // traced, and filled, in that order.
+    std::vector<std::pair<int, int>> openHalfEdges;
     for (const auto& h : this->HalfEdges)
       if (this->IsOpen(h.first.first, h.first.second))
-        holes.push_back({ h.first.second, h.first.first });
+        openHalfEdges.push_back(h.first);
+    std::sort(openHalfEdges.begin(), openHalfEdges.end());
+    std::vector<std::pair<int, int>> holes;
+    for (const auto& h : openHalfEdges)
+      holes.push_back({ h.second, h.first });
     for (const auto& first : holes)
     {
       if (this->VisitedHoles.count(first))
@@ -394,10 +408,10 @@ private:
   const double Tol;
   const std::function<bool(int, int)> InputBorderEdge; ///< Unfolder::IsInputBorderEdge
   SeamReport& Seam;
-  std::map<std::pair<int, int>, int> HalfEdges; // directed edge -> face
-  std::map<std::pair<int, int>, int> Uses;      // undirected edge -> faces
-  std::set<std::array<int, 3>> FaceSets;        // faces as sorted corner triples
-  std::set<std::pair<int, int>> VisitedHoles;
+  std::unordered_map<std::pair<int, int>, int, EdgeHash> HalfEdges; // directed edge -> face
+  std::unordered_map<std::pair<int, int>, int, EdgeHash> Uses;      // undirected edge -> faces
+  std::unordered_set<std::array<int, 3>, TriangleKeyHash> FaceSets; // sorted corner triples
+  EdgeSet VisitedHoles;
 };
 } // namespace
 
