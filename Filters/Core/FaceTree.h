@@ -78,6 +78,8 @@ public:
   int NumberOfNodes() const { return static_cast<int>(this->Nodes.size()); }
   /// True when the boxes are built in a rotated frame (see BoxFrame).
   bool RotatedFrame() const { return this->Rotated; }
+  /// The box frame (rows: its axes; the identity unless RotatedFrame()).
+  const Eigen::Matrix3d& FrameAxes() const { return this->Frame; }
 
   /// The mesh whose faces this tree holds.
   const PreparedMesh& Surface() const { return this->Mesh; }

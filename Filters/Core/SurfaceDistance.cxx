@@ -18,15 +18,20 @@ struct SurfaceDistanceQuery::Internal
   std::unique_ptr<ClosestFaceQuery> External; // the factory's query, when given
   std::unique_ptr<FaceTreeQuery> Own;         // the tree's
   double CoordinateScale = 0.0;               // largest |coordinate| of the points, + 1
+  /// The factory's query holds the surface turned into the tree's box frame (Rotated), so that
+  /// a VTK locator's axis-aligned bins fit long slivers that a rigid motion turned.
+  bool Rotated = false;
+  Eigen::Matrix3d Frame = Eigen::Matrix3d::Identity();
 
   /// The closest face: the factory's query where one was given, else the tree's. The
   /// factory's query (a VTK cell locator) is asked within a radius just above the tree's exact
   /// distance, which holds the true closest face: the distance of its unbounded search, in a
   /// search that stops at that radius (unbounded only if it finds nothing there). With
   /// vtkStaticCellLocator the unfolder's measures against the original took 10-16% less
-  /// (dino, chair, eagle, artist soup and chair); where long slivers turned by a rigid motion
-  /// fill the locator's bins (the moved slatted bench, 3,648 faces) it still tests every cell
-  /// of the bins the radius touches: 131 s instead of 137 s (docs/limitations.md).
+  /// (dino, chair, eagle, artist soup and chair). Where long slivers turned by a rigid motion
+  /// fill a locator's axis-aligned bins (the moved slatted bench, 3,648 faces: 131 s), the
+  /// locator holds the surface in the tree's box frame (BoxFrame), the query point turned
+  /// alike; the face it answers is measured again in the surface's own coordinates.
   ClosestFaceHit Closest(const Vec3& p) const
   {
     const ClosestFaceHit tree = this->Own->Closest(p);
@@ -36,11 +41,31 @@ struct SurfaceDistanceQuery::Internal
     {
       const double radius =
         tree.distance * (1.0 + 1e-9) + 1e-9 * (this->CoordinateScale + p.cwiseAbs().maxCoeff());
-      const ClosestFaceHit hit = this->External->ClosestWithin(p, radius);
+      const ClosestFaceHit hit = this->InFrame(p, radius);
       if (hit.face >= 0)
         return hit;
     }
-    return this->External->Closest(p);
+    return this->InFrame(p, std::numeric_limits<double>::infinity());
+  }
+
+  /// The factory query's answer within `radius` (infinite: unbounded), in the surface's
+  /// coordinates.
+  ClosestFaceHit InFrame(const Vec3& p, double radius) const
+  {
+    const bool bounded = std::isfinite(radius);
+    if (!this->Rotated)
+      return bounded ? this->External->ClosestWithin(p, radius) : this->External->Closest(p);
+    const Vec3 q = this->Frame * p;
+    ClosestFaceHit hit =
+      bounded ? this->External->ClosestWithin(q, radius) : this->External->Closest(q);
+    if (hit.face < 0)
+      return hit;
+    const Triangle& t = this->Mesh.triangles[hit.face];
+    const ClosestPointOnTriangle cp = ClosestPointTriangle(
+      p, this->Mesh.points[t[0]], this->Mesh.points[t[1]], this->Mesh.points[t[2]]);
+    hit.distance = std::sqrt(cp.squaredDistance);
+    hit.point = cp.point;
+    return hit;
   }
 };
 
@@ -60,9 +85,22 @@ SurfaceDistanceQuery::SurfaceDistanceQuery(const TriangleMesh& surface,
     m.faceCentroids[f] = (m.points[t[0]] + m.points[t[1]] + m.points[t[2]]) / 3.0;
   }
   m.vertexNormals.assign(m.points.size(), Vec3::Zero()); // no normal cones
-  if (factory)
-    this->Impl->External = factory(surface);
   this->Impl->Tree.reset(new FaceTree(m));
+  if (factory)
+  {
+    if (this->Impl->Tree->RotatedFrame())
+    {
+      this->Impl->Rotated = true;
+      this->Impl->Frame = this->Impl->Tree->FrameAxes();
+      TriangleMesh turned{ {}, surface.triangles };
+      turned.points.reserve(surface.points.size());
+      for (const Vec3& x : surface.points)
+        turned.points.push_back(this->Impl->Frame * x);
+      this->Impl->External = factory(turned);
+    }
+    else
+      this->Impl->External = factory(surface);
+  }
   this->Impl->Own.reset(new FaceTreeQuery(*this->Impl->Tree));
   double scale = 0.0;
   for (const Vec3& x : m.points)

@@ -10,15 +10,19 @@
 // - the comparison is symmetric, does not depend on the SMP backend, and handles empty meshes;
 // - a query factory (a VTK cell locator in the filters) answers every query, asked within a
 //   radius the face tree bounds (the same distances), and unbounded where it finds nothing
-//   within that radius;
+//   within that radius; on a turned cylinder of long slivers (a rotated box frame) the factory
+//   gets the surface turned into that frame and the distances stay the tree's;
 // - SymmetricHausdorffBounds (over whole surfaces): exact cases bracketed within the
 //   tolerance; a coarse plate over a plate with a dip between its samples, where the sampled
 //   measure misses the farthest point: the bounds bracket a dense brute-force measure, the
 //   upper bound holds with a coarse tolerance too, and nothing depends on the SMP backend.
 #include "CoreTestUtilities.h"
+#include "FaceTree.h"
 #include "PointTriangleDistance.h"
 #include "ProceduralMeshes.h"
 #include "SurfaceDistance.h"
+
+#include <Eigen/Geometry>
 
 #include <vtkSMPTools.h>
 
@@ -309,6 +313,61 @@ int main()
       "factory query (bounded queries refused: " << refuse << "): " << counts[1] << " bounded and "
                                                  << counts[0] << " unbounded queries for "
                                                  << points.size() << " points");
+  }
+  // Long slivers turned by a rigid motion (a rotated box frame): the factory's query holds the
+  // surface turned into the tree's frame, is asked with the points turned alike, and its faces
+  // are measured in the surface's own coordinates: the tree's distances.
+  {
+    TriangleMesh cylinder;
+    const int segments = 300;
+    const Eigen::Matrix3d turn =
+      Eigen::AngleAxisd(0.7, Vec3(1.0, 2.0, 3.0).normalized()).toRotationMatrix();
+    for (int k = 0; k < segments; ++k)
+      for (const double z : { -1.0, 1.0 })
+      {
+        const double a = 2.0 * 3.14159265358979323846 * k / segments;
+        cylinder.points.push_back(turn * Vec3(0.05 * std::cos(a), 0.05 * std::sin(a), z));
+      }
+    for (int k = 0; k < segments; ++k)
+    {
+      const int a = 2 * k, b = 2 * ((k + 1) % segments);
+      cylinder.triangles.push_back({ a, b, b + 1 });
+      cylinder.triangles.push_back({ a, b + 1, a + 1 });
+    }
+    PreparedMesh prepared;
+    prepared.points = cylinder.points;
+    prepared.triangles = cylinder.triangles;
+    for (const auto& t : cylinder.triangles)
+      prepared.faceCentroids.push_back(
+        (cylinder.points[t[0]] + cylinder.points[t[1]] + cylinder.points[t[2]]) / 3.0);
+    prepared.faceDegenerate.assign(cylinder.triangles.size(), 0);
+    prepared.vertexNormals.assign(cylinder.points.size(), Vec3::Zero());
+    EXPECT(FaceTree(prepared).RotatedFrame(), "turned sliver cylinder: no rotated box frame");
+    std::vector<Vec3> points;
+    for (int i = 0; i < 300; ++i)
+      points.push_back(Vec3(0.2 * std::sin(1.7 * i), 0.2 * std::cos(2.3 * i), std::sin(0.9 * i)));
+    std::atomic<int> counts[2] = { 0, 0 };
+    bool turned = false;
+    const SurfaceDistanceQuery plain(cylinder);
+    const SurfaceDistanceQuery viaFactory(cylinder,
+      [&](const TriangleMesh& m)
+      {
+        turned = m.points.size() == cylinder.points.size() &&
+          (m.points[0] - cylinder.points[0]).norm() > 1e-3;
+        return std::make_unique<CountingQuery>(m, false, counts);
+      });
+    EXPECT(turned, "turned sliver cylinder: the factory got the surface unturned");
+    std::vector<double> a, b;
+    std::vector<int> fa, fb;
+    plain.Closest(points, a, fa);
+    viaFactory.Closest(points, b, fb);
+    double worst = 0.0;
+    for (size_t i = 0; i < a.size(); ++i)
+      worst = std::max(worst, std::abs(b[i] - a[i]));
+    EXPECT(worst <= 1e-12, "turned sliver cylinder: factory distances off the tree's by " << worst);
+    EXPECT(counts[1] == static_cast<int>(points.size()) && counts[0] == 0,
+      "turned sliver cylinder: " << counts[1] << " bounded and " << counts[0]
+                                 << " unbounded queries for " << points.size() << " points");
   }
   // Empty meshes.
   {
