@@ -161,13 +161,20 @@ FaceTree::NormalCone FaceTree::NormalCone::Around(ForEachNormal forEachNormal)
   if (!(axis.norm() > 0.0))
     return cone;
   cone.axis = axis.normalized();
-  double minCos = 1.0;
-  forEachNormal([&](const Vec3& n) { minCos = std::min(minCos, n.dot(cone.axis)); });
+  double minCos = 1.0, maxSin = 0.0;
+  forEachNormal(
+    [&](const Vec3& n)
+    {
+      minCos = std::min(minCos, n.dot(cone.axis));
+      maxSin = std::max(maxSin, n.cross(cone.axis).norm());
+    });
   // Convex combinations of normals stay in the cone only if it is narrower than 90 degrees.
+  // The sine also from the cross products: sqrt(1 - cos^2) is 0 for normals less than about
+  // 1.5e-8 radians apart (cos rounds to 1), a cone far narrower than the normals' spread.
   if (minCos > 1e-6)
   {
     cone.cos = minCos;
-    cone.sin = std::sqrt(std::max(0.0, 1.0 - minCos * minCos));
+    cone.sin = std::min(1.0, std::max(std::sqrt(std::max(0.0, 1.0 - minCos * minCos)), maxSin));
   }
   else
     cone.axis = Vec3::UnitX();
@@ -344,7 +351,7 @@ FaceTree::Hit FaceTree::ClosestCompatibleFaceAmong(const Vec3& p,
     return hit;
   // For the normal cones of nodes and faces (NormalCone::Excludes).
   const double cosL = std::clamp(cosLimit, -1.0, 1.0);
-  const double sinL = std::sqrt(1.0 - cosL * cosL);
+  const double sinL = std::sqrt((1.0 - cosL) * (1.0 + cosL)); // accurate for cosL near 1
   double best2 = maxDistance * maxDistance;
   // A compatible hint bounds the search from the start; the minimum (lowest id on ties) is
   // the same with or without it.

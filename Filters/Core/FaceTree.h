@@ -86,7 +86,7 @@ public:
 
 private:
   /// A cone holding unit vertex normals: every normal interpolated between them points into
-  /// it (it is narrower than 90 degrees, else coneCos is -1: no bound).
+  /// it (it is narrower than 90 degrees, else `cos` is -1: no bound).
   struct NormalCone
   {
     Vec3 axis = Vec3::UnitX(); ///< unit mean of the vertex normals

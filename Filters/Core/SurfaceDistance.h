@@ -23,7 +23,7 @@ class SurfaceDistanceQuery
 public:
   /// With `factory`, the closest-face queries (Distance, Distances, Closest) go through the
   /// query it makes (e.g. a VTK cell locator), asked within a radius the core's FaceTree bounds
-  /// (the tree is built either way: about 200 bytes a face); without it, through the tree.
+  /// (the tree is built either way: about 250 bytes a face); without it, through the tree.
   explicit SurfaceDistanceQuery(
     const TriangleMesh& surface, const ClosestFaceQueryFactory& factory = nullptr);
   ~SurfaceDistanceQuery();

@@ -11,7 +11,9 @@
 // - two parallel plates facing each other: a point near plate A with a normal matching plate B
 //   gets plate B (the plain closest face is excluded), a normal at 90 degrees gets nothing.
 // - regression: a minimal fan where the cone half-angle + compatibility angle exceed 180
-//   degrees (the normal-cone pruning used to skip compatible faces there).
+//   degrees (the normal-cone pruning used to skip compatible faces there); and a triangle
+//   whose corner normals are 1e-8 radians apart (its cone had no width: its sine came from
+//   sqrt(1 - cos^2)), queried with a normal just inside the limit at the turned corner.
 // - exactness of the pruning: on a fine plate (hundreds of coplanar faces: exact ties) with
 //   slivers, and on the blob, queries far off the surface (where the plane bound of
 //   FaceTree::Beyond prunes most faces) give bit for bit the face and distance of an exhaustive
@@ -530,6 +532,30 @@ int main()
     EXPECT(hit.face >= 0 && std::abs(hit.distance - 0.5) < 1e-15,
       "fan: ClosestCompatibleFace(p=(1,0,0.5), n=(0,0,-1), cos 120 deg) gave face "
         << hit.face << " d " << hit.distance << "; brute force face " << ref.face << " d 0.5");
+  }
+  {
+    // Regression: normal cones of nearly parallel normals. Corner normals z, z turned by 1e-8
+    // radians, z: 1 - cos rounds to 0 there, and a cone whose sine came from sqrt(1 - cos^2)
+    // had no width, so a query normal 60 degrees - 1e-9 radians from the turned corner (a
+    // 60-degree limit: compatible at that corner) was pruned with the face.
+    TriangleMesh one;
+    one.points = { Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0) };
+    one.triangles = { { 0, 1, 2 } };
+    const double a = 1e-8, b = a + kPi / 3.0 - 1e-9;
+    const std::vector<Vec3> normals = {
+      Vec3(0, 0, 1), Vec3(std::sin(a), 0, std::cos(a)), Vec3(0, 0, 1)
+    };
+    PreparedMesh m;
+    std::string error;
+    REQUIRE(foldingmeshes::PrepareMesh(one, normals, m, error), "narrow cone: " << error);
+    const Vec3 p(1.5, -0.5, 0.1), n(std::sin(b), 0, std::cos(b)); // closest point: corner 1
+    const double cos60 = std::cos(kPi / 3.0);
+    const Reference ref = BruteCompatible(m, p, n, cos60);
+    const FaceTree::Hit hit = FaceTree(m).ClosestCompatibleFace(p, n, cos60, kInf);
+    EXPECT(ref.face == 0, "narrow cone: brute force found no compatible face");
+    EXPECT(hit.face == ref.face && hit.distance == ref.distance,
+      "narrow cone: ClosestCompatibleFace gave face " << hit.face << " d " << hit.distance
+                                                      << "; brute force face " << ref.face);
   }
 
   // Two parallel plates: A at z = 0 facing up (+z), B at z = 1 facing down (-z).
