@@ -255,17 +255,6 @@ struct EdgeHash
   }
 };
 using EdgeSet = std::unordered_set<std::pair<int, int>, EdgeHash>;
-/// Hash of a triangle's (sorted) corner ids.
-struct TriangleKeyHash
-{
-  size_t operator()(const std::array<int, 3>& t) const
-  {
-    const uint64_t h = static_cast<uint64_t>(static_cast<uint32_t>(t[0])) * 0x9E3779B97F4A7C15ull ^
-      static_cast<uint64_t>(static_cast<uint32_t>(t[1])) * 0xC2B2AE3D27D4EB4Full ^
-      static_cast<uint64_t>(static_cast<uint32_t>(t[2])) * 0x165667B19E3779F9ull;
-    return static_cast<size_t>(h ^ (h >> 29));
-  }
-};
 
 /// The postorder unfolding of a folding tree (see UnfoldFoldingTree). The traversal, the
 /// copies and the fold lines are in FoldingTreeUnfolder.cxx (the removal of projected

@@ -410,7 +410,7 @@ private:
   SeamReport& Seam;
   std::unordered_map<std::pair<int, int>, int, EdgeHash> HalfEdges; // directed edge -> face
   std::unordered_map<std::pair<int, int>, int, EdgeHash> Uses;      // undirected edge -> faces
-  std::unordered_set<std::array<int, 3>, TriangleKeyHash> FaceSets; // sorted corner triples
+  std::unordered_set<std::array<int, 3>, PointBuckets::KeyHash> FaceSets; // sorted corners
   EdgeSet VisitedHoles;
 };
 } // namespace

@@ -21,9 +21,11 @@ namespace foldingmeshes
  */
 struct PointBuckets
 {
+  /// Hash of three integers: a cell key, or a triangle's sorted corner ids.
   struct KeyHash
   {
-    size_t operator()(const std::array<long long, 3>& k) const
+    template <typename Integer>
+    size_t operator()(const std::array<Integer, 3>& k) const
     {
       const uint64_t h = static_cast<uint64_t>(k[0]) * 0x9E3779B97F4A7C15ull ^
         static_cast<uint64_t>(k[1]) * 0xC2B2AE3D27D4EB4Full ^
