@@ -6,6 +6,7 @@
 #include "CompactPointSymbols.h"
 #include "CompactTreeArrays.h"
 #include "CompactTreeSection.h"
+#include "ParallelTasks.h"
 
 #include <algorithm>
 #include <cmath>
@@ -64,9 +65,72 @@ struct SectionsToWrite
 };
 
 /**
+ * One way of coding the leaves (a Draco speed setting, with or without welding the leaves'
+ * common points): the symbols beside the Draco mesh where Draco gives back the same leaves
+ * without them (else in it), and the smaller of the tree section's two layouts. False with
+ * `error` when Draco fails.
+ */
+bool EncodeVariant(const FoldingTree& tree,
+  const CompactTreeOptions& options,
+  const LeafGeometryCoding& coding,
+  double quantizationError,
+  const Palette& palette,
+  const std::vector<LeafToEncode>& leaves,
+  int speed,
+  bool weld,
+  SectionsToWrite& candidate,
+  std::string& error)
+{
+  LeafGeometryCoding withAttribute = coding;
+  withAttribute.weldPositions = weld;
+  LeafGeometryCoding beside = withAttribute;
+  beside.symbolAttribute = false;
+  std::vector<DecodedLeaf> decoded, besideDecoded;
+  std::string besideGeometry, besideError;
+  if (!EncodeLeafGeometry(leaves, withAttribute, speed, candidate.geometry, decoded, error))
+    return false;
+  candidate.symbolsBeside = options.symbolsBesideGeometry &&
+    EncodeLeafGeometry(leaves, beside, speed, besideGeometry, besideDecoded, besideError) &&
+    TransferSymbols(decoded, besideDecoded);
+  if (candidate.symbolsBeside)
+    candidate.geometry = std::move(besideGeometry);
+  // The tree section record by record and (nodeColumns) field by field: the smaller kept
+  // (columns cost their lengths, more than they save on trees of a few nodes).
+  for (const bool columns : { false, true })
+  {
+    if (columns && !options.nodeColumns)
+      continue;
+    ByteWriter section;
+    WriteTreeSection(tree,
+      candidate.symbolsBeside ? beside : withAttribute,
+      quantizationError,
+      palette,
+      columns,
+      section);
+    if (candidate.symbolsBeside)
+      WritePointSymbols(besideDecoded, section);
+    std::string packed = Deflate(section.Bytes);
+    if (candidate.packedTree.empty() ||
+      (!packed.empty() && packed.size() < candidate.packedTree.size()))
+    {
+      candidate.packedTree = std::move(packed);
+      candidate.rawTreeBytes = section.Bytes.size();
+      candidate.columns = columns;
+    }
+  }
+  if (candidate.packedTree.empty())
+  {
+    error = "zlib cannot compress the tree section";
+    return false;
+  }
+  return true;
+}
+
+/**
  * Codes the leaves every way the options allow - each Draco speed setting, with and without
- * welding the leaves' common points, the symbols beside the Draco mesh where Draco gives back
- * the same leaves without them (else in it) - and keeps the smallest tree + geometry sections.
+ * welding the leaves' common points (EncodeVariant) - and keeps the smallest tree + geometry
+ * sections. The variants are coded in parallel (each on its own data) and judged in a fixed
+ * order, so the file is the same for any thread count.
  */
 bool EncodeSmallestSections(const FoldingTree& tree,
   const CompactTreeOptions& options,
@@ -82,59 +146,37 @@ bool EncodeSmallestSections(const FoldingTree& tree,
     for (const int speed : options.dracoSpeeds)
       if (!weld || (options.weldLeaves && !coding.keepOrder))
         variants.emplace_back(speed, weld);
-  bool any = false;
-  for (const auto& [speed, weld] : variants)
-  {
-    LeafGeometryCoding withAttribute = coding;
-    withAttribute.weldPositions = weld;
-    LeafGeometryCoding beside = withAttribute;
-    beside.symbolAttribute = false;
-    SectionsToWrite candidate;
-    std::vector<DecodedLeaf> decoded, besideDecoded;
-    std::string besideGeometry, speedError;
-    if (!EncodeLeafGeometry(leaves, withAttribute, speed, candidate.geometry, decoded, speedError))
+  std::vector<SectionsToWrite> candidates(variants.size());
+  std::vector<std::string> errors(variants.size());
+  std::vector<char> coded(variants.size(), 0);
+  RunTasksInParallel(variants.size(),
+    [&](size_t i)
     {
-      error = speedError;
-      continue;
-    }
-    candidate.symbolsBeside = options.symbolsBesideGeometry &&
-      EncodeLeafGeometry(leaves, beside, speed, besideGeometry, besideDecoded, speedError) &&
-      TransferSymbols(decoded, besideDecoded);
-    if (candidate.symbolsBeside)
-      candidate.geometry = std::move(besideGeometry);
-    // The tree section record by record and (nodeColumns) field by field: the smaller kept
-    // (columns cost their lengths, more than they save on trees of a few nodes).
-    for (const bool columns : { false, true })
-    {
-      if (columns && !options.nodeColumns)
-        continue;
-      ByteWriter section;
-      WriteTreeSection(tree,
-        candidate.symbolsBeside ? beside : withAttribute,
+      coded[i] = EncodeVariant(tree,
+        options,
+        coding,
         quantizationError,
         palette,
-        columns,
-        section);
-      if (candidate.symbolsBeside)
-        WritePointSymbols(besideDecoded, section);
-      std::string packed = Deflate(section.Bytes);
-      if (candidate.packedTree.empty() ||
-        (!packed.empty() && packed.size() < candidate.packedTree.size()))
-      {
-        candidate.packedTree = std::move(packed);
-        candidate.rawTreeBytes = section.Bytes.size();
-        candidate.columns = columns;
-      }
-    }
-    if (candidate.packedTree.empty())
+        leaves,
+        variants[i].first,
+        variants[i].second,
+        candidates[i],
+        errors[i]);
+    });
+  bool any = false;
+  for (size_t i = 0; i < variants.size(); ++i)
+  {
+    if (!coded[i])
     {
-      error = "zlib cannot compress the tree section";
-      return false;
+      error = errors[i];
+      if (candidates[i].geometry.empty())
+        continue;   // Draco failed: try the other variants
+      return false; // zlib failed
     }
     if (!any ||
-      candidate.packedTree.size() + candidate.geometry.size() <
+      candidates[i].packedTree.size() + candidates[i].geometry.size() <
         best.packedTree.size() + best.geometry.size())
-      best = std::move(candidate);
+      best = std::move(candidates[i]);
     any = true;
   }
   if (any)

@@ -45,9 +45,9 @@ namespace
 /// The open edges of a piece and its face half-edges.
 struct OpenEdges
 {
-  std::unordered_map<Edge, int, EdgeHash> halfEdges; ///< directed face half-edge -> face
-  EdgeSet open;                                      ///< edges of one face (keys)
-  std::map<int, std::vector<int>> holeNext;          ///< hole half-edge a -> b, by a
+  FlatEdgeMap<int> halfEdges; ///< directed face half-edge -> face (the last face of two)
+  EdgeSet open;               ///< edges of one face (keys)
+  std::map<int, std::vector<int>> holeNext; ///< hole half-edge a -> b, by a
 
   explicit OpenEdges(const Piece& piece)
   {
@@ -73,10 +73,10 @@ struct OpenEdges
   /// each opening is traced as its own loop; -1 if the fan is not consistently oriented.
   int Turn(const Piece& piece, int a, int b) const
   {
-    auto it = this->halfEdges.find({ b, a });
-    for (int guard = 0; it != this->halfEdges.end() && guard < 256; ++guard)
+    const int* it = this->halfEdges.find({ b, a });
+    for (int guard = 0; it && guard < 256; ++guard)
     {
-      const Triangle& t = piece.triangles[it->second];
+      const Triangle& t = piece.triangles[*it];
       int k = 0;
       while (k < 3 && t[(k + 1) % 3] != b)
         ++k;
@@ -152,8 +152,7 @@ bool NonManifoldPath(const std::map<int, std::vector<int>>& nonManifold,
         continue;
       for (int w : it->second)
       {
-        if (previous.count(w) ||
-          (w != to && std::find(walk.begin(), walk.end(), w) != walk.end()))
+        if (previous.count(w) || (w != to && std::find(walk.begin(), walk.end(), w) != walk.end()))
           continue;
         previous[w] = v;
         if (w == to)
@@ -196,7 +195,9 @@ void UndirectedLoops(const Piece& piece,
       for (size_t i = 0; i < loop.size(); ++i)
         inLoop.insert(Key(loop[i], loop[(i + 1) % loop.size()]));
     std::map<int, std::vector<int>> around; // open edges left, by end point (sorted)
-    for (const Edge& e : std::set<Edge>(edges.open.begin(), edges.open.end()))
+    std::vector<Edge> open = edges.open.Keys();
+    std::sort(open.begin(), open.end());
+    for (const Edge& e : open)
       if (!inLoop.count(e))
       {
         around[e.first].push_back(e.second);

@@ -190,13 +190,15 @@ int Unfolder::MatchDiscardedDensity(const FoldingNode& node,
   const char* why = "";
   // A removal of v (into `removal`): its star all of the copy, its ring of free points, the
   // surface moved within the error limit.
-  // A point that comes back to the top of the queue unchanged - its star (its version) and the
+  // A point that comes back to the top of the queue unchanged - its star (starVersion) and the
   // budgets of its star's points (their epochs) as when it was measured - gets the removal
-  // measured then (Try depends on nothing else; points never move here).
-  std::vector<int> version(n, 0), budgetEpoch(n, 0);
+  // measured then (Try depends on nothing else; points never move here). `version` stamps
+  // the queue entries (an entry of an older stamp is stale); a point measured and put back
+  // with its cost gets a new stamp but keeps its measurement.
+  std::vector<int> version(n, 0), starVersion(n, 0), budgetEpoch(n, 0);
   struct Measured
   {
-    int version = -1;
+    int starVersion = -1;
     std::vector<int> epochs; ///< of v and its ring, in that order
     RingRemoval removal;
   };
@@ -204,7 +206,7 @@ int Unfolder::MatchDiscardedDensity(const FoldingNode& node,
   auto unchanged = [&](int v)
   {
     const Measured& m = measured[v];
-    if (m.version != version[v] || m.epochs.empty() || m.epochs[0] != budgetEpoch[v])
+    if (m.starVersion != starVersion[v] || m.epochs.empty() || m.epochs[0] != budgetEpoch[v])
       return false;
     for (size_t i = 0; i < m.removal.ring.size(); ++i)
       if (m.epochs[i + 1] != budgetEpoch[m.removal.ring[i]])
@@ -227,7 +229,7 @@ int Unfolder::MatchDiscardedDensity(const FoldingNode& node,
       if (!isFree(a))
         return false;
     Measured& m = measured[v];
-    m.version = version[v];
+    m.starVersion = starVersion[v];
     m.epochs.assign(1, budgetEpoch[v]);
     for (int a : removal.ring)
       m.epochs.push_back(budgetEpoch[a]);
@@ -296,7 +298,10 @@ int Unfolder::MatchDiscardedDensity(const FoldingNode& node,
     --usedPoints;
     ring = removal.ring;
     for (int a : ring)
+    {
       ++budgetEpoch[a]; // Apply charged their budgets
+      ++starVersion[a]; // and replaced faces of their stars
+    }
     for (int a : ring)
       if (candidate[a])
         queue.push({ StarArea(piece, remover, a) / meanArea, a, ++version[a] });

@@ -207,8 +207,8 @@ struct LoopFill
   RepairReport& report;
   const bool apply; ///< false: nothing is added, the loops are only classified
   EdgeSet existing;
-  std::unordered_map<Edge, int, EdgeHash> faceOfHalfEdge; ///< directed face half-edge -> face
-  EdgeSet openEdges; ///< with input non-manifold edges: the open edges (reported)
+  FlatEdgeMap<int> faceOfHalfEdge; ///< directed face half-edge -> face (the last face of two)
+  EdgeSet openEdges;               ///< with input non-manifold edges: the open edges (reported)
 
   LoopFill(const Piece& piece, RepairReport& r, bool a, bool nonManifoldInput)
     : report(r)
@@ -236,8 +236,8 @@ struct LoopFill
   /// of the face across that edge (hole a -> b: face b -> a).
   void Append(Piece& piece, const std::vector<Triangle>& fill, int a, int b)
   {
-    auto from = this->faceOfHalfEdge.find({ b, a });
-    const int source = from != this->faceOfHalfEdge.end() ? from->second : 0;
+    const int* from = this->faceOfHalfEdge.find({ b, a });
+    const int source = from ? *from : 0;
     for (const Triangle& t : fill)
     {
       piece.triangles.push_back(t);

@@ -2,6 +2,7 @@
 #ifndef foldingmeshes_FoldingTreeUnfolderInternal_h
 #define foldingmeshes_FoldingTreeUnfolderInternal_h
 
+#include "FlatEdgeHash.h"
 #include "FoldingTreeUnfolder.h"
 #include "MeshPreparation.h"
 #include "UnionFind.h"
@@ -245,7 +246,24 @@ int ConstrainedLaplacianSmoothing(Piece& out,
   int iterations,
   double lambda);
 
-/// Hash of an edge (pair of point ids), for the repair's edge sets.
+/// Per point, the faces using it in increasing order (once per use), each list allocated once.
+inline std::vector<std::vector<int>> FacesOfPoints(const std::vector<Triangle>& triangles,
+  size_t points)
+{
+  std::vector<int> uses(points, 0);
+  for (const Triangle& t : triangles)
+    for (int v : t)
+      ++uses[v];
+  std::vector<std::vector<int>> faces(points);
+  for (size_t v = 0; v < points; ++v)
+    faces[v].reserve(static_cast<size_t>(uses[v]));
+  for (size_t f = 0; f < triangles.size(); ++f)
+    for (int v : triangles[f])
+      faces[v].push_back(static_cast<int>(f));
+  return faces;
+}
+
+/// Hash of an edge (pair of point ids), for the hash tables keyed by edges with other values.
 struct EdgeHash
 {
   size_t operator()(const std::pair<int, int>& e) const
@@ -254,7 +272,8 @@ struct EdgeHash
       (static_cast<long long>(e.first) << 32) ^ static_cast<unsigned int>(e.second));
   }
 };
-using EdgeSet = std::unordered_set<std::pair<int, int>, EdgeHash>;
+/// The repair's and stitcher's edge sets (flat: no allocation per edge).
+using EdgeSet = FlatEdgeSet;
 
 /// The postorder unfolding of a folding tree (see UnfoldFoldingTree). The traversal, the
 /// copies and the fold lines are in FoldingTreeUnfolder.cxx (the removal of projected

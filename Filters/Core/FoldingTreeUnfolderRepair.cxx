@@ -62,9 +62,10 @@ int Unfolder::DropNonManifoldFaces(Piece& piece) const
     const auto edges = EdgeFaces(piece);
     std::vector<char> drop(piece.triangles.size(), 0);
     bool any = false;
+    std::vector<int> faces; // of the edge below, not dropped (one buffer for all edges)
     for (const auto& e : edges)
     {
-      std::vector<int> faces;
+      faces.clear();
       for (int f : e.second)
         if (!drop[f])
           faces.push_back(f);

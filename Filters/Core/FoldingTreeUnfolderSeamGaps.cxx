@@ -30,6 +30,50 @@ constexpr double ZipEdgeEndShare = 0.02;
  * points are tear vertices, within `tol` (the vertex moves half way to the edge). Returns
  * the number of vertices inserted.
  */
+namespace
+{
+/// The faces of one edge in the order they were added, the first two held inline (an edge
+/// of a mesh has one or two faces, rarely more): no allocation for most edges.
+class EdgeFaceList
+{
+public:
+  size_t size() const { return this->Inline + this->More.size(); }
+  int operator[](size_t i) const { return i < this->Inline ? this->First[i] : this->More[i - 2]; }
+  void push_back(int f)
+  {
+    if (this->Inline < 2)
+      this->First[this->Inline++] = f;
+    else
+      this->More.push_back(f);
+  }
+  /// Removes the first occurrence of f (which must be there), keeping the others' order.
+  void erase(int f)
+  {
+    size_t i = 0;
+    while ((*this)[i] != f)
+      ++i;
+    for (; i + 1 < this->size(); ++i)
+      this->Set(i, (*this)[i + 1]);
+    if (!this->More.empty())
+      this->More.pop_back();
+    else
+      --this->Inline;
+  }
+
+private:
+  void Set(size_t i, int f)
+  {
+    if (i < 2)
+      this->First[i] = f;
+    else
+      this->More[i - 2] = f;
+  }
+  int First[2] = { -1, -1 };
+  size_t Inline = 0;
+  std::vector<int> More;
+};
+}
+
 int Unfolder::Zip(Piece& out,
   std::vector<int>& faceChild,
   std::vector<std::vector<int>>& children,
@@ -40,9 +84,10 @@ int Unfolder::Zip(Piece& out,
 {
   using Edge = std::pair<int, int>;
   auto key = [](int a, int b) { return Edge{ std::min(a, b), std::max(a, b) }; };
-  // Hashed (the open edges are sorted below: the same order as an ordered map's).
-  std::unordered_map<Edge, std::vector<int>, EdgeHash> edgeFaces;
-  edgeFaces.reserve(3 * static_cast<size_t>(out.NumberOfFaces()));
+  // Hashed (the open edges are sorted below: the same order as an ordered map's); an edge
+  // whose faces are all gone keeps an empty list, which every use below treats as no edge.
+  FlatEdgeMap<EdgeFaceList> edgeFaces;
+  edgeFaces.reserve(3 * static_cast<size_t>(out.NumberOfFaces()) / 2);
   auto addFace = [&](int f)
   {
     const Triangle& t = out.triangles[f];
@@ -53,12 +98,7 @@ int Unfolder::Zip(Piece& out,
   {
     const Triangle& t = out.triangles[f];
     for (int k = 0; k < 3; ++k)
-    {
-      auto it = edgeFaces.find(key(t[k], t[(k + 1) % 3]));
-      it->second.erase(std::find(it->second.begin(), it->second.end(), f));
-      if (it->second.empty())
-        edgeFaces.erase(it);
-    }
+      edgeFaces[key(t[k], t[(k + 1) % 3])].erase(f);
   };
   for (int f = 0; f < out.NumberOfFaces(); ++f)
     addFace(f);
@@ -70,9 +110,12 @@ int Unfolder::Zip(Piece& out,
     // the pass are skipped, the new ones wait for the next pass), bucketed on a grid of
     // cell `tol` by the box of the edge grown by tol.
     std::vector<Edge> open;
-    for (const auto& e : edgeFaces)
-      if (e.second.size() == 1 && isTear[e.first.first] && isTear[e.first.second])
-        open.push_back(e.first);
+    edgeFaces.ForEach(
+      [&](const Edge& e, const EdgeFaceList& faces)
+      {
+        if (faces.size() == 1 && isTear[e.first] && isTear[e.second])
+          open.push_back(e);
+      });
     std::sort(open.begin(), open.end());
     // Cells of at least tol, and no smaller than an eighth of the longest open edge: an
     // edge much longer than tol would otherwise cover (length / tol)^3 cells.
@@ -105,10 +148,10 @@ int Unfolder::Zip(Piece& out,
         continue;
       for (int i : bucket->second) // increasing i: the map order of the edges
       {
-        const auto e = edgeFaces.find(open[i]);
-        if (e == edgeFaces.end() || e->second.size() != 1)
+        const EdgeFaceList* e = edgeFaces.find(open[i]);
+        if (!e || e->size() != 1)
           continue;
-        const int a = e->first.first, b = e->first.second, f = e->second[0];
+        const int a = open[i].first, b = open[i].second, f = (*e)[0];
         const Triangle& tf = out.triangles[f];
         if (a == u || b == u || tf[0] == u || tf[1] == u || tf[2] == u || !isTear[a] ||
           !isTear[b] || std::binary_search(children[u].begin(), children[u].end(), faceChild[f]))
@@ -126,7 +169,7 @@ int Unfolder::Zip(Piece& out,
         {
           bestDistance = d;
           bestFace = f;
-          bestEdge = e->first;
+          bestEdge = open[i];
           bestPoint = q;
         }
       }
@@ -210,9 +253,12 @@ public:
     // The open half-edges in increasing order (as an ordered map holds them): the loops are
     // traced, and filled, in that order.
     std::vector<std::pair<int, int>> openHalfEdges;
-    for (const auto& h : this->HalfEdges)
-      if (this->IsOpen(h.first.first, h.first.second))
-        openHalfEdges.push_back(h.first);
+    this->HalfEdges.ForEach(
+      [&](const std::pair<int, int>& h, int)
+      {
+        if (this->IsOpen(h.first, h.second))
+          openHalfEdges.push_back(h);
+      });
     std::sort(openHalfEdges.begin(), openHalfEdges.end());
     std::vector<std::pair<int, int>> holes;
     for (const auto& h : openHalfEdges)
@@ -238,16 +284,20 @@ private:
     std::sort(key.begin(), key.end());
     return key;
   }
-  bool IsOpen(int a, int b) { return this->Uses[{ std::min(a, b), std::max(a, b) }] == 1; }
+  bool IsOpen(int a, int b) const
+  {
+    const int* uses = this->Uses.find({ std::min(a, b), std::max(a, b) });
+    return uses && *uses == 1;
+  }
 
   /// Arrived at b by the hole edge a -> b (face half-edge b -> a): the next hole edge found
   /// by turning around b through its faces, so each gap at a pinch vertex is its own loop.
   int NextHole(int a, int b)
   {
-    auto it = this->HalfEdges.find({ b, a });
-    for (int guard = 0; it != this->HalfEdges.end() && guard < 64; ++guard)
+    const int* it = this->HalfEdges.find({ b, a });
+    for (int guard = 0; it && guard < 64; ++guard)
     {
-      const Triangle& t = this->Out.triangles[it->second];
+      const Triangle& t = this->Out.triangles[*it];
       int k = 0;
       while (t[(k + 1) % 3] != b)
         ++k;
@@ -408,8 +458,8 @@ private:
   const double Tol;
   const std::function<bool(int, int)> InputBorderEdge; ///< Unfolder::IsInputBorderEdge
   SeamReport& Seam;
-  std::unordered_map<std::pair<int, int>, int, EdgeHash> HalfEdges; // directed edge -> face
-  std::unordered_map<std::pair<int, int>, int, EdgeHash> Uses;      // undirected edge -> faces
+  FlatEdgeMap<int> HalfEdges; // directed edge -> face (the last face of two)
+  FlatEdgeMap<int> Uses;      // undirected edge -> faces
   std::unordered_set<std::array<int, 3>, PointBuckets::KeyHash> FaceSets; // sorted corners
   EdgeSet VisitedHoles;
 };

@@ -353,29 +353,57 @@ SeamPiece Unfolder::MergeClusters(const Piece& piece,
     if (rep[v] == v && count[v] >= 2 && clusters.spread[v] > roughAbove)
       merged.rough[newId[v]] = clusters.spread[v];
   // Remap faces; drop collapsed and duplicate ones (but the input's own duplicates:
-  // InputDuplicate). Sorted vertices -> the faces kept there: input face and sorted input ids
-  // of its vertices.
-  std::map<std::array<int, 3>, std::vector<std::pair<int, std::array<int, 3>>>> seen;
-  for (int f = 0; f < piece.NumberOfFaces(); ++f)
+  // InputDuplicate, against the faces on the same vertices kept before: their input face and
+  // the sorted input ids of their vertices). The faces on each set of vertices are judged in
+  // face order, group by group (one sort instead of a map of lists).
+  const int nf = piece.NumberOfFaces();
+  std::vector<Triangle> remapped(nf), sortedOf(nf);
+  std::vector<int> byVertices;
+  byVertices.reserve(nf);
+  for (int f = 0; f < nf; ++f)
   {
     const Triangle& t = piece.triangles[f];
     const Triangle u{ newId[rep[t[0]]], newId[rep[t[1]]], newId[rep[t[2]]] };
+    remapped[f] = u;
     if (u[0] == u[1] || u[1] == u[2] || u[0] == u[2])
+      continue;
+    sortedOf[f] = u;
+    std::sort(sortedOf[f].begin(), sortedOf[f].end());
+    byVertices.push_back(f);
+  }
+  std::stable_sort(
+    byVertices.begin(), byVertices.end(), [&](int a, int b) { return sortedOf[a] < sortedOf[b]; });
+  std::vector<char> keep(nf, 0);
+  std::vector<std::pair<int, std::array<int, 3>>> same;
+  for (size_t i = 0; i < byVertices.size();)
+  {
+    size_t j = i;
+    while (j < byVertices.size() && sortedOf[byVertices[j]] == sortedOf[byVertices[i]])
+      ++j;
+    same.clear();
+    for (size_t k = i; k < j; ++k) // increasing face order (stable sort)
+    {
+      const int f = byVertices[k];
+      const Triangle& t = piece.triangles[f];
+      std::array<int, 3> ids{ piece.pointOrig[t[0]], piece.pointOrig[t[1]], piece.pointOrig[t[2]] };
+      std::sort(ids.begin(), ids.end());
+      if (!same.empty() &&
+        !this->InputDuplicate(out, remapped[f], { piece.faceOrig[f], ids }, same))
+        continue;
+      same.push_back({ piece.faceOrig[f], ids });
+      keep[f] = 1;
+    }
+    i = j;
+  }
+  for (int f = 0; f < nf; ++f)
+  {
+    if (!keep[f])
     {
       ++seam.droppedFaces;
       continue;
     }
-    std::array<int, 3> sorted{ u[0], u[1], u[2] };
-    std::sort(sorted.begin(), sorted.end());
-    std::array<int, 3> ids{ piece.pointOrig[t[0]], piece.pointOrig[t[1]], piece.pointOrig[t[2]] };
-    std::sort(ids.begin(), ids.end());
-    auto& same = seen[sorted];
-    if (!same.empty() && !this->InputDuplicate(out, u, { piece.faceOrig[f], ids }, same))
-    {
-      ++seam.droppedFaces;
-      continue;
-    }
-    same.push_back({ piece.faceOrig[f], ids });
+    const Triangle& t = piece.triangles[f];
+    const Triangle& u = remapped[f];
     out.triangles.push_back(u);
     out.faceOrig.push_back(piece.faceOrig[f]);
     out.faceCopy.push_back(piece.faceCopy[f]);

@@ -71,6 +71,30 @@ double DistanceToTriangles(const Vec3& x,
   return std::sqrt(best);
 }
 
+/// Rings up to this size get the lower bound of RingTrianglesDistance before their
+/// re-triangulation (C(12, 3) = 220 triangles, a few percent of a re-triangulation's cost).
+constexpr size_t MaximumBoundedRing = 12;
+
+/**
+ * The distance of x to the nearest triangle of any three points of `ring`: every face a
+ * re-triangulation of the ring can make (ear clipping or a collapse into a ring vertex) is
+ * one of them, so no re-triangulation comes nearer to x than this.
+ */
+double RingTrianglesDistance(const Vec3& x,
+  const std::vector<Vec3>& points,
+  const std::vector<int>& ring)
+{
+  double best = std::numeric_limits<double>::infinity();
+  const size_t m = ring.size();
+  for (size_t i = 0; i < m; ++i)
+    for (size_t j = i + 1; j < m; ++j)
+      for (size_t k = j + 1; k < m; ++k)
+        best = std::min(best,
+          ClosestPointTriangle(x, points[ring[i]], points[ring[j]], points[ring[k]])
+            .squaredDistance);
+  return std::sqrt(best);
+}
+
 /**
  * The star face (index into `ring`/`ringFace` order) a new face over the ring of v takes its
  * ids and flags from, among the `candidate` ones: the one whose projection
@@ -195,13 +219,10 @@ bool ClosedRing(const std::vector<Triangle>& triangles,
 VertexRemover::VertexRemover(Piece& piece, double slack)
   : Mesh(piece)
   , Slack(slack)
-  , VertexFaces(piece.points.size())
+  , VertexFaces(FacesOfPoints(piece.triangles, piece.points.size()))
   , FaceAlive(piece.triangles.size(), 1)
   , IsRemoved(piece.points.size(), 0)
 {
-  for (int f = 0; f < piece.NumberOfFaces(); ++f)
-    for (int k = 0; k < 3; ++k)
-      this->VertexFaces[piece.triangles[f][k]].push_back(f);
 }
 
 double VertexRemover::Limit(int v, double fallback) const
@@ -544,6 +565,14 @@ bool VertexRemover::Try(int v,
   why = "open ring";
   if (star.size() < 3 || !ClosedRing(this->Mesh.triangles, star, v, removal.ring, removal.ringFace))
     return false;
+  // The budget check measures v against the new faces first; where no triangle of ring
+  // points comes within the limit (with a margin far above rounding), it must fail: the
+  // re-triangulation is not worth making (most removals the thinning tries end here).
+  why = "budget";
+  if (removal.ring.size() <= MaximumBoundedRing &&
+    RingTrianglesDistance(this->Mesh.points[v], this->Mesh.points, removal.ring) >
+      limit * (1.0 + 1e-9) + 1e-300)
+    return false;
   RingRetriangulation candidate(
     this->Mesh, this->VertexFaces, this->FaceAlive, v, star, removal.ring, rules);
   if (!candidate.ClipEars(removal.created, why))
@@ -642,10 +671,7 @@ int VertexRemover::Compact(std::vector<char>* perPoint)
   piece = std::move(out);
   const int count = this->RemovedCount;
   // The piece is a new one: start over on it.
-  this->VertexFaces.assign(piece.points.size(), {});
-  for (int f = 0; f < piece.NumberOfFaces(); ++f)
-    for (int k = 0; k < 3; ++k)
-      this->VertexFaces[piece.triangles[f][k]].push_back(f);
+  this->VertexFaces = FacesOfPoints(piece.triangles, piece.points.size());
   this->FaceAlive.assign(piece.triangles.size(), 1);
   this->IsRemoved.assign(piece.points.size(), 0);
   this->RemovedCount = 0;
