@@ -73,7 +73,10 @@ public:
     auto less = [&](int i, int j)
     {
       const Vec3 &p = points[i], &q = points[j];
-      return p[0] != q[0] ? p[0] < q[0] : p[1] != q[1] ? p[1] < q[1] : p[2] != q[2] ? p[2] < q[2] : i < j;
+      return p[0] != q[0] ? p[0] < q[0]
+        : p[1] != q[1]    ? p[1] < q[1]
+        : p[2] != q[2]    ? p[2] < q[2]
+                          : i < j;
     };
     std::sort(order.begin(), order.end(), less);
     for (size_t k = 1; k < order.size(); ++k)
@@ -95,14 +98,15 @@ public:
       }
     std::sort(edges.begin(),
       edges.end(),
-      [](const Edge& x, const Edge& y)
-      { return x.lo != y.lo ? x.lo < y.lo : x.hi != y.hi ? x.hi < y.hi : x.slot < y.slot; });
+      [](const Edge& x, const Edge& y) {
+        return x.lo != y.lo ? x.lo < y.lo : x.hi != y.hi ? x.hi < y.hi : x.slot < y.slot;
+      });
     this->Offsets.assign(3 * triangles.size() + 1, 0);
     std::vector<std::pair<int, Across>> pairs;
     for (size_t begin = 0, end = 0; begin < edges.size(); begin = end)
     {
-      for (end = begin + 1;
-           end < edges.size() && edges[end].lo == edges[begin].lo && edges[end].hi == edges[begin].hi;
+      for (end = begin + 1; end < edges.size() && edges[end].lo == edges[begin].lo &&
+           edges[end].hi == edges[begin].hi;
            ++end)
         ;
       // A non-manifold edge's faces are all candidates, a few of them at most.
@@ -165,9 +169,9 @@ double Bound(const std::array<Vec3, 3>& corner,
   double bound = dc + Radius(corner, centroid);
   if (f < 0)
     return bound;
-  const std::array<double, 3> df = { to.FaceDistance(corner[0], f),
-    to.FaceDistance(corner[1], f),
-    to.FaceDistance(corner[2], f) };
+  const std::array<double, 3> df = {
+    to.FaceDistance(corner[0], f), to.FaceDistance(corner[1], f), to.FaceDistance(corner[2], f)
+  };
   bound = std::min(bound, std::max({ df[0], df[1], df[2] }));
   const std::vector<Vec3>& points = to.Points();
   const std::vector<Triangle>& triangles = to.Triangles();
@@ -268,21 +272,28 @@ HausdorffBounds DirectedHausdorffBounds(const TriangleMesh& from,
     }
   };
   const size_t firstCentroid = samples.size() - from.triangles.size();
-  for (size_t f = 0; f < from.triangles.size(); ++f)
+  auto corners = [&](size_t f) -> std::array<Vec3, 3>
   {
     const Triangle& t = from.triangles[f];
-    Piece piece{ { from.points[t[0]], from.points[t[1]], from.points[t[2]] },
-      0.0,
-      created++,
-      static_cast<int>(f) };
-    piece.bound = Bound(piece.corner,
-      samples[firstCentroid + f],
-      d[firstCentroid + f],
-      face[firstCentroid + f],
-      to,
-      neighbors);
-    keep(piece);
-  }
+    return { from.points[t[0]], from.points[t[1]], from.points[t[2]] };
+  };
+  // The triangles' bounds in parallel, kept in triangle order (the same heap for any thread
+  // count).
+  std::vector<double> firstBounds(from.triangles.size());
+  ForRanges(static_cast<vtkIdType>(from.triangles.size()),
+    0,
+    [&](vtkIdType begin, vtkIdType end)
+    {
+      for (vtkIdType f = begin; f < end; ++f)
+        firstBounds[f] = Bound(corners(f),
+          samples[firstCentroid + f],
+          d[firstCentroid + f],
+          face[firstCentroid + f],
+          to,
+          neighbors);
+    });
+  for (size_t f = 0; f < from.triangles.size(); ++f)
+    keep(Piece{ corners(f), firstBounds[f], created++, static_cast<int>(f) });
   std::vector<Piece> split;
   std::vector<std::array<Vec3, 3>> children;
   auto open = [&]() { return !heap.empty() && heap.top().bound > stopLevel(); };
