@@ -64,24 +64,32 @@ struct SectionsToWrite
   bool symbolsBeside = false;
 };
 
+/// What every way of coding the leaves starts from.
+struct EncodingInput
+{
+  const FoldingTree& tree;
+  const CompactTreeOptions& options;
+  const LeafGeometryCoding& coding;
+  double quantizationError;
+  const Palette& palette;
+  const std::vector<LeafToEncode>& leaves;
+};
+
 /**
  * One way of coding the leaves (a Draco speed setting, with or without welding the leaves'
  * common points): the symbols beside the Draco mesh where Draco gives back the same leaves
  * without them (else in it), and the smaller of the tree section's two layouts. False with
  * `error` when Draco fails.
  */
-bool EncodeVariant(const FoldingTree& tree,
-  const CompactTreeOptions& options,
-  const LeafGeometryCoding& coding,
-  double quantizationError,
-  const Palette& palette,
-  const std::vector<LeafToEncode>& leaves,
+bool EncodeVariant(const EncodingInput& in,
   int speed,
   bool weld,
   SectionsToWrite& candidate,
   std::string& error)
 {
-  LeafGeometryCoding withAttribute = coding;
+  const CompactTreeOptions& options = in.options;
+  const std::vector<LeafToEncode>& leaves = in.leaves;
+  LeafGeometryCoding withAttribute = in.coding;
   withAttribute.weldPositions = weld;
   LeafGeometryCoding beside = withAttribute;
   beside.symbolAttribute = false;
@@ -101,10 +109,10 @@ bool EncodeVariant(const FoldingTree& tree,
     if (columns && !options.nodeColumns)
       continue;
     ByteWriter section;
-    WriteTreeSection(tree,
+    WriteTreeSection(in.tree,
       candidate.symbolsBeside ? beside : withAttribute,
-      quantizationError,
-      palette,
+      in.quantizationError,
+      in.palette,
       columns,
       section);
     if (candidate.symbolsBeside)
@@ -132,36 +140,19 @@ bool EncodeVariant(const FoldingTree& tree,
  * sections. The variants are coded in parallel (each on its own data) and judged in a fixed
  * order, so the file is the same for any thread count.
  */
-bool EncodeSmallestSections(const FoldingTree& tree,
-  const CompactTreeOptions& options,
-  const LeafGeometryCoding& coding,
-  double quantizationError,
-  const Palette& palette,
-  const std::vector<LeafToEncode>& leaves,
-  SectionsToWrite& best,
-  std::string& error)
+bool EncodeSmallestSections(const EncodingInput& in, SectionsToWrite& best, std::string& error)
 {
   std::vector<std::pair<int, bool>> variants; // (speed, weld)
   for (const bool weld : { true, false })
-    for (const int speed : options.dracoSpeeds)
-      if (!weld || (options.weldLeaves && !coding.keepOrder))
+    for (const int speed : in.options.dracoSpeeds)
+      if (!weld || (in.options.weldLeaves && !in.coding.keepOrder))
         variants.emplace_back(speed, weld);
   std::vector<SectionsToWrite> candidates(variants.size());
   std::vector<std::string> errors(variants.size());
   std::vector<char> coded(variants.size(), 0);
   RunTasksInParallel(variants.size(),
-    [&](size_t i)
-    {
-      coded[i] = EncodeVariant(tree,
-        options,
-        coding,
-        quantizationError,
-        palette,
-        leaves,
-        variants[i].first,
-        variants[i].second,
-        candidates[i],
-        errors[i]);
+    [&](size_t i) {
+      coded[i] = EncodeVariant(in, variants[i].first, variants[i].second, candidates[i], errors[i]);
     });
   bool any = false;
   for (size_t i = 0; i < variants.size(); ++i)
@@ -294,8 +285,8 @@ bool EncodeCompactTree(const FoldingTree& tree,
   }
 
   SectionsToWrite sections;
-  if (!EncodeSmallestSections(
-        tree, options, coding, quantizationError, palette, leaves, sections, error))
+  const EncodingInput input{ tree, options, coding, quantizationError, palette, leaves };
+  if (!EncodeSmallestSections(input, sections, error))
     return false;
   std::string packedArrays;
   if (!AssembleFile(sections, arrays, bytes, packedArrays, error))
