@@ -71,28 +71,36 @@ double DistanceToTriangles(const Vec3& x,
   return std::sqrt(best);
 }
 
-/// Rings up to this size get the lower bound of RingTrianglesDistance before their
-/// re-triangulation (C(12, 3) = 220 triangles, a few percent of a re-triangulation's cost).
+/// Rings up to this size get the test of NoRingTriangleWithin before their re-triangulation
+/// (at most 3 C(12, 3) = 660 triangles, most tests ending at the first ones).
 constexpr size_t MaximumBoundedRing = 12;
 
 /**
- * The distance of x to the nearest triangle of any three points of `ring`: every face a
- * re-triangulation of the ring can make (ear clipping or a collapse into a ring vertex) is
- * one of them, so no re-triangulation comes nearer to x than this.
+ * True when no triangle of three points of `ring` lies within `reach` of x, measured as
+ * Deviation measures the faces a re-triangulation creates (ClosestPointTriangle) and in each
+ * vertex order one can be created in: every face ear clipping or a collapse into a ring
+ * vertex makes is three ring points in the ring's cyclic order, starting at any of them (the
+ * closest point's rounding depends on the order). So when this holds, Deviation's first term
+ * - x against the created faces - is beyond `reach` too, whichever faces they are.
  */
-double RingTrianglesDistance(const Vec3& x,
+bool NoRingTriangleWithin(const Vec3& x,
   const std::vector<Vec3>& points,
-  const std::vector<int>& ring)
+  const std::vector<int>& ring,
+  double reach)
 {
-  double best = std::numeric_limits<double>::infinity();
   const size_t m = ring.size();
   for (size_t i = 0; i < m; ++i)
     for (size_t j = i + 1; j < m; ++j)
       for (size_t k = j + 1; k < m; ++k)
-        best = std::min(best,
-          ClosestPointTriangle(x, points[ring[i]], points[ring[j]], points[ring[k]])
-            .squaredDistance);
-  return std::sqrt(best);
+      {
+        const Vec3 &p = points[ring[i]], &q = points[ring[j]], &r = points[ring[k]];
+        for (const std::array<const Vec3*, 3>& t : { std::array<const Vec3*, 3>{ &p, &q, &r },
+               std::array<const Vec3*, 3>{ &q, &r, &p },
+               std::array<const Vec3*, 3>{ &r, &p, &q } })
+          if (std::sqrt(ClosestPointTriangle(x, *t[0], *t[1], *t[2]).squaredDistance) <= reach)
+            return false;
+      }
+  return true;
 }
 
 /**
@@ -566,12 +574,11 @@ bool VertexRemover::Try(int v,
   if (star.size() < 3 || !ClosedRing(this->Mesh.triangles, star, v, removal.ring, removal.ringFace))
     return false;
   // The budget check measures v against the new faces first; where no triangle of ring
-  // points comes within the limit (with a margin far above rounding), it must fail: the
-  // re-triangulation is not worth making (most removals the thinning tries end here).
+  // points comes within the limit, it must fail: the re-triangulation is not worth making
+  // (most removals the thinning tries end here).
   why = "budget";
   if (removal.ring.size() <= MaximumBoundedRing &&
-    RingTrianglesDistance(this->Mesh.points[v], this->Mesh.points, removal.ring) >
-      limit * (1.0 + 1e-9) + 1e-300)
+    NoRingTriangleWithin(this->Mesh.points[v], this->Mesh.points, removal.ring, limit))
     return false;
   RingRetriangulation candidate(
     this->Mesh, this->VertexFaces, this->FaceAlive, v, star, removal.ring, rules);
