@@ -76,34 +76,6 @@ double DistanceToTriangles(const Vec3& x,
 constexpr size_t MaximumBoundedRing = 12;
 
 /**
- * True when no triangle of three points of `ring` lies within `reach` of x, measured as
- * Deviation measures the faces a re-triangulation creates (ClosestPointTriangle) and in each
- * vertex order one can be created in: every face ear clipping or a collapse into a ring
- * vertex makes is three ring points in the ring's cyclic order, starting at any of them (the
- * closest point's rounding depends on the order). So when this holds, Deviation's first term
- * - x against the created faces - is beyond `reach` too, whichever faces they are.
- */
-bool NoRingTriangleWithin(const Vec3& x,
-  const std::vector<Vec3>& points,
-  const std::vector<int>& ring,
-  double reach)
-{
-  const size_t m = ring.size();
-  for (size_t i = 0; i < m; ++i)
-    for (size_t j = i + 1; j < m; ++j)
-      for (size_t k = j + 1; k < m; ++k)
-      {
-        const Vec3 &p = points[ring[i]], &q = points[ring[j]], &r = points[ring[k]];
-        for (const std::array<const Vec3*, 3>& t : { std::array<const Vec3*, 3>{ &p, &q, &r },
-               std::array<const Vec3*, 3>{ &q, &r, &p },
-               std::array<const Vec3*, 3>{ &r, &p, &q } })
-          if (std::sqrt(ClosestPointTriangle(x, *t[0], *t[1], *t[2]).squaredDistance) <= reach)
-            return false;
-      }
-  return true;
-}
-
-/**
  * The star face (index into `ring`/`ringFace` order) a new face over the ring of v takes its
  * ids and flags from, among the `candidate` ones: the one whose projection
  * into the star's plane (perpendicular to its mean normal) contains the new face's centroid,
@@ -223,6 +195,26 @@ bool ClosedRing(const std::vector<Triangle>& triangles,
   return std::adjacent_find(sorted.begin(), sorted.end()) == sorted.end() && ring.size() >= 3;
 }
 } // namespace
+
+bool NoRingTriangleWithin(const Vec3& x,
+  const std::vector<Vec3>& points,
+  const std::vector<int>& ring,
+  double reach)
+{
+  const size_t m = ring.size();
+  for (size_t i = 0; i < m; ++i)
+    for (size_t j = i + 1; j < m; ++j)
+      for (size_t k = j + 1; k < m; ++k)
+      {
+        const Vec3 &p = points[ring[i]], &q = points[ring[j]], &r = points[ring[k]];
+        for (const std::array<const Vec3*, 3>& t : { std::array<const Vec3*, 3>{ &p, &q, &r },
+               std::array<const Vec3*, 3>{ &q, &r, &p },
+               std::array<const Vec3*, 3>{ &r, &p, &q } })
+          if (std::sqrt(ClosestPointTriangle(x, *t[0], *t[1], *t[2]).squaredDistance) <= reach)
+            return false;
+      }
+  return true;
+}
 
 VertexRemover::VertexRemover(Piece& piece, double slack)
   : Mesh(piece)

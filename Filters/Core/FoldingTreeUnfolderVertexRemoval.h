@@ -40,6 +40,19 @@ struct RingRemoval
 };
 
 /**
+ * True when no triangle of three points of `ring` lies within `reach` of x, measured as the
+ * budget check of VertexRemover::Try measures the faces a re-triangulation creates
+ * (ClosestPointTriangle) and in each vertex order one can be created in: every face ear
+ * clipping or a collapse into a ring vertex makes is three ring points in the ring's cyclic
+ * order, starting at any of them (the closest point's rounding depends on the order). Try
+ * refuses a removal early where this holds for the limit: its budget check would fail.
+ */
+bool NoRingTriangleWithin(const Vec3& x,
+  const std::vector<Vec3>& points,
+  const std::vector<int>& ring,
+  double reach);
+
+/**
  * Removes interior vertices of a piece one by one (deterministic: in the order asked).
  * Try(v) re-triangulates the closed 1-ring of v by ear clipping (the ear that departs least
  * from the old star first) in the plane perpendicular to the star's mean normal; that needs
