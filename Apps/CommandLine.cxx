@@ -137,19 +137,21 @@ exceeds the root epsilon (decided to 1e-7 of the diagonal). No pictures.
 
 compress: folds MESH (fold options) and writes STEM.fmz in --outdir: the compact folding tree,
 only what unfolding needs, the leaves coded with Draco; prints (JSON: "output", "bytes")
-its size, the stored faces and the quantisation.
+its size, the stored faces and the quantisation. Unless given, compress folds with
+--min-faces 400 (fewer, larger leaves: files up to 39% smaller; JSON "foldOptions": what it
+added, "" none); the other fold options keep the fold command's defaults.
   --quantization-bits N    position bits per coordinate, 6..24, or auto (default): the fewest
                            (at least 8) whose error is at most half of the smallest error
                            budget of a stored point; the error is taken from the budgets, so
                            the unfolded mesh stays within the root epsilon
   --keep-arrays            also store the mesh's point and cell arrays (lossless; a larger
                            file: the geometry is then coded in the leaves' order)
-  --search                 also fold with up to five other settings (--keep fewer, --min-faces
-                           400, --min-area-fraction 0.2 and combinations, on top of the options
-                           given; settings already folded are not folded again) and keep the
-                           smallest file (JSON "foldOptions": what was added; "" none;
-                           "foldSettingsTried"); up to six folds: about six times the time,
-                           files 6-44% smaller on the Table 1 stand-ins
+  --search                 also fold with up to five other settings (the options given alone,
+                           --keep fewer, --min-faces 400, --min-area-fraction 0.2 and
+                           combinations, on top of the options given; settings already folded
+                           are not folded again) and keep the smallest file (JSON
+                           "foldOptions", "foldSettingsTried"); up to six folds: about six
+                           times the time
 decompress: unfolds a .fmz file like unfold (same options, --original too) and writes
 STEM.vtp and STEM.png in --outdir (JSON: "output"). Not kept in a .fmz: input ids, and user
 arrays without --keep-arrays (keep the .vtm for those). unfold reads .fmz files too.

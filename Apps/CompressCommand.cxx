@@ -1,6 +1,7 @@
-// foldingmeshes compress: a mesh folded and written as a compact folding tree (.fmz). Its
-// counterpart, decompress, is the unfold command on a .fmz file (FoldCommands.cxx). With
-// --search, a few other fold settings are tried as well and the smallest file is kept.
+// foldingmeshes compress: a mesh folded and written as a compact folding tree (.fmz), with
+// compress's own defaults for --keep and --min-faces (CompressionSearch.h). Its counterpart,
+// decompress, is the unfold command on a .fmz file (FoldCommands.cxx). With --search, a few
+// other fold settings are tried as well and the smallest file is kept.
 #include "CompressionSearch.h"
 #include "FoldCommandSupport.h"
 #include "MeshIO.h"
@@ -127,6 +128,9 @@ int Compress(int argc, char* argv[])
   const std::string output = (std::filesystem::path(f.outdir) / (stem + ".fmz")).string();
   CompressedCandidate best;
   best.builder = MakeBuilder(f, nullptr);
+  // JSON "foldOptions": what compress added to the options given.
+  std::string chosen =
+    ApplyCompressFoldDefaults(best.builder, f.keep.has_value(), f.minFaces.has_value());
   int code = 0;
   if (!FoldAndWrite(mesh, f, bits, keepArrays, output, best, error, code))
   {
@@ -135,7 +139,7 @@ int Compress(int argc, char* argv[])
   }
   // --search: the other settings, each written beside the output; a smaller file replaces it.
   // A variant that fails is skipped (the output holds the smallest file so far).
-  std::string chosen = "";
+  const std::string ownOptions = chosen;
   int tried = 1;
   const std::string candidatePath = output + ".candidate";
   std::set<std::tuple<int, bool, int, bool, double>> folded{ SearchKey(best.builder) };
@@ -208,7 +212,10 @@ int Compress(int argc, char* argv[])
     if (search)
       std::printf("fold settings:           %d tried, the smallest file with %s\n",
         tried,
-        chosen.empty() ? "the options given" : chosen.c_str());
+        chosen.empty() ? "the options given alone" : chosen.c_str());
+    else if (!ownOptions.empty())
+      std::printf(
+        "fold settings:           compress's %s on top of the options given\n", ownOptions.c_str());
     std::printf("time:                    %.3f s\n", seconds);
     std::printf("wrote:                   %s (%lld bytes)\n", output.c_str(), bytes);
   }

@@ -1,10 +1,13 @@
 // Bytes of a mesh in the usual containers and coders next to its compact folding tree (.fmz),
 // with the proved Hausdorff distance of the decompressed mesh (issue 18). Prints numbers; not
 // a test. Usage:
-//   BenchmarkCompression [--threads N] [--bits N] [--rotation] DIR_OR_MESH...
-// (--rotation: the builder's RotationNodes on, issue 22. --search: as `foldingmeshes compress
-// --search`, the fold settings of CompressionSearch.h are tried too and the smallest file is
-// kept; the last column names the settings that made it, t_c counts every fold.)
+//   BenchmarkCompression [--threads N] [--bits N] [--rotation] [--search] [--fold-defaults]
+//                        DIR_OR_MESH...
+// The fold as `foldingmeshes compress` folds: its own defaults for --keep and --min-faces
+// (CompressionSearch.h; --fold-defaults: the fold command's instead). --rotation: the
+// builder's RotationNodes on, issue 22. --search: as `foldingmeshes compress --search`, the
+// fold settings of CompressionSearch.h are tried too and the smallest file is kept; the last
+// column names the settings that made it, t_c counts every fold.
 // Columns: faces; binary PLY; zlib'd VTP (inline binary); Draco at draco_encoder's defaults
 // (11 position bits, -cl 7); Draco at the tree's bits; the .fmz; the ratio .fmz / Draco at the
 // same bits; the .fmz's quantisation bits; proved Hausdorff of the decompressed mesh to the
@@ -141,7 +144,7 @@ int main(int argc, char* argv[])
 {
   vtkSMPTools::SetBackend("STDThread");
   int bits = 0;
-  bool rotation = false, search = false;
+  bool rotation = false, search = false, foldDefaults = false;
   std::vector<std::string> paths;
   for (int i = 1; i < argc; ++i)
   {
@@ -154,6 +157,8 @@ int main(int argc, char* argv[])
       rotation = true;
     else if (a == "--search")
       search = true;
+    else if (a == "--fold-defaults")
+      foldDefaults = true;
     else
     {
       const std::vector<std::string> found = foldingmeshes::MeshFiles(a);
@@ -163,7 +168,8 @@ int main(int argc, char* argv[])
   if (paths.empty())
   {
     std::fprintf(stderr,
-      "usage: %s [--threads N] [--bits N] [--rotation] [--search] DIR_OR_MESH...\n",
+      "usage: %s [--threads N] [--bits N] [--rotation] [--search] [--fold-defaults] "
+      "DIR_OR_MESH...\n",
       argv[0]);
     return 1;
   }
@@ -180,7 +186,7 @@ int main(int argc, char* argv[])
     "Hmax/dg",
     "t_c",
     "t_d",
-    search ? "settings (--search; none: the defaults)" : "");
+    "fold settings added (none: the fold command's defaults)");
   std::vector<double> ratios, table1Ratios;
   std::vector<std::string> table1Rows;
   for (const std::string& path : paths)
@@ -201,20 +207,24 @@ int main(int argc, char* argv[])
     const std::string stem = std::filesystem::path(path).stem().string();
 
     auto start = Clock::now();
-    // The default settings, then (--search) the variants; the smallest file wins, the earlier
-    // on ties.
-    std::string bytes;
+    // compress's own settings (or --fold-defaults), then (--search) the variants but the
+    // one folded first; the smallest file wins, the earlier on ties.
+    std::string bytes, chosen;
     int q = 0;
-    const char* chosen = "";
+    const std::string first = foldDefaults ? "" : foldingmeshes::CompressFoldDefaults.options;
     for (int k = -1;
          k < (search ? static_cast<int>(std::size(foldingmeshes::FoldSearchVariants)) : 0);
          ++k)
     {
+      if (k >= 0 && foldingmeshes::FoldSearchVariants[k].options == first)
+        continue;
       vtkNew<vtkFoldingTreeBuilder> builder;
       builder->SetInputData(mesh);
       builder->SetRotationNodes(rotation);
       if (k >= 0)
         foldingmeshes::ApplyFoldSearchVariant(builder, foldingmeshes::FoldSearchVariants[k]);
+      else if (!foldDefaults)
+        foldingmeshes::ApplyCompressFoldDefaults(builder, false, false);
       vtkNew<vtkFoldingTreeCompactWriter> writer;
       writer->SetInputConnection(builder->GetOutputPort(0));
       writer->WriteToOutputStringOn();
@@ -225,7 +235,7 @@ int main(int argc, char* argv[])
       {
         bytes = candidate;
         q = writer->GetQuantizationBitsUsed();
-        chosen = k >= 0 ? foldingmeshes::FoldSearchVariants[k].options : "";
+        chosen = k >= 0 ? foldingmeshes::FoldSearchVariants[k].options : first;
       }
     }
     const double compressSeconds = Since(start);
@@ -267,7 +277,7 @@ int main(int argc, char* argv[])
       bound,
       compressSeconds,
       decompressSeconds,
-      chosen);
+      chosen.c_str());
     std::printf("%s\n", row);
     std::fflush(stdout);
     const auto t = Table1.find(stem);
