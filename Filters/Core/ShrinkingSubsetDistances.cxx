@@ -31,7 +31,9 @@ ShrinkingSubsetDistances::~ShrinkingSubsetDistances() = default;
 
 bool ShrinkingSubsetDistances::Update(const std::vector<char>& S)
 {
-  if (!PrepareFaceSubset(this->Mesh, S, this->Current))
+  if (!this->EdgeUses)
+    this->EdgeUses.reset(new FaceEdgeUses(ComputeFaceEdgeUses(this->Mesh)));
+  if (!PrepareFaceSubset(this->Mesh, S, this->Current, *this->EdgeUses))
     return false;
   // The mesh ids of the subset's faces and points, both in increasing order (as
   // PrepareFaceSubset numbers them).

@@ -4,6 +4,7 @@
 
 #include "MirrorDistance.h"
 #include "Plane.h"
+#include "SubsetPreparation.h"
 #include "TriangleMesh.h"
 
 #include <memory>
@@ -66,6 +67,8 @@ private:
   const double CompatibilityAngle;
   const double MaxDistance;
 
+  /// The mesh's edge uses, made by the first Update (every S is prepared from them).
+  std::unique_ptr<FaceEdgeUses> EdgeUses;
   PreparedMesh Current;
   std::vector<int> CurrentPoints; ///< mesh point id of each point of Current
   std::vector<int> CurrentFaces;  ///< mesh face id of each face of Current

@@ -53,14 +53,38 @@ int Traversal(const Triangle& t, int u, int v)
 
 namespace
 {
+/// Calls use(g, direction) for every other face g of `mesh` using edge k of face f (corner k
+/// to corner k + 1) that `faceMask` selects (all faces without one), in the order of the
+/// faces around the edge's first point.
+template <typename Use>
+void ForEachEdgeUse(const PreparedMesh& mesh,
+  const std::vector<char>* faceMask,
+  int f,
+  int k,
+  const Use& use)
+{
+  const Triangle& t = mesh.triangles[f];
+  const int u = t[k], v = t[(k + 1) % 3];
+  for (int m = mesh.vertexFaceOffsets[u]; m < mesh.vertexFaceOffsets[u + 1]; ++m)
+  {
+    const int g = mesh.vertexFaces[m];
+    if (g == f || (faceMask && !(*faceMask)[g]))
+      continue;
+    const int direction = Traversal(mesh.triangles[g], u, v);
+    if (direction != 0)
+      use(g, direction);
+  }
+}
+
 /**
- * Adjacency (from mesh.vertexFaces), parts and the open / non-manifold edge counts of the
- * subset's faces (`faces`: their ids in `mesh`, `localFace`: the inverse); onOpenEdge per
- * subset face. False when two faces across a manifold edge are not consistently oriented
- * (the caller then prepares the faces as a soup).
+ * Adjacency (from `uses`, else mesh.vertexFaces), parts and the open / non-manifold edge
+ * counts of the subset's faces (`faces`: their ids in `mesh`, `localFace`: the inverse);
+ * onOpenEdge per subset face. False when two faces across a manifold edge are not
+ * consistently oriented (the caller then prepares the faces as a soup).
  */
 bool ConnectSubsetFaces(const PreparedMesh& mesh,
   const std::vector<char>& faceMask,
+  const FaceEdgeUses* uses,
   const std::vector<int>& faces,
   const std::vector<int>& localFace,
   PreparedMesh& subset,
@@ -75,25 +99,25 @@ bool ConnectSubsetFaces(const PreparedMesh& mesh,
   for (int i = 0; i < nf; ++i)
   {
     const int f = faces[i];
-    const Triangle& t = mesh.triangles[f];
     const size_t firstNeighbor = subset.faceNeighbors.size();
     for (int k = 0; k < 3; ++k)
     {
-      const int u = t[k], v = t[(k + 1) % 3];
       others.clear();
       bool lowest = true, sameDirection = false;
-      for (int m = mesh.vertexFaceOffsets[u]; m < mesh.vertexFaceOffsets[u + 1]; ++m)
+      const auto use = [&](int g, int direction)
       {
-        const int g = mesh.vertexFaces[m];
-        if (g == f || !faceMask[g])
-          continue;
-        const int direction = Traversal(mesh.triangles[g], u, v);
-        if (direction == 0)
-          continue;
         others.push_back(localFace[g]);
         lowest = lowest && g > f;
         sameDirection = sameDirection || direction > 0;
+      };
+      if (uses)
+      {
+        for (int m = uses->offsets[3 * f + k]; m < uses->offsets[3 * f + k + 1]; ++m)
+          if (faceMask[uses->faces[m]])
+            use(uses->faces[m], uses->directions[m]);
       }
+      else
+        ForEachEdgeUse(mesh, &faceMask, f, k, use);
       const size_t uses = others.size() + 1;
       if (uses == 2 && sameDirection)
         return false;
@@ -207,8 +231,11 @@ void SubsetNormalsAndIncidence(const PreparedMesh& mesh,
 }
 }
 
-bool PrepareFaceSubset(const PreparedMesh& mesh,
+namespace
+{
+bool PrepareSubset(const PreparedMesh& mesh,
   const std::vector<char>& faceMask,
+  const FaceEdgeUses* uses,
   PreparedMesh& subset)
 {
   subset = PreparedMesh();
@@ -249,10 +276,49 @@ bool PrepareFaceSubset(const PreparedMesh& mesh,
   if (!(subset.totalArea > 0.0) || !(subset.diagonal > 0.0))
     return false;
   std::vector<char> onOpenEdge;
-  if (!ConnectSubsetFaces(mesh, faceMask, faces, localFace, subset, onOpenEdge))
+  if (!ConnectSubsetFaces(mesh, faceMask, uses, faces, localFace, subset, onOpenEdge))
     return PrepareSelectedSoup(mesh, faceMask, subset);
   OrientClosedParts(subset, onOpenEdge);
   SubsetNormalsAndIncidence(mesh, localPoint, subset);
   return true;
+}
+}
+
+bool PrepareFaceSubset(const PreparedMesh& mesh,
+  const std::vector<char>& faceMask,
+  PreparedMesh& subset)
+{
+  return PrepareSubset(mesh, faceMask, nullptr, subset);
+}
+
+bool PrepareFaceSubset(const PreparedMesh& mesh,
+  const std::vector<char>& faceMask,
+  PreparedMesh& subset,
+  const FaceEdgeUses& uses)
+{
+  return PrepareSubset(mesh, faceMask, &uses, subset);
+}
+
+FaceEdgeUses ComputeFaceEdgeUses(const PreparedMesh& mesh)
+{
+  FaceEdgeUses uses;
+  const int nf = mesh.NumberOfFaces();
+  uses.offsets.reserve(3 * static_cast<size_t>(nf) + 1);
+  uses.offsets.push_back(0);
+  for (int f = 0; f < nf; ++f)
+    for (int k = 0; k < 3; ++k)
+    {
+      ForEachEdgeUse(mesh,
+        nullptr,
+        f,
+        k,
+        [&](int g, int direction)
+        {
+          uses.faces.push_back(g);
+          uses.directions.push_back(static_cast<signed char>(direction));
+        });
+      uses.offsets.push_back(static_cast<int>(uses.faces.size()));
+    }
+  return uses;
 }
 }

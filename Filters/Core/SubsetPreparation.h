@@ -25,6 +25,28 @@ namespace foldingmeshes
 bool PrepareFaceSubset(const PreparedMesh& mesh,
   const std::vector<char>& faceMask,
   PreparedMesh& subset);
+
+/**
+ * For each face f of a prepared mesh and each of its edges k (from corner k to corner k + 1),
+ * the other faces that use that edge, with their direction: what PrepareFaceSubset otherwise
+ * finds by scanning the faces around the edge's first point on every call. For a caller that
+ * prepares several subsets of one mesh (Builder::Trim's loop).
+ */
+struct FaceEdgeUses
+{
+  std::vector<int> offsets; ///< 3 * faces + 1: the uses of edge k of face f start at 3 f + k
+  std::vector<int> faces;   ///< the other face, in the order of the mesh's vertexFaces
+  std::vector<signed char> directions; ///< +1: it runs the edge the same way, -1: opposite
+};
+
+/// The table of `mesh`'s edge uses (one scan, as one PrepareFaceSubset call makes).
+FaceEdgeUses ComputeFaceEdgeUses(const PreparedMesh& mesh);
+
+/// PrepareFaceSubset with `uses` = ComputeFaceEdgeUses(mesh): the same result, bit for bit.
+bool PrepareFaceSubset(const PreparedMesh& mesh,
+  const std::vector<char>& faceMask,
+  PreparedMesh& subset,
+  const FaceEdgeUses& uses);
 }
 
 #endif

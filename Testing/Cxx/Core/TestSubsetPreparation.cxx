@@ -7,7 +7,9 @@
 //   strip's diagonal but above that of a small subset's;
 // - a "book" of three faces on one edge (non-manifold; two pages may turn a face against
 //   the other) and a Moebius strip (no consistent orientation), every subset of their faces;
-// - a face with a repeated vertex; an empty selection and a zero-area one fail.
+// - a face with a repeated vertex; an empty selection and a zero-area one fail;
+// - everywhere, the same with the mesh's table of edge uses (ComputeFaceEdgeUses, what
+//   Builder::Trim's repeated preparations use) as without it.
 #include "CoreTestUtilities.h"
 
 #include "../ProceduralMeshes.h"
@@ -97,6 +99,16 @@ void ExpectSame(const PreparedMesh& mesh, const std::vector<char>& mask, const s
   {
     const std::string field = FirstDifference(expected, got);
     EXPECT(field.empty(), what << ": " << field << " differs from PrepareMesh's");
+  }
+  PreparedMesh withUses;
+  const bool withUsesOk =
+    PrepareFaceSubset(mesh, mask, withUses, foldingmeshes::ComputeFaceEdgeUses(mesh));
+  EXPECT(withUsesOk == expectedOk,
+    what << ": with the edge uses returned " << withUsesOk << ", PrepareMesh " << expectedOk);
+  if (withUsesOk && expectedOk)
+  {
+    const std::string field = FirstDifference(expected, withUses);
+    EXPECT(field.empty(), what << ": with the edge uses, " << field << " differs");
   }
 }
 
