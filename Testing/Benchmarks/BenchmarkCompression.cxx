@@ -2,9 +2,10 @@
 // with the proved Hausdorff distance of the decompressed mesh (issue 18). Prints numbers; not
 // a test. Usage:
 //   BenchmarkCompression [--threads N] [--bits N] [--rotation] [--search] [--fold-defaults]
-//                        DIR_OR_MESH...
+//                        [--min-faces N] DIR_OR_MESH...
 // The fold as `foldingmeshes compress` folds: its own defaults for --keep and --min-faces
-// (CompressionSearch.h; --fold-defaults: the fold command's instead). --rotation: the
+// (CompressionSearch.h; --fold-defaults: the fold command's instead; --min-faces N: that
+// MinimumFaces instead of compress's, as `compress --min-faces N`). --rotation: the
 // builder's RotationNodes on, issue 22. --search: as `foldingmeshes compress --search`, the
 // fold settings of CompressionSearch.h are tried too and the smallest file is kept; the last
 // column names the settings that made it, t_c counts every fold.
@@ -145,6 +146,7 @@ int main(int argc, char* argv[])
   vtkSMPTools::SetBackend("STDThread");
   int bits = 0;
   bool rotation = false, search = false, foldDefaults = false;
+  int minimumFaces = 0; // --min-faces N: the first fold's MinimumFaces (0: as compress)
   std::vector<std::string> paths;
   for (int i = 1; i < argc; ++i)
   {
@@ -159,6 +161,8 @@ int main(int argc, char* argv[])
       search = true;
     else if (a == "--fold-defaults")
       foldDefaults = true;
+    else if (a == "--min-faces" && i + 1 < argc)
+      minimumFaces = std::atoi(argv[++i]);
     else
     {
       const std::vector<std::string> found = foldingmeshes::MeshFiles(a);
@@ -169,7 +173,7 @@ int main(int argc, char* argv[])
   {
     std::fprintf(stderr,
       "usage: %s [--threads N] [--bits N] [--rotation] [--search] [--fold-defaults] "
-      "DIR_OR_MESH...\n",
+      "[--min-faces N] DIR_OR_MESH...\n",
       argv[0]);
     return 1;
   }
@@ -211,7 +215,9 @@ int main(int argc, char* argv[])
     // one folded first; the smallest file wins, the earlier on ties.
     std::string bytes, chosen;
     int q = 0;
-    const std::string first = foldDefaults ? "" : foldingmeshes::CompressFoldDefaults.options;
+    const std::string first = minimumFaces > 0
+      ? "--min-faces " + std::to_string(minimumFaces)
+      : (foldDefaults ? "" : foldingmeshes::CompressFoldDefaults.options);
     for (int k = -1;
          k < (search ? static_cast<int>(std::size(foldingmeshes::FoldSearchVariants)) : 0);
          ++k)
@@ -224,7 +230,12 @@ int main(int argc, char* argv[])
       if (k >= 0)
         foldingmeshes::ApplyFoldSearchVariant(builder, foldingmeshes::FoldSearchVariants[k]);
       else if (!foldDefaults)
-        foldingmeshes::ApplyCompressFoldDefaults(builder, false, false);
+        foldingmeshes::ApplyCompressFoldDefaults(builder, false, minimumFaces > 0);
+      if (k < 0 && minimumFaces > 0)
+      {
+        builder->SetUseMinimumFaces(true);
+        builder->SetMinimumFaces(minimumFaces);
+      }
       vtkNew<vtkFoldingTreeCompactWriter> writer;
       writer->SetInputConnection(builder->GetOutputPort(0));
       writer->WriteToOutputStringOn();
