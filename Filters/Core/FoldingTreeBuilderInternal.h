@@ -6,6 +6,7 @@
 #include "FoldingTreeBuilder.h"
 #include "FoldingWorkMesh.h"
 #include "MeshPreparation.h"
+#include "ShrinkingSubsetDistances.h"
 #include "SurfaceDistance.h"
 
 #include <algorithm>
@@ -102,13 +103,15 @@ private:
    * closest compatible points of S itself. Detection weighs vertices near the remaining
    * faces down and can stop a fraction of a degree off; on the trimmed S there are no
    * outliers. The plane with the lowest area-weighted residual is returned (the input plane
-   * unless a step improves it).
+   * unless a step improves it). With `prepared`, S as prepared here and its mirror-distance
+   * queries are handed on (for Trim on the same S).
    */
   Plane Polish(const WorkMesh& w,
     const PreparedMesh& pm,
     const std::vector<char>& S,
     const Plane& plane,
-    double eps) const;
+    double eps,
+    PreparedSubsetQueries* prepared = nullptr) const;
 
   /**
    * S minus its faces with a vertex whose mirror image is not within eps (and, with
@@ -124,6 +127,8 @@ private:
    * change of S could tip a near tie; the fold keeps this side) - or 0 without errorBudget.
    * wholeParts: what is left of S is its largest connected region and its whole parts
    * (LargestRegionAndWholeParts), else its largest connected region.
+   * `prepared`: S prepared elsewhere with its queries (Polish's), used where it is what the
+   * first iteration prepares (ShrinkingSubsetDistances::Adopt).
    */
   std::vector<char> Trim(const WorkMesh& w,
     const PreparedMesh& pm,
@@ -132,7 +137,8 @@ private:
     const Plane& plane,
     double eps,
     bool wholeParts,
-    int& provenSide) const;
+    int& provenSide,
+    PreparedSubsetQueries prepared = {}) const;
 
   /// Detection's plane and its runners-up tried by ChooseSymmetricRegion.
   static constexpr size_t RegionCandidatePlanes = 3;

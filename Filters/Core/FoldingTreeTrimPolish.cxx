@@ -49,12 +49,15 @@ Plane Builder::Polish(const WorkMesh& w,
   const PreparedMesh& pm,
   const std::vector<char>& S,
   const Plane& plane,
-  double eps) const
+  double eps,
+  PreparedSubsetQueries* prepared) const
 {
-  PreparedMesh spm;
-  if (!PrepareSubset(w, pm, S, spm))
+  auto subset = std::make_unique<PreparedMesh>();
+  if (!PrepareSubset(w, pm, S, *subset))
     return plane;
-  MirrorDistance distances(spm, this->Options.symmetry.compatibilityAngle);
+  const PreparedMesh& spm = *subset;
+  auto queries = std::make_unique<MirrorDistance>(spm, this->Options.symmetry.compatibilityAngle);
+  MirrorDistance& distances = *queries;
   std::vector<double> d;
   std::vector<Vec3> closest, closestNormals;
   Plane current = plane, best = plane;
@@ -85,6 +88,8 @@ Plane Builder::Polish(const WorkMesh& w,
     if (small)
       break;
   }
+  if (prepared)
+    *prepared = PreparedSubsetQueries{ std::move(subset), std::move(queries) };
   return CanonicalPlane(best, plane.origin);
 }
 
@@ -106,10 +111,12 @@ std::vector<char> Builder::TrimAndPolish(const WorkMesh& w,
     S = this->Trim(w, pm, region, S, plane, eps, wholeParts, provenSide);
   if (this->Options.polishPlane)
   {
-    plane = this->Polish(w, pm, S, plane, eps);
+    // S prepared and its face tree, made by Polish, start the second trim.
+    PreparedSubsetQueries prepared;
+    plane = this->Polish(w, pm, S, plane, eps, &prepared);
     provenSide = 0; // the proof was for the plane before polishing
     if (this->Options.trimToMirrorConsistent)
-      S = this->Trim(w, pm, region, S, plane, eps, wholeParts, provenSide);
+      S = this->Trim(w, pm, region, S, plane, eps, wholeParts, provenSide, std::move(prepared));
   }
   return S;
 }
@@ -268,13 +275,15 @@ std::vector<char> Builder::Trim(const WorkMesh& w,
   const Plane& plane,
   double eps,
   bool wholeParts,
-  int& provenSide) const
+  int& provenSide,
+  PreparedSubsetQueries prepared) const
 {
   provenSide = 0;
   // One plane while S only shrinks: the iterations after the first update what changed
   // (distances, budget partners) instead of starting over - bit for bit the same results (see
   // the classes).
   ShrinkingSubsetDistances distances(pm, plane, this->Options.symmetry.compatibilityAngle, eps);
+  distances.Adopt(std::move(prepared));
   ShrinkingMirrorBudget budget(
     w.points, w.budget, plane, eps, std::max(eps, 1e-12 * this->Tree.diagonal));
   // The mirrored-face proof's closest triangles: those of S itself (the region's face tree

@@ -14,6 +14,23 @@ bool SameBits(const Vec3& a, const Vec3& b)
 {
   return std::memcmp(a.data(), b.data(), 3 * sizeof(double)) == 0;
 }
+
+/// The elements of two vectors equal bit for bit.
+template <typename T>
+bool SameElements(const std::vector<T>& a, const std::vector<T>& b)
+{
+  return a.size() == b.size() &&
+    (a.empty() || std::memcmp(a.data(), b.data(), a.size() * sizeof(T)) == 0);
+}
+
+/// What MirrorDistance reads of a mesh, equal bit for bit in `a` and `b`.
+bool SameQueryInput(const PreparedMesh& a, const PreparedMesh& b)
+{
+  return SameElements(a.points, b.points) && SameElements(a.triangles, b.triangles) &&
+    SameElements(a.faceDegenerate, b.faceDegenerate) &&
+    SameElements(a.vertexNormals, b.vertexNormals) && SameElements(a.faceNormals, b.faceNormals) &&
+    SameElements(a.faceCentroids, b.faceCentroids);
+}
 }
 
 ShrinkingSubsetDistances::ShrinkingSubsetDistances(const PreparedMesh& mesh,
@@ -96,8 +113,20 @@ void ShrinkingSubsetDistances::ComputeAll()
 {
   ++this->NumberOfFullUpdates;
   this->BaseQueries.reset(); // it refers to the old base
-  this->Base = std::make_unique<PreparedMesh>(this->Current);
-  this->BaseQueries = std::make_unique<MirrorDistance>(*this->Base, this->CompatibilityAngle);
+  PreparedSubsetQueries adopted = std::move(this->Adopted);
+  if (adopted.subset && adopted.queries && SameQueryInput(*adopted.subset, this->Current))
+  {
+    // The same face tree as a new one would be (it is built from these alone).
+    this->Base = std::move(adopted.subset);
+    this->BaseQueries = std::move(adopted.queries);
+    ++this->NumberOfAdoptedUpdates;
+  }
+  else
+  {
+    adopted.queries.reset(); // it refers to adopted.subset
+    this->Base = std::make_unique<PreparedMesh>(this->Current);
+    this->BaseQueries = std::make_unique<MirrorDistance>(*this->Base, this->CompatibilityAngle);
+  }
   this->BaseQueries->Compute(this->Mirror,
     DistanceMetric::Fine,
     this->MaxDistance,

@@ -12,6 +12,15 @@
 
 namespace foldingmeshes
 {
+/// A face subset prepared on its own and the mirror-distance queries over it (its face tree),
+/// made by one step of the builder and handed to the next one over the same subset
+/// (Builder::Polish to Builder::Trim).
+struct PreparedSubsetQueries
+{
+  std::unique_ptr<PreparedMesh> subset;
+  std::unique_ptr<MirrorDistance> queries; ///< over *subset
+};
+
 /**
  * For a sequence of face subsets S of `mesh`, each within the previous one, and one plane:
  * S prepared on its own (PrepareFaceSubset) and the fine mirror distances of its vertices
@@ -42,12 +51,21 @@ public:
   /// distances of its vertices. False where PrepareFaceSubset fails.
   bool Update(const std::vector<char>& S);
 
+  /// A preparation of the next S made elsewhere, with its queries: the next update that
+  /// starts over uses them instead of a new face tree where they are what it prepares (the
+  /// same points, triangles, degenerate faces, face and vertex normals and face centroids:
+  /// all that the queries and their face tree read), so the distances are the same bit for
+  /// bit; otherwise they are dropped.
+  void Adopt(PreparedSubsetQueries prepared) { this->Adopted = std::move(prepared); }
+
   /// S as PrepareFaceSubset prepares it.
   const PreparedMesh& Subset() const { return this->Current; }
   /// The fine mirror distance of each point of Subset() (infinite beyond maxDistance).
   const std::vector<double>& Distances() const { return this->CurrentDistance; }
   /// Updates that queried every vertex (the first one and those whose S did not match).
   int FullUpdates() const { return this->NumberOfFullUpdates; }
+  /// Full updates that used an adopted preparation (Adopt) instead of a new face tree.
+  int AdoptedUpdates() const { return this->NumberOfAdoptedUpdates; }
 
 private:
   /// True when Current's points are the mesh's CurrentPoints (same positions) and its faces
@@ -74,6 +92,7 @@ private:
   std::vector<int> CurrentFaces;  ///< mesh face id of each face of Current
   std::vector<double> CurrentDistance;
 
+  PreparedSubsetQueries Adopted; ///< see Adopt
   std::unique_ptr<PreparedMesh> Base;
   std::unique_ptr<MirrorDistance> BaseQueries; ///< over *Base
   std::vector<int> BasePointOf;                ///< mesh point id -> base point (-1: none)
@@ -83,6 +102,7 @@ private:
   std::vector<double> BaseDistance;
   std::vector<int> BaseClosest;
   int NumberOfFullUpdates = 0;
+  int NumberOfAdoptedUpdates = 0;
 };
 }
 

@@ -7,7 +7,10 @@
 //   a single full update) and with random input normals (the signs of the subset's normals
 //   change as faces go: full updates again, still the same distances);
 // - ShrinkingMirrorBudget: the limits Trim derived from fresh buckets of each S's points;
-// - a region that grows again (not a subset): everything starts over, still the same.
+// - a region that grows again (not a subset): everything starts over, still the same;
+// - a preparation of S made elsewhere with its queries (Builder::Polish's, Adopt): used when
+//   it is S's (one adopted update), dropped when it is another subset's; the distances the
+//   same bit for bit either way.
 #include "CoreTestUtilities.h"
 #include "FaceTree.h"
 #include "MirrorDistance.h"
@@ -218,6 +221,37 @@ int main()
     std::string error;
     REQUIRE(PrepareMesh(soup, normals, random, error), error);
     Run(random, plane, "blob with random normals", 0);
+  }
+  {
+    // Adopt: Polish's preparation of S and its queries start Trim's distances.
+    const double eps = 0.02 * mesh.diagonal;
+    std::vector<char> S(mesh.NumberOfFaces(), 1), other(mesh.NumberOfFaces(), 1);
+    for (int f = 0; f < mesh.NumberOfFaces(); f += 7)
+      other[f] = 0;
+    other = LargestConnectedRegion(mesh, other);
+    std::vector<double> fresh;
+    {
+      ShrinkingSubsetDistances alone(mesh, plane, kCompatibilityAngle, eps);
+      REQUIRE(alone.Update(S), "a subset of the blob");
+      fresh = alone.Distances();
+    }
+    for (int k = 0; k < 2; ++k)
+    {
+      const std::vector<char>& preparedFaces = k == 0 ? S : other;
+      PreparedSubsetQueries prepared;
+      prepared.subset = std::make_unique<PreparedMesh>();
+      REQUIRE(PrepareFaceSubset(mesh, preparedFaces, *prepared.subset), "the prepared subset");
+      prepared.queries = std::make_unique<MirrorDistance>(*prepared.subset, kCompatibilityAngle);
+      std::vector<double> warm; // the queries used once already, as Polish leaves them
+      prepared.queries->Compute(plane, DistanceMetric::Fine, eps, warm);
+      ShrinkingSubsetDistances distances(mesh, plane, kCompatibilityAngle, eps);
+      distances.Adopt(std::move(prepared));
+      REQUIRE(distances.Update(S), "a subset of the blob");
+      const char* what = k == 0 ? "S's own preparation" : "another subset's preparation";
+      EXPECT(distances.AdoptedUpdates() == (k == 0 ? 1 : 0),
+        what << ": " << distances.AdoptedUpdates() << " adopted updates");
+      EXPECT(BitIdentical(distances.Distances(), fresh), what << ": the distances differ");
+    }
   }
   std::printf("TestShrinkingRegion: %.2f s\n", coretest::Seconds(t0));
   return coretest::Finish("TestShrinkingRegion");
