@@ -33,17 +33,6 @@ struct CompressedCandidate
   long long bytes = 0;
 };
 
-/// The settings a --search fold differs in (a variant that gives the user's own, or an
-/// earlier variant's, is not folded again).
-std::tuple<int, bool, int, bool, double> SearchKey(vtkFoldingTreeBuilder* b)
-{
-  return { b->GetKeepSide(),
-    b->GetUseMinimumFaces(),
-    b->GetMinimumFaces(),
-    b->GetUseMinimumAreaFraction(),
-    b->GetMinimumAreaFraction() };
-}
-
 /// A builder with `f`'s settings and (if any) `variant`'s.
 vtkSmartPointer<vtkFoldingTreeBuilder> MakeBuilder(const FoldSettings& f,
   const FoldSearchVariant* variant)
@@ -142,19 +131,21 @@ int Compress(int argc, char* argv[])
   const std::string ownOptions = chosen;
   int tried = 1;
   const std::string candidatePath = output + ".candidate";
-  std::set<std::tuple<int, bool, int, bool, double>> folded{ SearchKey(best.builder) };
+  std::set<std::tuple<int, bool, int, bool, double>> folded{ FoldSettingsKey(best.builder) };
   for (const FoldSearchVariant& v : FoldSearchVariants)
   {
     if (!search)
       break;
     CompressedCandidate c;
     c.builder = MakeBuilder(f, &v);
-    if (!folded.insert(SearchKey(c.builder)).second)
+    if (!folded.insert(FoldSettingsKey(c.builder)).second)
       continue;
     ++tried;
     if (!FoldAndWrite(mesh, f, bits, keepArrays, candidatePath, c, error, code))
     {
-      std::cerr << "foldingmeshes: --search, " << v.options << ": " << error << " (skipped)\n";
+      std::cerr << "foldingmeshes: --search, "
+                << (*v.options ? v.options : "the options given alone") << ": " << error
+                << " (skipped)\n";
       continue;
     }
     std::error_code renamed;

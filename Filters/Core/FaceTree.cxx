@@ -354,7 +354,10 @@ FaceTree::Hit FaceTree::ClosestCompatibleFaceAmong(const Vec3& p,
   const double sinL = std::sqrt((1.0 - cosL) * (1.0 + cosL)); // accurate for cosL near 1
   double best2 = maxDistance * maxDistance;
   // A compatible hint bounds the search from the start; the minimum (lowest id on ties) is
-  // the same with or without it.
+  // the same with or without it - but where the best distance is within rounding of zero,
+  // Beyond's sliver test (no slack of its own) can prune a sliver face the search without
+  // the hint would have reached (found by review, 2026-12-05: distances near 1e-16 of the
+  // mesh's size; left as it is, see docs/limitations.md).
   if (hintFace >= 0 && hintFace < Mesh.NumberOfFaces() && this->OrderIndex[hintFace] >= 0)
     this->TryFace(p, normal, cosLimit, sinL, this->OrderIndex[hintFace], best2, hit, excluded);
   this->Traverse(

@@ -119,6 +119,7 @@ void ShrinkingSubsetDistances::ComputeAll()
     // The same face tree as a new one would be (it is built from these alone).
     this->Base = std::move(adopted.subset);
     this->BaseQueries = std::move(adopted.queries);
+    this->BaseQueries->ResetHints(); // as a new one starts
     ++this->NumberOfAdoptedUpdates;
   }
   else

@@ -77,14 +77,14 @@ void ForEachEdgeUse(const PreparedMesh& mesh,
 }
 
 /**
- * Adjacency (from `uses`, else mesh.vertexFaces), parts and the open / non-manifold edge
+ * Adjacency (from `table`, else mesh.vertexFaces), parts and the open / non-manifold edge
  * counts of the subset's faces (`faces`: their ids in `mesh`, `localFace`: the inverse);
  * onOpenEdge per subset face. False when two faces across a manifold edge are not
  * consistently oriented (the caller then prepares the faces as a soup).
  */
 bool ConnectSubsetFaces(const PreparedMesh& mesh,
   const std::vector<char>& faceMask,
-  const FaceEdgeUses* uses,
+  const FaceEdgeUses* table,
   const std::vector<int>& faces,
   const std::vector<int>& localFace,
   PreparedMesh& subset,
@@ -110,11 +110,11 @@ bool ConnectSubsetFaces(const PreparedMesh& mesh,
         lowest = lowest && g > f;
         sameDirection = sameDirection || direction > 0;
       };
-      if (uses)
+      if (table)
       {
-        for (int m = uses->offsets[3 * f + k]; m < uses->offsets[3 * f + k + 1]; ++m)
-          if (faceMask[uses->faces[m]])
-            use(uses->faces[m], uses->directions[m]);
+        for (int m = table->offsets[3 * f + k]; m < table->offsets[3 * f + k + 1]; ++m)
+          if (faceMask[table->faces[m]])
+            use(table->faces[m], table->directions[m]);
       }
       else
         ForEachEdgeUse(mesh, &faceMask, f, k, use);
@@ -296,6 +296,8 @@ bool PrepareFaceSubset(const PreparedMesh& mesh,
   PreparedMesh& subset,
   const FaceEdgeUses& uses)
 {
+  if (uses.offsets.size() != 3 * static_cast<size_t>(mesh.NumberOfFaces()) + 1)
+    return PrepareSubset(mesh, faceMask, nullptr, subset); // not this mesh's table
   return PrepareSubset(mesh, faceMask, &uses, subset);
 }
 

@@ -15,7 +15,8 @@ namespace foldingmeshes
  * points, triangles, orientation, degenerate faces (the area floor from the subset's own
  * diagonal), normals (the sign of each from the subset's own faces), adjacency and parts.
  *
- * Welded points are distinct, so the weld is the identity; the edges come from
+ * Welded points are distinct, so the weld is the identity; the edges come from a table of
+ * edge uses (the overload below) or from
  * mesh.vertexFaces instead of a sort of all edge uses. When the subset's orientation walk
  * would turn a face against another one (a manifold edge of the subset traversed twice in
  * one direction, e.g. a non-manifold edge of `mesh` that is manifold in the subset) or a
@@ -39,10 +40,12 @@ struct FaceEdgeUses
   std::vector<signed char> directions; ///< +1: it runs the edge the same way, -1: opposite
 };
 
-/// The table of `mesh`'s edge uses (one scan, as one PrepareFaceSubset call makes).
+/// The table of `mesh`'s edge uses (one scan of every face's edges; a PrepareFaceSubset call
+/// without it scans the selected faces' edges).
 FaceEdgeUses ComputeFaceEdgeUses(const PreparedMesh& mesh);
 
-/// PrepareFaceSubset with `uses` = ComputeFaceEdgeUses(mesh): the same result, bit for bit.
+/// PrepareFaceSubset with `uses` = ComputeFaceEdgeUses(mesh): the same result, bit for bit
+/// (a table of another size is ignored).
 bool PrepareFaceSubset(const PreparedMesh& mesh,
   const std::vector<char>& faceMask,
   PreparedMesh& subset,

@@ -44,7 +44,9 @@
 #include <fstream>
 #include <iterator>
 #include <map>
+#include <set>
 #include <string>
+#include <tuple>
 #include <vector>
 
 namespace
@@ -211,31 +213,34 @@ int main(int argc, char* argv[])
     const std::string stem = std::filesystem::path(path).stem().string();
 
     auto start = Clock::now();
-    // compress's own settings (or --fold-defaults), then (--search) the variants but the
-    // one folded first; the smallest file wins, the earlier on ties.
+    // compress's own settings (or --fold-defaults), then (--search) the variants whose
+    // settings were not folded yet; the smallest file wins, the earlier on ties.
     std::string bytes, chosen;
     int q = 0;
-    const std::string first = minimumFaces > 0
-      ? "--min-faces " + std::to_string(minimumFaces)
-      : (foldDefaults ? "" : foldingmeshes::CompressFoldDefaults.options);
+    std::set<std::tuple<int, bool, int, bool, double>> folded;
     for (int k = -1;
          k < (search ? static_cast<int>(std::size(foldingmeshes::FoldSearchVariants)) : 0);
          ++k)
     {
-      if (k >= 0 && foldingmeshes::FoldSearchVariants[k].options == first)
-        continue;
       vtkNew<vtkFoldingTreeBuilder> builder;
       builder->SetInputData(mesh);
       builder->SetRotationNodes(rotation);
+      std::string label; // the settings added to the fold command's defaults
       if (k >= 0)
+      {
         foldingmeshes::ApplyFoldSearchVariant(builder, foldingmeshes::FoldSearchVariants[k]);
-      else if (!foldDefaults)
-        foldingmeshes::ApplyCompressFoldDefaults(builder, false, minimumFaces > 0);
-      if (k < 0 && minimumFaces > 0)
+        label = foldingmeshes::FoldSearchVariants[k].options;
+      }
+      else if (minimumFaces > 0)
       {
         builder->SetUseMinimumFaces(true);
         builder->SetMinimumFaces(minimumFaces);
+        label = "--min-faces " + std::to_string(minimumFaces);
       }
+      else if (!foldDefaults)
+        label = foldingmeshes::ApplyCompressFoldDefaults(builder, false, false);
+      if (!folded.insert(foldingmeshes::FoldSettingsKey(builder)).second)
+        continue;
       vtkNew<vtkFoldingTreeCompactWriter> writer;
       writer->SetInputConnection(builder->GetOutputPort(0));
       writer->WriteToOutputStringOn();
@@ -246,7 +251,7 @@ int main(int argc, char* argv[])
       {
         bytes = candidate;
         q = writer->GetQuantizationBitsUsed();
-        chosen = k >= 0 ? foldingmeshes::FoldSearchVariants[k].options : first;
+        chosen = label;
       }
     }
     const double compressSeconds = Since(start);

@@ -19,8 +19,9 @@
 #     decompress refuses a .vtm and a 3-byte file (exit 2);
 # 4f'. compress folds with its own --min-faces 400 unless given (JSON foldOptions names what
 #     it added: none with --min-faces given), and that file is smaller than the one folded
-#     with the fold command's defaults (the dino: 3,574 against 4,015 bytes); compress --search tries six fold settings and keeps the smallest
-#     file (no larger than compress's own), which decompresses within the root epsilon;
+#     with the fold command's defaults (the dino: 3,574 against 4,015 bytes); compress
+#     --search tries six fold settings and keeps the smallest file (no larger than
+#     compress's own), which decompresses within the root epsilon;
 # 4g. roundtrip measures its distances through vtkStaticCellLocator by default (JSON
 #     distanceLocator "static"); --distance-locator facetree gives the same Hausdorff values;
 #     another value, and the option on fold, exit 1 and name it;
