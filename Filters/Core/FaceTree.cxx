@@ -134,7 +134,11 @@ bool FaceTree::Beyond(const Vec3& p, int k, double best2) const
   {
     if (d2 <= r * r)
       return false;
-    const double gap = std::sqrt(d2) - r; // <= the distance to the triangle
+    // <= the distance to the triangle; less the rounding of the subtraction (about 1e-16
+    // (|pc| + r)), without which a best distance within rounding of zero could prune a
+    // sliver the search must still reach (the answer would depend on the hint face).
+    const double d = std::sqrt(d2);
+    const double gap = d - r - 1e-12 * (d + r);
     return gap > 0.0 && gap * gap > limit;
   }
   // |p - x|^2 = h^2 + |q - x|^2 for x on the plane (q: the foot of p), |q - x| >= rho - r.
@@ -354,10 +358,8 @@ FaceTree::Hit FaceTree::ClosestCompatibleFaceAmong(const Vec3& p,
   const double sinL = std::sqrt((1.0 - cosL) * (1.0 + cosL)); // accurate for cosL near 1
   double best2 = maxDistance * maxDistance;
   // A compatible hint bounds the search from the start; the minimum (lowest id on ties) is
-  // the same with or without it - but where the best distance is within rounding of zero,
-  // Beyond's sliver test (no slack of its own) can prune a sliver face the search without
-  // the hint would have reached (found by review, 2026-12-05: distances near 1e-16 of the
-  // mesh's size; left as it is, see docs/limitations.md).
+  // the same with or without it (Beyond's bounds hold with a slack above their rounding, also
+  // at best distances within rounding of zero; TestFaceTree's sliver case).
   if (hintFace >= 0 && hintFace < Mesh.NumberOfFaces() && this->OrderIndex[hintFace] >= 0)
     this->TryFace(p, normal, cosLimit, sinL, this->OrderIndex[hintFace], best2, hit, excluded);
   this->Traverse(

@@ -43,8 +43,7 @@ public:
    * normal interpolated (barycentrically, from the vertex normals) at the face's closest
    * point makes a cosine >= cosLimit with `normal`. Only faces closer than maxDistance
    * count; none gives face -1 and an infinite distance. `hintFace` (e.g. the answer of a
-   * previous query for a nearby point) only speeds the search up: the result is the same
-   * (but for distances within rounding of zero near sliver faces, see the .cxx).
+   * previous query for a nearby point) only speeds the search up: the result is the same.
    * With `excludedFaces` (per face id, nonzero: left out) the answer is the one for the mesh
    * without those faces - e.g. a region that lost a few faces, queried without a new tree.
    */

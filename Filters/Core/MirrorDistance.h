@@ -87,10 +87,9 @@ public:
    */
   void SetFastPath(const ClosestFaceQuery* plain) { this->FastPath = plain; }
 
-  /// Forgets this object's own search hints (LastFace), as a new object starts: the answers
-  /// at distances within rounding of zero on sliver faces can depend on the hint (see
-  /// FaceTree::ClosestCompatibleFace), so an object handed on (ShrinkingSubsetDistances::Adopt)
-  /// is reset to give exactly what a new one gives.
+  /// Forgets this object's own search hints (LastFace), as a new object starts: an object
+  /// handed on (ShrinkingSubsetDistances::Adopt) is then in a new one's state, not only in
+  /// its results (hints never change an answer, FaceTree::ClosestCompatibleFace).
   void ResetHints() const { this->LastFace.assign(this->LastFace.size(), -1); }
 
 private:
@@ -103,10 +102,9 @@ private:
   const PreparedMesh& Target; ///< the surface measured against (Faces.Surface())
   double CosLimit;
   std::vector<char> VertexUsed;
-  /// Last closest compatible face (of Target) per vertex: a search hint (each vertex is
-  /// written by the one thread that handles it; results do not depend on it but within
-  /// rounding of zero distance on sliver faces, see ResetHints), unless the caller passes its
-  /// own.
+  /// Last closest compatible face (of Target) per vertex: a search hint only (each vertex is
+  /// written by the one thread that handles it; results never depend on it), unless the
+  /// caller passes its own.
   mutable std::vector<int> LastFace;
   const ClosestFaceQuery* FastPath = nullptr;
 };
