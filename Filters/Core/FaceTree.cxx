@@ -359,7 +359,7 @@ FaceTree::Hit FaceTree::ClosestCompatibleFaceAmong(const Vec3& p,
   double best2 = maxDistance * maxDistance;
   // A compatible hint bounds the search from the start; the minimum (lowest id on ties) is
   // the same with or without it (Beyond's bounds hold with a slack above their rounding, also
-  // at best distances within rounding of zero; TestFaceTree's sliver case).
+  // at best distances within rounding of zero; TestFaceTreeHints).
   if (hintFace >= 0 && hintFace < Mesh.NumberOfFaces() && this->OrderIndex[hintFace] >= 0)
     this->TryFace(p, normal, cosLimit, sinL, this->OrderIndex[hintFace], best2, hit, excluded);
   this->Traverse(
