@@ -95,6 +95,7 @@ private:
   static bool PrepareSubset(const WorkMesh& w,
     const PreparedMesh& pm,
     const std::vector<char>& S,
+    const FaceEdgeUses& edgeUses,
     PreparedMesh& spm);
 
   /**
@@ -103,14 +104,15 @@ private:
    * closest compatible points of S itself. Detection weighs vertices near the remaining
    * faces down and can stop a fraction of a degree off; on the trimmed S there are no
    * outliers. The plane with the lowest area-weighted residual is returned (the input plane
-   * unless a step improves it). With `prepared`, S as prepared here and its mirror-distance
-   * queries are handed on (for Trim on the same S).
+   * unless a step improves it). `edgeUses`: pm's (ComputeFaceEdgeUses). With `prepared`, S
+   * as prepared here and its mirror-distance queries are handed on (for Trim on the same S).
    */
   Plane Polish(const WorkMesh& w,
     const PreparedMesh& pm,
     const std::vector<char>& S,
     const Plane& plane,
     double eps,
+    const FaceEdgeUses& edgeUses,
     PreparedSubsetQueries* prepared = nullptr) const;
 
   /**
@@ -127,8 +129,9 @@ private:
    * change of S could tip a near tie; the fold keeps this side) - or 0 without errorBudget.
    * wholeParts: what is left of S is its largest connected region and its whole parts
    * (LargestRegionAndWholeParts), else its largest connected region.
-   * `prepared`: S prepared elsewhere with its queries (Polish's), used where it is what the
-   * first iteration prepares (ShrinkingSubsetDistances::Adopt).
+   * `edgeUses`: pm's (ComputeFaceEdgeUses). `prepared`: S prepared elsewhere with its
+   * queries (Polish's), used where it is what the first iteration prepares
+   * (ShrinkingSubsetDistances::Adopt).
    */
   std::vector<char> Trim(const WorkMesh& w,
     const PreparedMesh& pm,
@@ -138,6 +141,7 @@ private:
     double eps,
     bool wholeParts,
     int& provenSide,
+    const FaceEdgeUses& edgeUses,
     PreparedSubsetQueries prepared = {}) const;
 
   /// Detection's plane and its runners-up tried by ChooseSymmetricRegion.

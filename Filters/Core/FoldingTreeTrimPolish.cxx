@@ -38,11 +38,12 @@ constexpr double WholePartsBelowShare = 0.75;
 bool Builder::PrepareSubset(const WorkMesh& /*w*/,
   const PreparedMesh& pm,
   const std::vector<char>& S,
+  const FaceEdgeUses& edgeUses,
   PreparedMesh& spm)
 {
   // w's points and (oriented) triangles are pm's: pm welded nothing (see Build).
   // The region's vertex normals (not the sub-mesh's), as detection used them.
-  return PrepareFaceSubset(pm, S, spm);
+  return PrepareFaceSubset(pm, S, spm, edgeUses);
 }
 
 Plane Builder::Polish(const WorkMesh& w,
@@ -50,10 +51,11 @@ Plane Builder::Polish(const WorkMesh& w,
   const std::vector<char>& S,
   const Plane& plane,
   double eps,
+  const FaceEdgeUses& edgeUses,
   PreparedSubsetQueries* prepared) const
 {
   auto subset = std::make_unique<PreparedMesh>();
-  if (!PrepareSubset(w, pm, S, *subset))
+  if (!PrepareSubset(w, pm, S, edgeUses, *subset))
     return plane;
   const PreparedMesh& spm = *subset;
   auto queries = std::make_unique<MirrorDistance>(spm, this->Options.symmetry.compatibilityAngle);
@@ -107,16 +109,19 @@ std::vector<char> Builder::TrimAndPolish(const WorkMesh& w,
     return S;
   // Trimming keeps the faces whose mirrored vertices are within eps of S - or within the
   // error budget left there, if less (errorBudget).
+  // The region's edge uses, for every subset prepared below.
+  const FaceEdgeUses edgeUses = ComputeFaceEdgeUses(pm);
   if (this->Options.trimToMirrorConsistent)
-    S = this->Trim(w, pm, region, S, plane, eps, wholeParts, provenSide);
+    S = this->Trim(w, pm, region, S, plane, eps, wholeParts, provenSide, edgeUses);
   if (this->Options.polishPlane)
   {
     // S prepared and its face tree, made by Polish, start the second trim.
     PreparedSubsetQueries prepared;
-    plane = this->Polish(w, pm, S, plane, eps, &prepared);
+    plane = this->Polish(w, pm, S, plane, eps, edgeUses, &prepared);
     provenSide = 0; // the proof was for the plane before polishing
     if (this->Options.trimToMirrorConsistent)
-      S = this->Trim(w, pm, region, S, plane, eps, wholeParts, provenSide, std::move(prepared));
+      S = this->Trim(
+        w, pm, region, S, plane, eps, wholeParts, provenSide, edgeUses, std::move(prepared));
   }
   return S;
 }
@@ -276,13 +281,15 @@ std::vector<char> Builder::Trim(const WorkMesh& w,
   double eps,
   bool wholeParts,
   int& provenSide,
+  const FaceEdgeUses& edgeUses,
   PreparedSubsetQueries prepared) const
 {
   provenSide = 0;
   // One plane while S only shrinks: the iterations after the first update what changed
   // (distances, budget partners) instead of starting over - bit for bit the same results (see
   // the classes).
-  ShrinkingSubsetDistances distances(pm, plane, this->Options.symmetry.compatibilityAngle, eps);
+  ShrinkingSubsetDistances distances(
+    pm, plane, this->Options.symmetry.compatibilityAngle, eps, &edgeUses);
   distances.Adopt(std::move(prepared));
   ShrinkingMirrorBudget budget(
     w.points, w.budget, plane, eps, std::max(eps, 1e-12 * this->Tree.diagonal));

@@ -36,11 +36,13 @@ bool SameQueryInput(const PreparedMesh& a, const PreparedMesh& b)
 ShrinkingSubsetDistances::ShrinkingSubsetDistances(const PreparedMesh& mesh,
   const Plane& plane,
   double compatibilityAngleDegrees,
-  double maxDistance)
+  double maxDistance,
+  const FaceEdgeUses* edgeUses)
   : Mesh(mesh)
   , Mirror(plane)
   , CompatibilityAngle(compatibilityAngleDegrees)
   , MaxDistance(maxDistance)
+  , EdgeUses(edgeUses)
 {
 }
 
@@ -49,7 +51,10 @@ ShrinkingSubsetDistances::~ShrinkingSubsetDistances() = default;
 bool ShrinkingSubsetDistances::Update(const std::vector<char>& S)
 {
   if (!this->EdgeUses)
-    this->EdgeUses.reset(new FaceEdgeUses(ComputeFaceEdgeUses(this->Mesh)));
+  {
+    this->OwnEdgeUses.reset(new FaceEdgeUses(ComputeFaceEdgeUses(this->Mesh)));
+    this->EdgeUses = this->OwnEdgeUses.get();
+  }
   if (!PrepareFaceSubset(this->Mesh, S, this->Current, *this->EdgeUses))
     return false;
   // The mesh ids of the subset's faces and points, both in increasing order (as

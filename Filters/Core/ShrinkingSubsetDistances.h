@@ -41,10 +41,13 @@ struct PreparedSubsetQueries
 class ShrinkingSubsetDistances
 {
 public:
+  /// `edgeUses`: the mesh's (ComputeFaceEdgeUses), the caller's and outliving this object;
+  /// null: made by the first Update.
   ShrinkingSubsetDistances(const PreparedMesh& mesh,
     const Plane& plane,
     double compatibilityAngleDegrees,
-    double maxDistance);
+    double maxDistance,
+    const FaceEdgeUses* edgeUses = nullptr);
   ~ShrinkingSubsetDistances();
 
   /// Prepares S (faces of the mesh; within the previous S, else it starts over) and the
@@ -85,8 +88,10 @@ private:
   const double CompatibilityAngle;
   const double MaxDistance;
 
-  /// The mesh's edge uses, made by the first Update (every S is prepared from them).
-  std::unique_ptr<FaceEdgeUses> EdgeUses;
+  /// The mesh's edge uses (every S is prepared from them): the caller's, or OwnEdgeUses made
+  /// by the first Update.
+  const FaceEdgeUses* EdgeUses;
+  std::unique_ptr<FaceEdgeUses> OwnEdgeUses;
   PreparedMesh Current;
   std::vector<int> CurrentPoints; ///< mesh point id of each point of Current
   std::vector<int> CurrentFaces;  ///< mesh face id of each face of Current
