@@ -423,6 +423,14 @@ using treebuilder::WorkMesh;
 
 namespace
 {
+bool HasRotationNode(const FoldingTree& tree)
+{
+  for (const FoldingNode& node : tree.nodes)
+    if (node.kind == FoldingNodeKind::Rotation)
+      return true;
+  return false;
+}
+
 /// Why BuildFoldingTree cannot build from these (empty: it can).
 std::string CheckBuildInput(const TriangleMesh& input,
   const std::vector<Vec3>& inputNormals,
@@ -531,6 +539,7 @@ bool BuildFoldingTree(const TriangleMesh& input,
     // tree miss too, the rounds go on at epsilon with the first tree's pins (firstPins).
     bool nearMissTree = false;
     std::vector<int> firstPins;
+    int firstRound = 0;
     for (int round = 0;; ++round)
     {
       const UnfoldedBoundCheck check =
@@ -556,6 +565,21 @@ bool BuildFoldingTree(const TriangleMesh& input,
         tree = std::move(*proved);
         break;
       }
+      // A first tree with rotation nodes that misses (the bound, or holes where the input is
+      // closed): the planes alone first, at epsilon, no pins (their seams are the ones the
+      // unfolder closes best); should that tree miss too, the rounds below go on from it.
+      if (round == 0 && again.rotationNodes && HasRotationNode(tree))
+      {
+        again.rotationNodes = false;
+        firstRound = 1; // the planes' tree is the first of the rounds below
+        if (check.within)
+          proved.reset(new FoldingTree(tree)); // should the planes' tree miss the bound
+        if (options.trace)
+          options.trace("[verify] the tree with rotation nodes missed: rebuilt with planes alone");
+        build(again, pinned);
+        tree.verificationRounds = round + 1;
+        continue;
+      }
       if (check.within)
       {
         int added = 0;
@@ -568,7 +592,7 @@ bool BuildFoldingTree(const TriangleMesh& input,
         for (int f : check.pinOpen)
           pinned[f] = 1;
       }
-      else if (round == 0 && check.upper > again.epsilon &&
+      else if (round == firstRound && check.upper > again.epsilon &&
         check.upper <= NearMissBoundRatio * again.epsilon)
       {
         again.epsilon *= NearMissEpsilonMargin * again.epsilon / check.upper; // no pins

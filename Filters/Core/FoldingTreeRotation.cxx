@@ -119,7 +119,7 @@ bool Builder::PlanSector(const RotationResult& r,
     if (why && why != NotCoveredOnce && why != NoSector)
     {
       const double start = cut.start;
-      split = SplitAtHalfPlanes(frame, region, start, TwoPi / k, offAxis);
+      split = SplitAtHalfPlanes(frame, region, start, TwoPi / k, offAxis, snap);
       const char* whySplit = CutSector(frame,
         split,
         EdgeFaces(split.triangles),
@@ -166,6 +166,7 @@ bool Builder::PlanSector(const RotationResult& r,
       plan.order = k;
       plan.cutFaces = cutFaces;
       plan.start = cut.start;
+      plan.poleRadius = snap;
       plan.keep = std::move(cut.keep);
       plan.points = std::move(cut.points);
       plan.seam = std::move(cut.seam);
@@ -292,8 +293,12 @@ void Builder::Rotate(int index,
   int folds)
 {
   if (plan.cutFaces) // the same cut as PlanSector's (same points, faces and order)
-    w = SplitAtHalfPlanes(
-      AxisFrame(plan.axis), w, plan.start, TwoPi / plan.order, 1e-9 * this->Tree.diagonal);
+    w = SplitAtHalfPlanes(AxisFrame(plan.axis),
+      w,
+      plan.start,
+      TwoPi / plan.order,
+      1e-9 * this->Tree.diagonal,
+      plan.poleRadius);
   const uint64_t bit = uint64_t(1) << depth;
   std::vector<int> discarded;
   for (int f = 0; f < w.NumberOfFaces(); ++f)

@@ -162,6 +162,136 @@ WorkMesh SplitAtHalfPlane(const AxisFrame& frame, const WorkMesh& w, double angl
   return out;
 }
 
+/**
+ * w with the faces the axis pierces cut at the point where it does, the pieces of the same
+ * orientation and input face: a face whose inside the axis passes through (farther than `tiny`
+ * from each edge) into three triangles about that point, the two faces of an edge it passes
+ * through (an even polygon's diagonal) into two each, sharing the point. Not where a corner
+ * of the face lies within `poleRadius` of the axis: that corner is the face's own pole (the
+ * turns move it by less than twice that; CutSector moves it onto the axis when it is that
+ * close). The new point takes the input id of the nearest corner, the tear and plane flags
+ * every corner has, the smallest budget. SplitAtHalfPlane then cuts the pieces through that
+ * point, so the sector keeps its share of the face and nothing more (without it, a face across
+ * the axis is cut along one half-plane only and kept or dropped whole by its centroid: the
+ * copies overlap or leave a hole).
+ */
+WorkMesh SplitAtAxis(const AxisFrame& frame, const WorkMesh& w, double tiny, double poleRadius)
+{
+  const Vec3& o = frame.Axis.origin;
+  // The points across the axis (the axis at 0).
+  std::vector<Eigen::Vector2d> q(w.points.size());
+  for (int v = 0; v < w.NumberOfPoints(); ++v)
+  {
+    const Vec3 r = w.points[v] - o;
+    q[v] = Eigen::Vector2d(r.dot(frame.U), r.dot(frame.V));
+  }
+  auto cross = [](const Eigen::Vector2d& a, const Eigen::Vector2d& b)
+  { return a.x() * b.y() - a.y() * b.x(); };
+  WorkMesh out = w;
+  out.triangles.clear();
+  out.faceOrig.clear();
+  // A new point on the axis, from the corners `corners` of a face.
+  auto addPole = [&](const Vec3& at, std::initializer_list<int> corners) -> int
+  {
+    int nearest = *corners.begin();
+    uint64_t tear = ~uint64_t(0), onPlane = ~uint64_t(0);
+    double budget = std::numeric_limits<double>::infinity();
+    for (int v : corners)
+    {
+      if ((w.points[v] - at).squaredNorm() < (w.points[nearest] - at).squaredNorm())
+        nearest = v;
+      tear &= w.tear[v];
+      onPlane &= w.onPlane[v];
+      budget = std::min(budget, w.budget[v]);
+    }
+    out.AppendPoint(w, nearest);
+    const int id = out.NumberOfPoints() - 1;
+    out.points[id] = frame.OntoAxis(at);
+    out.tear[id] = tear;
+    out.onPlane[id] = onPlane;
+    out.projected[id] = 0;
+    out.mirrorFlags[id].clear();
+    out.budget[id] = budget;
+    return id;
+  };
+  std::map<std::pair<int, int>, int> edgePole; // an edge the axis passes through -> its point
+  std::vector<int> facePole(w.NumberOfFaces(), -1);
+  for (int f = 0; f < w.NumberOfFaces(); ++f)
+  {
+    const Triangle& t = w.triangles[f];
+    if (q[t[0]].norm() <= poleRadius || q[t[1]].norm() <= poleRadius ||
+      q[t[2]].norm() <= poleRadius)
+      continue;
+    const double whole = cross(q[t[1]] - q[t[0]], q[t[2]] - q[t[0]]);
+    if (whole == 0.0)
+      continue; // along the axis: the axis does not pass through it
+    int inside = 0, onEdge = -1;
+    for (int k = 0; k < 3; ++k)
+    {
+      const Eigen::Vector2d &a = q[t[k]], &b = q[t[(k + 1) % 3]];
+      // Twice the area of (a, b, 0), signed like the face: its distance from the edge times
+      // the edge's length.
+      const double part = cross(a, b) * (whole > 0.0 ? 1.0 : -1.0);
+      if (part > tiny * (b - a).norm())
+        ++inside;
+      else if (part >= -tiny * (b - a).norm())
+        onEdge = k;
+    }
+    if (inside == 3)
+    {
+      const Vec3 &a = w.points[t[0]], &b = w.points[t[1]], &c = w.points[t[2]];
+      const Vec3 n = (b - a).cross(c - a);
+      const Vec3& d = frame.Axis.direction;
+      facePole[f] = addPole(o + (n.dot(a - o) / n.dot(d)) * d, { t[0], t[1], t[2] });
+    }
+    else if (inside == 2 && onEdge >= 0)
+    {
+      const int a = t[onEdge], b = t[(onEdge + 1) % 3];
+      const auto key = std::make_pair(std::min(a, b), std::max(a, b));
+      if (edgePole.count(key))
+        continue;
+      const Eigen::Vector2d ab = q[b] - q[a];
+      const double u = std::min(1.0, std::max(0.0, -q[a].dot(ab) / ab.squaredNorm()));
+      edgePole.emplace(key, addPole(w.points[a] + u * (w.points[b] - w.points[a]), { a, b }));
+    }
+  }
+  for (int f = 0; f < w.NumberOfFaces(); ++f)
+  {
+    const Triangle& t = w.triangles[f];
+    auto keep = [&](const Triangle& piece)
+    {
+      out.triangles.push_back(piece);
+      out.faceOrig.push_back(w.faceOrig[f]);
+    };
+    if (facePole[f] >= 0)
+    {
+      for (int k = 0; k < 3; ++k)
+        keep({ t[k], t[(k + 1) % 3], facePole[f] });
+      continue;
+    }
+    int split = -1, pole = -1;
+    for (int k = 0; k < 3 && split < 0; ++k)
+    {
+      const auto key =
+        std::make_pair(std::min(t[k], t[(k + 1) % 3]), std::max(t[k], t[(k + 1) % 3]));
+      const auto found = edgePole.find(key);
+      if (found != edgePole.end())
+      {
+        split = k;
+        pole = found->second;
+      }
+    }
+    if (split < 0)
+    {
+      keep(t);
+      continue;
+    }
+    const int a = t[split], b = t[(split + 1) % 3], c = t[(split + 2) % 3];
+    keep({ a, pole, c });
+    keep({ pole, b, c });
+  }
+  return out;
+}
 }
 
 /// a in [0, m).
@@ -175,14 +305,17 @@ const char* const NotCoveredOnce = "k sectors do not cover the area once";
 const char* const NoSector = "no face or every face in the sector";
 const char* const TooManyPieces = "k sectors would hold more than twice the region's faces";
 
-/// SplitAtHalfPlane at both half-planes of the sector [start, start + width).
+/// SplitAtHalfPlane at both half-planes of the sector [start, start + width), after
+/// SplitAtAxis (a face the axis pierces would otherwise be cut along one half-plane only).
 WorkMesh SplitAtHalfPlanes(const AxisFrame& frame,
   const WorkMesh& w,
   double start,
   double width,
-  double tiny)
+  double tiny,
+  double poleRadius)
 {
-  return SplitAtHalfPlane(frame, SplitAtHalfPlane(frame, w, start, tiny), start + width, tiny);
+  const WorkMesh poles = SplitAtAxis(frame, w, tiny, poleRadius);
+  return SplitAtHalfPlane(frame, SplitAtHalfPlane(frame, poles, start, tiny), start + width, tiny);
 }
 
 /// Why order k has no sector here (nullptr: it has, in `cut`).
@@ -385,25 +518,36 @@ bool ChargeTurns(const AxisFrame& frame,
       sector.triangles.push_back(w.triangles[f]);
   const SurfaceDistanceQuery toSector(sector);
   std::vector<Vec3> back;
+  std::vector<int> removedPoints;
   for (int v = 0; v < np; ++v)
     if (!used[v])
     {
       const double angle = Modulo(frame.Angle(w.points[v]) - cut.start, TwoPi);
       const int j = std::min(k - 1, static_cast<int>(angle / width));
       back.push_back(AxisTurn(frame.Axis, -j * width).Point(w.points[v]));
+      removedPoints.push_back(v);
     }
-  double removed = 0.0;
-  for (double d : toSector.Distances(back))
-    removed = std::max(removed, d);
-  worst = std::max(worst, removed);
-  if (removed > limit)
-    return false;
-  for (int v : keptPoints)
+  // A removed point is reproduced by the copy of the sector face closest to it turned back:
+  // its distance is charged to that face's corners, within their budgets and its own (as a
+  // fold charges a discarded point to the kept point nearest its mirror image).
+  std::vector<double> distance;
+  std::vector<int> closest;
+  toSector.Closest(back, distance, closest);
+  std::vector<double> limitOf(np, limit);
+  for (size_t i = 0; i < back.size(); ++i)
   {
-    charge[v] = std::max(charge[v], removed);
-    if (charge[v] > limit || charge[v] > w.budget[v])
+    worst = std::max(worst, distance[i]);
+    if (!(distance[i] <= limit) || closest[i] < 0)
       return false;
+    for (int v : sector.triangles[closest[i]])
+    {
+      charge[v] = std::max(charge[v], distance[i]);
+      limitOf[v] = std::min(limitOf[v], w.budget[removedPoints[i]]);
+    }
   }
+  for (int v : keptPoints)
+    if (charge[v] > limitOf[v] || charge[v] > w.budget[v])
+      return false;
   return true;
 }
 

@@ -73,12 +73,16 @@ extern const char* const NoSector;
 /// a in [0, m).
 double Modulo(double a, double m);
 
-/// SplitAtHalfPlane at both half-planes of the sector [start, start + width).
+/// The faces of w cut along both half-planes of the sector [start, start + width), after
+/// the faces the axis pierces are cut at the axis (unless a corner lies within `poleRadius`
+/// of it); the pieces keep their input face. `tiny`: crossings this close to an end or an
+/// edge use it.
 WorkMesh SplitAtHalfPlanes(const AxisFrame& frame,
   const WorkMesh& w,
   double start,
   double width,
-  double tiny);
+  double tiny,
+  double poleRadius);
 
 /// Why order k has no sector here (nullptr: it has, in `cut`).
 const char* CutSector(const AxisFrame& frame,

@@ -45,9 +45,13 @@ struct VaseShape
   /// Ring j's vertices start at angle staggered * fraction(0.37 j^2) of a segment (0: every
   /// ring starts at angle 0, so the vertices form columns).
   double staggered = 0.0;
+  /// Caps triangulated as fans from the ring's first vertex (no pole: the axis pierces a cap
+  /// face) instead of fans from a pole on the axis.
+  bool polygonCaps = false;
 };
 
-/// The closed vase along z in [0, 2] with `rings` rings of `segments` vertices and two poles.
+/// The closed vase along z in [0, 2] with `rings` rings of `segments` vertices and two poles
+/// (or, s.polygonCaps, none).
 inline TriangleMesh MakeVase(const VaseShape& s, int segments, int rings)
 {
   TriangleMesh m;
@@ -79,11 +83,18 @@ inline TriangleMesh MakeVase(const VaseShape& s, int segments, int rings)
       m.triangles.push_back({ id(j, i), id(j, i + 1), id(j + 1, i + 1) });
       m.triangles.push_back({ id(j, i), id(j + 1, i + 1), id(j + 1, i) });
     }
-  for (int i = 0; i < segments; ++i)
+  for (int i = 0; i < segments && !s.polygonCaps; ++i)
   {
     m.triangles.push_back({ bottom, id(0, i + 1), id(0, i) });
     m.triangles.push_back({ top, id(rings - 1, i), id(rings - 1, i + 1) });
   }
+  for (int i = 1; i + 1 < segments && s.polygonCaps; ++i)
+  {
+    m.triangles.push_back({ id(0, 0), id(0, i + 1), id(0, i) });
+    m.triangles.push_back({ id(rings - 1, 0), id(rings - 1, i), id(rings - 1, i + 1) });
+  }
+  if (s.polygonCaps) // the poles unused: dropped
+    m.points.resize(bottom);
   return m;
 }
 

@@ -11,6 +11,8 @@
 //   whose sector has whole faces (48), and the sector is folded again below it;
 // - a surface of revolution whose rings each have their own phase (no column of vertices):
 //   the builder cuts the faces along the sector's half-planes; fewer faces than planes alone;
+//   with polygon caps (the axis through a cap's diagonal), never more faces than planes alone
+//   (a tree with rotation nodes that misses is rebuilt with the planes alone);
 // - a vase beside a separate box: the vase is a remaining region of the root's segmentation
 //   and becomes a rotation node of its own;
 // - with rotation nodes off, or on a shape with no rotational symmetry (a lumpy vase), no
@@ -162,23 +164,35 @@ void Revolution()
 
 /// Fine rings (40 vertices): whole faces, seams turned onto the half-planes. Coarse rings (12
 /// vertices): turning the seams would flip faces, so the faces are cut along the half-planes.
+/// With polygon caps (no vertex on the axis: the axis passes through a diagonal of each cap),
+/// the sector of order 3 is cut at the axis too and its tree is proved within epsilon, but the
+/// unfolder leaves a hole of six edges at a cap's centre, where the copies' cap seams meet
+/// the subtree's seams: the builder falls back to the planes alone (TestRotationSector checks
+/// the cut itself); never more faces than the planes alone, and nothing open.
 void Staggered()
 {
-  for (int segments : { 40, 12 })
+  for (int segments : { 40, 12, -12 })
   {
-    const Eigen::Isometry3d motion = Motion(77 + segments);
+    const Eigen::Isometry3d motion = Motion(77 + std::abs(segments));
     VaseShape s; // a surface of revolution whose rings are turned against each other
     s.staggered = 1.0;
+    s.polygonCaps = segments < 0;
+    segments = std::abs(segments);
     const TriangleMesh m = Moved(MakeVase(s, segments, 24), motion);
     char name[64];
-    std::snprintf(name, sizeof(name), "staggered revolution %d", segments);
+    std::snprintf(name,
+      sizeof(name),
+      "staggered revolution %d%s",
+      segments,
+      s.polygonCaps ? " with polygon caps" : "");
     const FoldingTree tree = FoldAndCheck(name, m);
     int first = -1;
     const int rotations = CountRotationNodes(tree, first);
-    EXPECT(rotations == 1 && first == 0,
+    EXPECT(s.polygonCaps || (rotations == 1 && first == 0),
       name << ": " << rotations << " rotation nodes, the first at " << first);
     const FoldingTree planes = coretest::Fold(m, 0.02 * coretest::Diagonal(m));
-    EXPECT(tree.StoredFaces() < planes.StoredFaces(),
+    EXPECT(s.polygonCaps ? tree.StoredFaces() <= planes.StoredFaces()
+                         : tree.StoredFaces() < planes.StoredFaces(),
       name << ": " << tree.StoredFaces() << " faces stored, " << planes.StoredFaces()
            << " with planes alone");
     EXPECT(first < 0 ||

@@ -1,0 +1,162 @@
+// The cut of a rotation node's sector (FoldingTreeRotationSector.h, issue 22) on a cap whose
+// polygon has no vertex on the axis (a fan from one of its corners, as chess pieces and lathe
+// exports have): the axis pierces one of its faces.
+// - SplitAtHalfPlanes cuts that face (or, where the axis passes through an edge, both faces of
+//   the edge) at the axis first, so the pieces whose centroids lie in
+//   the sector [start, start + 360/k) are exactly one k-th of the cap (k times their area is
+//   the cap's within rounding) and lie within the sector; without the cut at the axis the
+//   pierced face is cut along one half-plane only and kept or dropped whole (the first
+//   builder's unfolded queen was 2 epsilon away there);
+// - the point where the axis pierces the face is on the axis, carries the smallest budget of
+//   the face's corners and the flags all three share;
+// - a corner within the pole radius of the axis is the face's own pole: no cut at the axis;
+// - a cap whose faces the axis does not pierce (it has a vertex there) is cut as before.
+//
+//   TestRotationSector
+#include "CoreTestUtilities.h"
+
+#include "FoldingTreeRotationSector.h"
+
+#include <cmath>
+#include <vector>
+
+using namespace foldingmeshes;
+using namespace foldingmeshes::treebuilder;
+using namespace foldingmeshes::treebuilder::sector;
+
+namespace
+{
+const double Pi = 3.14159265358979323846;
+
+/// A regular n-gon of radius 1 in the plane z = h about the z axis, turned by `phase`,
+/// triangulated as a fan from corner 0 (no vertex on the axis), or (pole) from its centre.
+WorkMesh Cap(int n, double phase, bool pole)
+{
+  WorkMesh w;
+  for (int i = 0; i < n; ++i)
+  {
+    const double a = phase + 2.0 * Pi * i / n;
+    w.points.emplace_back(std::cos(a), std::sin(a), 0.5);
+  }
+  if (pole)
+  {
+    w.points.emplace_back(0.0, 0.0, 0.5);
+    for (int i = 0; i < n; ++i)
+      w.triangles.push_back({ n, i, (i + 1) % n });
+  }
+  else
+    for (int i = 1; i + 1 < n; ++i)
+      w.triangles.push_back({ 0, i, i + 1 });
+  const int np = w.NumberOfPoints();
+  w.pointOrig.resize(np);
+  for (int v = 0; v < np; ++v)
+    w.pointOrig[v] = v;
+  for (int f = 0; f < w.NumberOfFaces(); ++f)
+    w.faceOrig.push_back(f);
+  w.tear.assign(np, 0);
+  w.onPlane.assign(np, 0);
+  w.projected.assign(np, 0);
+  w.mirrorFlags.assign(np, {});
+  w.budget.resize(np);
+  for (int v = 0; v < np; ++v)
+    w.budget[v] = 1.0 + 0.01 * v;
+  return w;
+}
+
+double Angle(const Vec3& p)
+{
+  return std::atan2(p.y(), p.x());
+}
+
+/// Cuts the cap for order k from `start`; checks the sector's area and extent.
+void CheckSector(const char* name, const WorkMesh& cap, int k, double start, double poleRadius)
+{
+  RotationAxis axis;
+  axis.origin = Vec3(0.0, 0.0, 0.0);
+  axis.direction = Vec3(0.0, 0.0, 1.0);
+  const AxisFrame frame(axis);
+  const double width = TwoPi / k, tiny = 1e-12;
+  const WorkMesh cut = SplitAtHalfPlanes(frame, cap, start, width, tiny, poleRadius);
+  double whole = 0.0, kept = 0.0;
+  for (const Triangle& t : cap.triangles)
+    whole += TriangleArea(cap, t);
+  double beyond = 0.0; // the farthest a kept piece's corner lies outside the sector (radians)
+  for (const Triangle& t : cut.triangles)
+  {
+    const Vec3 c = (cut.points[t[0]] + cut.points[t[1]] + cut.points[t[2]]) / 3.0;
+    if (!(Modulo(frame.Angle(c) - start, TwoPi) < width))
+      continue;
+    kept += TriangleArea(cut, t);
+    for (int v : t)
+    {
+      if (frame.Radius(cut.points[v]) <= 1e-12)
+        continue; // on the axis: in every sector
+      const double a = Modulo(frame.Angle(cut.points[v]) - start + 0.5 * (TwoPi - width), TwoPi) -
+        0.5 * (TwoPi - width); // 0 .. width inside
+      beyond = std::max({ beyond, -a, a - width });
+    }
+  }
+  EXPECT(std::abs(k * kept - whole) <= 1e-9 * whole,
+    name << ", k = " << k << ", start " << start << ": " << k << " sectors hold " << k * kept
+         << " of the cap's area " << whole);
+  EXPECT(beyond <= 1e-9,
+    name << ", k = " << k << ": a kept piece reaches " << beyond << " radians beyond the sector");
+  EXPECT(cut.faceOrig.size() == cut.triangles.size() && cut.budget.size() == cut.points.size() &&
+      cut.pointOrig.size() == cut.points.size(),
+    name << ": per-face / per-point arrays out of step");
+}
+
+void PierceCut()
+{
+  // k divides n: the polygon has k-fold symmetry. Even n: the axis passes through the
+  // diagonal from corner 0 (an edge of two faces); odd n: through a face's inside.
+  for (int n : { 12, 18, 15, 7 })
+  {
+    const WorkMesh cap = Cap(n, 0.37, false);
+    for (int k = 2; k <= n; ++k)
+      if (n % k == 0)
+        for (double start : { 0.0, 0.25, 1.9, -2.6 })
+          CheckSector("polygon cap", cap, k, start, 1e-6);
+  }
+  const WorkMesh withPole = Cap(12, 0.37, true);
+  for (int k : { 3, 4 })
+    CheckSector("cap with a pole", withPole, k, 0.2, 1e-6);
+}
+
+void PiercePoint()
+{
+  const WorkMesh cap = Cap(9, 0.1, false);
+  RotationAxis axis;
+  axis.origin = Vec3(0.0, 0.0, -3.0);
+  axis.direction = Vec3(0.0, 0.0, 1.0);
+  const AxisFrame frame(axis);
+  WorkMesh flagged = cap;
+  for (int v = 0; v < flagged.NumberOfPoints(); ++v)
+    flagged.tear[v] = v == 0 ? 0x7 : 0x5; // bits 0 and 2 on every corner, bit 1 on corner 0
+  const WorkMesh cut = SplitAtHalfPlanes(frame, flagged, 0.3, TwoPi / 3, 1e-12, 1e-6);
+  int onAxis = 0;
+  for (int v = cap.NumberOfPoints(); v < cut.NumberOfPoints(); ++v)
+    if (frame.Radius(cut.points[v]) <= 1e-12)
+    {
+      ++onAxis;
+      EXPECT(std::abs(cut.points[v].z() - 0.5) <= 1e-12,
+        "the pierce point lies off the cap's plane: z = " << cut.points[v].z());
+      EXPECT(cut.tear[v] == 0x5, "the pierce point's tear bits " << cut.tear[v] << ", not 0x5");
+      EXPECT(cut.budget[v] >= 1.0 && cut.budget[v] <= 1.08,
+        "the pierce point's budget " << cut.budget[v] << " is not one of its face's corners'");
+    }
+  EXPECT(onAxis == 1, onAxis << " new points on the axis, expected 1 (the pierce point)");
+  // A pole radius larger than the cap: every corner counts as a pole, no cut at the axis.
+  const WorkMesh uncut = SplitAtHalfPlanes(frame, cap, 0.3, TwoPi / 3, 1e-12, 2.0);
+  for (int v = cap.NumberOfPoints(); v < uncut.NumberOfPoints(); ++v)
+    EXPECT(frame.Radius(uncut.points[v]) > 1e-9,
+      "a point on the axis though every corner is within the pole radius");
+}
+}
+
+int main()
+{
+  PierceCut();
+  PiercePoint();
+  return coretest::Finish("TestRotationSector");
+}
