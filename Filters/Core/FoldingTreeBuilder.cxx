@@ -578,6 +578,14 @@ bool BuildFoldingTree(const TriangleMesh& input,
           options.trace("[verify] the tree with rotation nodes missed: rebuilt with planes alone");
         build(again, pinned);
         tree.verificationRounds = round + 1;
+        if (check.within &&
+          tree.StoredFaces() - proved->StoredFaces() >
+            std::max(MaximumClosingFaces,
+              static_cast<int>(MaximumClosingShare * static_cast<double>(input.triangles.size()))))
+        {
+          tree = std::move(*proved); // the planes close its holes at too much storage
+          break;
+        }
         continue;
       }
       if (check.within)

@@ -162,6 +162,7 @@ struct FoldingTreeOptions
    * rounds every face is pinned (a single leaf: the input itself, distance 0). The result:
    * FoldingTree::verifiedBound, pinnedFaces, verificationRounds. Costs one unfold and one
    * proof per round (docs/benchmarks.md); the progress callback sees the first build only.
+   * A first tree with rotation nodes that misses is rebuilt with the planes alone first.
    */
   bool verifyBound = true;
   /// The plain closest-face queries of the builder (e.g. a VTK cell locator the user set on
@@ -197,7 +198,10 @@ struct FoldingTreeOptions
    * (FoldingNodeKind::Rotation; its subtree is built with epsilon / 2 and may fold again: a
    * dihedral part becomes rotation + fold). Where a fold passes too, both subtrees are built and
    * the one storing fewer faces kept (ties: the fold). The rule for the order, the sector cut
-   * and the seams: FoldingTreeRotation.cxx. Off by default (docs/benchmarks.md: +38% build time).
+   * and the seams: FoldingTreeRotation.cxx. A tree with rotation nodes that verifyBound finds
+   * beyond epsilon, or with holes where the input is closed, is rebuilt with the planes alone
+   * (docs/builder.md). Off by default (docs/benchmarks.md: the 29 shared meshes' builds take
+   * 70% longer, 16.7 -> 28.5 s, and the Table 1 chair and eagle more than 1 s).
    */
   bool rotationNodes = false;
   int maximumRotationOrder = DefaultMaximumRotationOrder;

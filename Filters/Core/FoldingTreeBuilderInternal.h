@@ -51,8 +51,6 @@ struct RotationPlan
   /// step 3b): Rotate cuts the region it gets the same way; start: the sector's first angle.
   bool cutFaces = false;
   double start = 0.0;
-  /// The cut's pole radius (SplitAtHalfPlanes): the seam snap of the planning's epsilon.
-  double poleRadius = 0.0;
 };
 
 class Builder

@@ -24,7 +24,8 @@
 //    No moved face may flip.
 // 3b. When the whole faces cover the region once but their seams fail step 3 (triangles that
 //    span much of a sector: the bearing's CAD fans, rings spaced unevenly), the faces are cut
-//    along the two half-planes (SplitAtHalfPlanes; the pieces keep their input face) and step
+//    along the two half-planes (SplitAtHalfPlanes; the pieces keep their input face; a face
+//    the axis passes through is first cut at the axis, SplitAtAxis) and step
 //    3 is tried on the cut region, whose seams lie on the half-planes, as long as k such
 //    sectors hold at most twice the region's faces (the pieces multiply with k).
 //    The first order with a sector is the candidate (surfaces of revolution: the largest k
@@ -34,11 +35,12 @@
 //    epsilon of the region (turned kept points measured against the region, removed points
 //    against the sector), and so must the centroids and edge midpoints of the kept faces whose
 //    seam vertices moved; each kept point is charged the largest distance of its own turns and
-//    faces, and the largest distance of a removed point, from its error budget (which must
-//    cover it). A turn is an isometry: the k copies do not compound like nested folds, so the
-//    subtree gets epsilon / 2, like a fold's half (and what its budgets hold), for any k; the
-//    builder's verification (verifyBound) proves the whole. Up to MaximumCheckedOrders orders
-//    get this check; each stops at the first turn beyond the limit.
+//    faces, and each corner of the sector face nearest a removed point turned back that
+//    point's distance, from its error budget (which must cover it). A turn is an isometry: the k
+//    copies do not compound like nested folds, so the subtree gets epsilon / 2, like a fold's half
+//    (and what its budgets hold), for any k; the builder's verification (verifyBound) proves the
+//    whole. Up to MaximumCheckedOrders orders get this check; each stops at the first turn beyond
+//    the limit.
 // Seam vertices carry the tear bit of the rotation node's depth; the unfolder stitches the
 // copies' seams like segmentation seams (Unfolder::Turn).
 #include "FoldingTreeBuilderInternal.h"
@@ -119,7 +121,7 @@ bool Builder::PlanSector(const RotationResult& r,
     if (why && why != NotCoveredOnce && why != NoSector)
     {
       const double start = cut.start;
-      split = SplitAtHalfPlanes(frame, region, start, TwoPi / k, offAxis, snap);
+      split = SplitAtHalfPlanes(frame, region, start, TwoPi / k, offAxis);
       const char* whySplit = CutSector(frame,
         split,
         EdgeFaces(split.triangles),
@@ -166,7 +168,6 @@ bool Builder::PlanSector(const RotationResult& r,
       plan.order = k;
       plan.cutFaces = cutFaces;
       plan.start = cut.start;
-      plan.poleRadius = snap;
       plan.keep = std::move(cut.keep);
       plan.points = std::move(cut.points);
       plan.seam = std::move(cut.seam);
@@ -293,12 +294,8 @@ void Builder::Rotate(int index,
   int folds)
 {
   if (plan.cutFaces) // the same cut as PlanSector's (same points, faces and order)
-    w = SplitAtHalfPlanes(AxisFrame(plan.axis),
-      w,
-      plan.start,
-      TwoPi / plan.order,
-      1e-9 * this->Tree.diagonal,
-      plan.poleRadius);
+    w = SplitAtHalfPlanes(
+      AxisFrame(plan.axis), w, plan.start, TwoPi / plan.order, 1e-9 * this->Tree.diagonal);
   const uint64_t bit = uint64_t(1) << depth;
   std::vector<int> discarded;
   for (int f = 0; f < w.NumberOfFaces(); ++f)

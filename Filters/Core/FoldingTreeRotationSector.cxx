@@ -162,21 +162,26 @@ WorkMesh SplitAtHalfPlane(const AxisFrame& frame, const WorkMesh& w, double angl
   return out;
 }
 
+}
+
 /**
  * w with the faces the axis pierces cut at the point where it does, the pieces of the same
  * orientation and input face: a face whose inside the axis passes through (farther than `tiny`
  * from each edge) into three triangles about that point, the two faces of an edge it passes
  * through (an even polygon's diagonal) into two each, sharing the point. Not where a corner
- * of the face lies within `poleRadius` of the axis: that corner is the face's own pole (the
- * turns move it by less than twice that; CutSector moves it onto the axis when it is that
- * close). The new point takes the input id of the nearest corner, the tear and plane flags
- * every corner has, the smallest budget. SplitAtHalfPlane then cuts the pieces through that
- * point, so the sector keeps its share of the face and nothing more (without it, a face across
- * the axis is cut along one half-plane only and kept or dropped whole by its centroid: the
- * copies overlap or leave a hole).
+ * of the face lies within OnAxisOfOffAxis * tiny of the axis (1e-6 of the diagonal from the
+ * builder): that corner is the face's own pole, which CutSector moves onto the axis; nor a
+ * face the axis would enter through two of its edges (one along the axis, or a needle
+ * thinner than tiny): its edges keep their faces whole rather than split one face twice and
+ * its neighbours once (a crack). The new point takes the input id of the nearest corner, the tear
+ * and plane flags every corner has, the smallest budget. SplitAtHalfPlane then cuts the pieces
+ * through that point, so the sector keeps its share of the face and nothing more (without it, a
+ * face across the axis is cut along one half-plane only and kept or dropped whole by its centroid:
+ * the copies overlap or leave a hole).
  */
-WorkMesh SplitAtAxis(const AxisFrame& frame, const WorkMesh& w, double tiny, double poleRadius)
+WorkMesh SplitAtAxis(const AxisFrame& frame, const WorkMesh& w, double tiny)
 {
+  const double poleRadius = OnAxisOfOffAxis * tiny; // CutSector's poles
   const Vec3& o = frame.Axis.origin;
   // The points across the axis (the axis at 0).
   std::vector<Eigen::Vector2d> q(w.points.size());
@@ -214,8 +219,12 @@ WorkMesh SplitAtAxis(const AxisFrame& frame, const WorkMesh& w, double tiny, dou
     out.budget[id] = budget;
     return id;
   };
-  std::map<std::pair<int, int>, int> edgePole; // an edge the axis passes through -> its point
-  std::vector<int> facePole(w.NumberOfFaces(), -1);
+  // The faces the axis passes through inside (their pierce point) and the edges it passes
+  // through (where along the edge, from its lower id).
+  std::vector<Vec3> facePierce(w.NumberOfFaces());
+  std::vector<char> pierced(w.NumberOfFaces(), 0);
+  std::map<std::pair<int, int>, double> edgeAt;
+  auto edgeKey = [](int a, int b) { return std::make_pair(std::min(a, b), std::max(a, b)); };
   for (int f = 0; f < w.NumberOfFaces(); ++f)
   {
     const Triangle& t = w.triangles[f];
@@ -224,7 +233,7 @@ WorkMesh SplitAtAxis(const AxisFrame& frame, const WorkMesh& w, double tiny, dou
       continue;
     const double whole = cross(q[t[1]] - q[t[0]], q[t[2]] - q[t[0]]);
     if (whole == 0.0)
-      continue; // along the axis: the axis does not pass through it
+      continue; // its plane holds the axis direction: no point of the axis inside it
     int inside = 0, onEdge = -1;
     for (int k = 0; k < 3; ++k)
     {
@@ -235,25 +244,50 @@ WorkMesh SplitAtAxis(const AxisFrame& frame, const WorkMesh& w, double tiny, dou
       if (part > tiny * (b - a).norm())
         ++inside;
       else if (part >= -tiny * (b - a).norm())
-        onEdge = k;
+        onEdge = onEdge < 0 ? k : 3; // 3: more than one edge
     }
     if (inside == 3)
     {
       const Vec3 &a = w.points[t[0]], &b = w.points[t[1]], &c = w.points[t[2]];
       const Vec3 n = (b - a).cross(c - a);
       const Vec3& d = frame.Axis.direction;
-      facePole[f] = addPole(o + (n.dot(a - o) / n.dot(d)) * d, { t[0], t[1], t[2] });
+      facePierce[f] = o + (n.dot(a - o) / n.dot(d)) * d;
+      pierced[f] = 1;
     }
-    else if (inside == 2 && onEdge >= 0)
+    else if (inside == 2 && onEdge >= 0 && onEdge < 3)
     {
       const int a = t[onEdge], b = t[(onEdge + 1) % 3];
-      const auto key = std::make_pair(std::min(a, b), std::max(a, b));
-      if (edgePole.count(key))
-        continue;
       const Eigen::Vector2d ab = q[b] - q[a];
       const double u = std::min(1.0, std::max(0.0, -q[a].dot(ab) / ab.squaredNorm()));
-      edgePole.emplace(key, addPole(w.points[a] + u * (w.points[b] - w.points[a]), { a, b }));
+      edgeAt.emplace(edgeKey(a, b), a < b ? u : 1.0 - u);
     }
+  }
+  // A face with two such edges keeps all its edges whole (and so do their other faces).
+  std::vector<std::pair<int, int>> crowded;
+  for (const Triangle& t : w.triangles)
+  {
+    int edges = 0;
+    for (int k = 0; k < 3; ++k)
+      edges += static_cast<int>(edgeAt.count(edgeKey(t[k], t[(k + 1) % 3])));
+    for (int k = 0; k < 3 && edges > 1; ++k)
+      crowded.push_back(edgeKey(t[k], t[(k + 1) % 3]));
+  }
+  for (const auto& e : crowded)
+    edgeAt.erase(e);
+  // The new points: the faces' in face order, then the edges' in edge order.
+  std::vector<int> facePole(w.NumberOfFaces(), -1);
+  for (int f = 0; f < w.NumberOfFaces(); ++f)
+    if (pierced[f])
+    {
+      const Triangle& t = w.triangles[f];
+      facePole[f] = addPole(facePierce[f], { t[0], t[1], t[2] });
+    }
+  std::map<std::pair<int, int>, int> edgePole;
+  for (const auto& e : edgeAt)
+  {
+    const int a = e.first.first, b = e.first.second;
+    edgePole.emplace(
+      e.first, addPole(w.points[a] + e.second * (w.points[b] - w.points[a]), { a, b }));
   }
   for (int f = 0; f < w.NumberOfFaces(); ++f)
   {
@@ -292,7 +326,6 @@ WorkMesh SplitAtAxis(const AxisFrame& frame, const WorkMesh& w, double tiny, dou
   }
   return out;
 }
-}
 
 /// a in [0, m).
 double Modulo(double a, double m)
@@ -311,10 +344,9 @@ WorkMesh SplitAtHalfPlanes(const AxisFrame& frame,
   const WorkMesh& w,
   double start,
   double width,
-  double tiny,
-  double poleRadius)
+  double tiny)
 {
-  const WorkMesh poles = SplitAtAxis(frame, w, tiny, poleRadius);
+  const WorkMesh poles = SplitAtAxis(frame, w, tiny);
   return SplitAtHalfPlane(frame, SplitAtHalfPlane(frame, poles, start, tiny), start + width, tiny);
 }
 
@@ -528,25 +560,22 @@ bool ChargeTurns(const AxisFrame& frame,
       removedPoints.push_back(v);
     }
   // A removed point is reproduced by the copy of the sector face closest to it turned back:
-  // its distance is charged to that face's corners, within their budgets and its own (as a
-  // fold charges a discarded point to the kept point nearest its mirror image).
+  // its distance is charged to that face's corners (as a fold charges a discarded point to
+  // the kept point nearest its mirror image; a rotation node has no fold or rotation above
+  // it, so every budget there is still the node's epsilon, the removed points' too).
   std::vector<double> distance;
   std::vector<int> closest;
   toSector.Closest(back, distance, closest);
-  std::vector<double> limitOf(np, limit);
   for (size_t i = 0; i < back.size(); ++i)
   {
     worst = std::max(worst, distance[i]);
     if (!(distance[i] <= limit) || closest[i] < 0)
       return false;
     for (int v : sector.triangles[closest[i]])
-    {
       charge[v] = std::max(charge[v], distance[i]);
-      limitOf[v] = std::min(limitOf[v], w.budget[removedPoints[i]]);
-    }
   }
   for (int v : keptPoints)
-    if (charge[v] > limitOf[v] || charge[v] > w.budget[v])
+    if (charge[v] > limit || charge[v] > w.budget[v])
       return false;
   return true;
 }

@@ -73,16 +73,18 @@ extern const char* const NoSector;
 /// a in [0, m).
 double Modulo(double a, double m);
 
+/// The faces of w that the axis passes through cut at the point where it does (see the
+/// definition: a face's inside, or an edge and its two faces; not next to a pole).
+WorkMesh SplitAtAxis(const AxisFrame& frame, const WorkMesh& w, double tiny);
+
 /// The faces of w cut along both half-planes of the sector [start, start + width), after
-/// the faces the axis pierces are cut at the axis (unless a corner lies within `poleRadius`
-/// of it); the pieces keep their input face. `tiny`: crossings this close to an end or an
-/// edge use it.
+/// the faces the axis passes through are cut at the axis (SplitAtAxis); the pieces keep their
+/// input face. `tiny`: crossings this close to an end or an edge use it.
 WorkMesh SplitAtHalfPlanes(const AxisFrame& frame,
   const WorkMesh& w,
   double start,
   double width,
-  double tiny,
-  double poleRadius);
+  double tiny);
 
 /// Why order k has no sector here (nullptr: it has, in `cut`).
 const char* CutSector(const AxisFrame& frame,

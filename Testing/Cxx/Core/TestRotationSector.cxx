@@ -9,7 +9,9 @@
 //   builder's unfolded queen was 2 epsilon away there);
 // - the point where the axis pierces the face is on the axis, carries the smallest budget of
 //   the face's corners and the flags all three share;
-// - a corner within the pole radius of the axis is the face's own pole: no cut at the axis;
+// - a corner within the pole radius of the axis (1000 tiny) is the face's own pole: no cut
+//   at the axis; a pole 1e-3 off the axis is not, and its cap's share stays exact;
+// - no piece flips; every per-point and per-face array stays in step;
 // - a cap whose faces the axis does not pierce (it has a vertex there) is cut as before.
 //
 //   TestRotationSector
@@ -69,20 +71,23 @@ double Angle(const Vec3& p)
 }
 
 /// Cuts the cap for order k from `start`; checks the sector's area and extent.
-void CheckSector(const char* name, const WorkMesh& cap, int k, double start, double poleRadius)
+void CheckSector(const char* name, const WorkMesh& cap, int k, double start)
 {
   RotationAxis axis;
   axis.origin = Vec3(0.0, 0.0, 0.0);
   axis.direction = Vec3(0.0, 0.0, 1.0);
   const AxisFrame frame(axis);
   const double width = TwoPi / k, tiny = 1e-12;
-  const WorkMesh cut = SplitAtHalfPlanes(frame, cap, start, width, tiny, poleRadius);
+  const WorkMesh cut = SplitAtHalfPlanes(frame, cap, start, width, tiny);
   double whole = 0.0, kept = 0.0;
   for (const Triangle& t : cap.triangles)
     whole += TriangleArea(cap, t);
   double beyond = 0.0; // the farthest a kept piece's corner lies outside the sector (radians)
+  int flipped = 0;     // pieces turned against the cap (every cap face faces +z)
   for (const Triangle& t : cut.triangles)
   {
+    const Vec3 n = (cut.points[t[1]] - cut.points[t[0]]).cross(cut.points[t[2]] - cut.points[t[0]]);
+    flipped += !(n.z() > 0.0);
     const Vec3 c = (cut.points[t[0]] + cut.points[t[1]] + cut.points[t[2]]) / 3.0;
     if (!(Modulo(frame.Angle(c) - start, TwoPi) < width))
       continue;
@@ -101,8 +106,11 @@ void CheckSector(const char* name, const WorkMesh& cap, int k, double start, dou
          << " of the cap's area " << whole);
   EXPECT(beyond <= 1e-9,
     name << ", k = " << k << ": a kept piece reaches " << beyond << " radians beyond the sector");
-  EXPECT(cut.faceOrig.size() == cut.triangles.size() && cut.budget.size() == cut.points.size() &&
-      cut.pointOrig.size() == cut.points.size(),
+  EXPECT(flipped == 0, name << ", k = " << k << ": " << flipped << " pieces flipped or flat");
+  const size_t np = cut.points.size();
+  EXPECT(cut.faceOrig.size() == cut.triangles.size() && cut.budget.size() == np &&
+      cut.pointOrig.size() == np && cut.tear.size() == np && cut.onPlane.size() == np &&
+      cut.projected.size() == np && cut.mirrorFlags.size() == np,
     name << ": per-face / per-point arrays out of step");
 }
 
@@ -116,11 +124,18 @@ void PierceCut()
     for (int k = 2; k <= n; ++k)
       if (n % k == 0)
         for (double start : { 0.0, 0.25, 1.9, -2.6 })
-          CheckSector("polygon cap", cap, k, start, 1e-6);
+          CheckSector("polygon cap", cap, k, start);
   }
   const WorkMesh withPole = Cap(12, 0.37, true);
   for (int k : { 3, 4 })
-    CheckSector("cap with a pole", withPole, k, 0.2, 1e-6);
+    CheckSector("cap with a pole", withPole, k, 0.2);
+  // A pole 1e-3 off the axis (a detected axis is not exact): beyond the pole radius, so the
+  // fan face the axis passes through is cut at the axis; the cap's share is exact still.
+  WorkMesh offPole = withPole;
+  offPole.points.back() += Vec3(1e-3, 4e-4, 0.0);
+  for (int k : { 3, 4, 6, 12 })
+    for (double start : { 0.0, 0.25, 1.9 })
+      CheckSector("cap with a pole 1e-3 off the axis", offPole, k, start);
 }
 
 void PiercePoint()
@@ -133,7 +148,7 @@ void PiercePoint()
   WorkMesh flagged = cap;
   for (int v = 0; v < flagged.NumberOfPoints(); ++v)
     flagged.tear[v] = v == 0 ? 0x7 : 0x5; // bits 0 and 2 on every corner, bit 1 on corner 0
-  const WorkMesh cut = SplitAtHalfPlanes(frame, flagged, 0.3, TwoPi / 3, 1e-12, 1e-6);
+  const WorkMesh cut = SplitAtHalfPlanes(frame, flagged, 0.3, TwoPi / 3, 1e-12);
   int onAxis = 0;
   for (int v = cap.NumberOfPoints(); v < cut.NumberOfPoints(); ++v)
     if (frame.Radius(cut.points[v]) <= 1e-12)
@@ -142,15 +157,41 @@ void PiercePoint()
       EXPECT(std::abs(cut.points[v].z() - 0.5) <= 1e-12,
         "the pierce point lies off the cap's plane: z = " << cut.points[v].z());
       EXPECT(cut.tear[v] == 0x5, "the pierce point's tear bits " << cut.tear[v] << ", not 0x5");
-      EXPECT(cut.budget[v] >= 1.0 && cut.budget[v] <= 1.08,
-        "the pierce point's budget " << cut.budget[v] << " is not one of its face's corners'");
+      double least = 1e300; // the smallest budget of the face the axis passes through
+      for (size_t f = 0; f < cut.triangles.size(); ++f)
+        for (int c : cut.triangles[f])
+          if (c == v)
+            for (int corner : cap.triangles[cut.faceOrig[f]])
+              least = std::min(least, cap.budget[corner]);
+      EXPECT(cut.budget[v] == least,
+        "the pierce point's budget " << cut.budget[v] << ", not its face's smallest " << least);
     }
   EXPECT(onAxis == 1, onAxis << " new points on the axis, expected 1 (the pierce point)");
-  // A pole radius larger than the cap: every corner counts as a pole, no cut at the axis.
-  const WorkMesh uncut = SplitAtHalfPlanes(frame, cap, 0.3, TwoPi / 3, 1e-12, 2.0);
-  for (int v = cap.NumberOfPoints(); v < uncut.NumberOfPoints(); ++v)
-    EXPECT(frame.Radius(uncut.points[v]) > 1e-9,
-      "a point on the axis though every corner is within the pole radius");
+  // SplitAtAxis alone: one new point and two more faces for a polygon cap (odd: a face cut
+  // in three; even: the diagonal's two faces in two each), none for a fan about a centre
+  // within the pole radius (1000 tiny) of the axis, one for a centre 1e-3 off it.
+  struct Case
+  {
+    const char* name;
+    WorkMesh cap;
+    int points, faces;
+  };
+  WorkMesh nearPole = Cap(9, 0.1, true), offPole = Cap(9, 0.1, true);
+  nearPole.points.back() += Vec3(3e-10, 0.0, 0.0);
+  offPole.points.back() += Vec3(1e-3, 0.0, 0.0);
+  const Case cases[] = { { "9-gon", Cap(9, 0.1, false), 1, 2 },
+    { "12-gon", Cap(12, 0.37, false), 1, 2 },
+    { "pole 3e-10 off", nearPole, 0, 0 },
+    { "pole 1e-3 off", offPole, 1, 2 } };
+  for (const Case& c : cases)
+  {
+    const WorkMesh split = SplitAtAxis(frame, c.cap, 1e-12);
+    EXPECT(split.NumberOfPoints() - c.cap.NumberOfPoints() == c.points &&
+        split.NumberOfFaces() - c.cap.NumberOfFaces() == c.faces,
+      "SplitAtAxis on the " << c.name << " cap: " << split.NumberOfPoints() - c.cap.NumberOfPoints()
+                            << " new points, " << split.NumberOfFaces() - c.cap.NumberOfFaces()
+                            << " new faces (expected " << c.points << ", " << c.faces << ")");
+  }
 }
 }
 
