@@ -297,10 +297,18 @@ int Builder::Build(WorkMesh w, int parent, int depth, double eps, int folds, uin
   }
   // A rotation node instead (FoldingTreeRotation.cxx), where no fold lies above: of the whole
   // region, or of its rotational region (child 0 of a segmentation).
-  RotationPlan rotation;
+  RotationPlan rotation, second;
   const bool rotates = pathFolds == 0 &&
-    this->PlanRotation(
-      index, w, pm, *regionFaces, result, meaningful && sFaces == nf, depth, eps, rotation);
+    this->PlanRotation(index,
+      w,
+      pm,
+      *regionFaces,
+      result,
+      meaningful && sFaces == nf,
+      depth,
+      eps,
+      rotation,
+      this->BuildingAlternatives == 0 ? &second : nullptr);
   regionFaces.reset();
   const SymmetricChild fold = [&](int at, WorkMesh region, int atDepth)
   { this->Fold(at, std::move(region), plane, atDepth, eps, folds, pathFolds, provenSide); };
@@ -315,19 +323,20 @@ int Builder::Build(WorkMesh w, int parent, int depth, double eps, int folds, uin
   { this->Rotate(at, std::move(region), rotation, atDepth, eps, folds); };
   const std::vector<char> turned =
     rotation.region.empty() ? std::vector<char>(nf, 1) : rotation.region;
-  if (!meaningful)
+  if (!meaningful && second.order == 0)
   {
     this->Segment(index, std::move(w), pm, turned, depth, eps, folds, pathFolds, turn);
     return index;
   }
-  // Both: the subtree that stores fewer faces (ties: the fold's, the paper's). Each is built
-  // in full, the rotation's first; the nodes from `index` on are the subtree (preorder).
-  // Within one of them (a remaining component with its own rotation), the faces each saves
-  // at its own node decide instead, so that the builds do not multiply down a chain.
+  // Both (or all three, with a second order): the subtree that stores fewer faces (ties: the
+  // fold's, the paper's; between two orders, the larger). Each is built in full, the
+  // rotations' first; the nodes from `index` on are the subtree (preorder). Within one of
+  // them (a remaining component with its own rotation), the faces each saves at its own node
+  // decide instead, so that the builds do not multiply down a chain.
   if (this->BuildingAlternatives > 0)
   {
     const int regionFaces = rotation.region.empty() ? nf : rotation.regionFaces;
-    if (regionFaces * (1.0 - 1.0 / rotation.order) > 0.5 * sFaces)
+    if (!meaningful || regionFaces * (1.0 - 1.0 / rotation.order) > 0.5 * sFaces)
       this->Segment(index, std::move(w), pm, turned, depth, eps, folds, pathFolds, turn);
     else
       this->Segment(index, std::move(w), pm, S, depth, eps, folds, pathFolds, fold);
@@ -336,29 +345,50 @@ int Builder::Build(WorkMesh w, int parent, int depth, double eps, int folds, uin
   ++this->BuildingAlternatives;
   const FoldingNode fresh = this->Tree.nodes[index];
   const double done = this->DoneFaces;
-  this->Segment(index, w, pm, turned, depth, eps, folds, pathFolds, turn);
-  const int turnedFaces = this->SubtreeStoredFaces(index);
-  std::vector<FoldingNode> turnedNodes(this->Tree.nodes.begin() + index, this->Tree.nodes.end());
-  const double turnedDone = this->DoneFaces;
-  this->Tree.nodes.resize(index);
-  this->Tree.nodes.push_back(fresh);
-  this->DoneFaces = done;
-  this->Segment(index, std::move(w), pm, S, depth, eps, folds, pathFolds, fold);
-  const int foldedFaces = this->SubtreeStoredFaces(index);
+  struct Built
+  {
+    int faces = std::numeric_limits<int>::max();
+    std::vector<FoldingNode> nodes;
+    double done = 0.0;
+  };
+  // Builds one alternative at `index` and sets it aside (the node back as it was).
+  auto buildAside = [&](const std::vector<char>& region, const SymmetricChild& child)
+  {
+    this->Segment(index, w, pm, region, depth, eps, folds, pathFolds, child);
+    Built b;
+    b.faces = this->SubtreeStoredFaces(index);
+    b.nodes.assign(this->Tree.nodes.begin() + index, this->Tree.nodes.end());
+    b.done = this->DoneFaces;
+    this->Tree.nodes.resize(index);
+    this->Tree.nodes.push_back(fresh);
+    this->DoneFaces = done;
+    return b;
+  };
+  Built first = buildAside(turned, turn), other, folded;
+  if (second.order > 0)
+  {
+    const SymmetricChild turnSecond = [&](int at, WorkMesh region, int atDepth)
+    { this->Rotate(at, std::move(region), second, atDepth, eps, folds); };
+    other = buildAside(std::vector<char>(nf, 1), turnSecond);
+  }
+  if (meaningful)
+    folded = buildAside(S, fold);
   --this->BuildingAlternatives;
   if (O.trace)
-    O.trace(FormatTrace("[rotation] node %d: the rotation's subtree stores %d faces, the "
-                        "fold's %d: the %s's kept (node numbers above from the other one)",
+    O.trace(FormatTrace("[rotation] node %d: the rotation's subtree (order %d) stores %d faces%s, "
+                        "the fold's %s",
       index,
-      turnedFaces,
-      foldedFaces,
-      turnedFaces < foldedFaces ? "rotation" : "fold"));
-  if (turnedFaces < foldedFaces)
-  {
-    this->Tree.nodes.resize(index);
-    this->Tree.nodes.insert(this->Tree.nodes.end(), turnedNodes.begin(), turnedNodes.end());
-    this->DoneFaces = turnedDone;
-  }
+      rotation.order,
+      first.faces,
+      second.order > 0 ? FormatTrace(", order %d's %d", second.order, other.faces).c_str() : "",
+      meaningful ? FormatTrace("%d", folded.faces).c_str() : "none"));
+  Built* kept = &folded;
+  for (Built* b : { &other, &first }) // on a tie the fold, then the larger order
+    if (b->faces <= kept->faces && (b->faces < kept->faces || kept != &folded))
+      kept = b;
+  this->Tree.nodes.resize(index);
+  this->Tree.nodes.insert(this->Tree.nodes.end(), kept->nodes.begin(), kept->nodes.end());
+  this->DoneFaces = kept->done;
   return index;
 }
 

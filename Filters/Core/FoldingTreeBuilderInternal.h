@@ -239,7 +239,10 @@ private:
    * whether node `index` (region w, prepared as pm, with its face tree and the plane
    * detection's result) may keep one sector of a rotation - of the whole region, or (plan.region)
    * of its rotational region, child 0 of a segmentation. wholeMirror: the mirror plane's S is
-   * the whole region (then order 2 is left to the fold).
+   * the whole region (then order 2 is left to the fold). `second` (optional): a sector of the
+   * whole region of the next smaller order that passes too (order 0: none), for the caller to
+   * build beside the first (the largest order is not always the smallest subtree: a sector of
+   * even order may fold again below).
    */
   bool PlanRotation(int index,
     const WorkMesh& w,
@@ -249,7 +252,8 @@ private:
     bool wholeMirror,
     int depth,
     double eps,
-    RotationPlan& plan) const;
+    RotationPlan& plan,
+    RotationPlan* second = nullptr) const;
   bool PlanSector(const RotationResult& r,
     const WorkMesh& region,
     const std::vector<int>& orders,

@@ -187,10 +187,13 @@ bool Builder::PlanRotation(int index,
   bool wholeMirror,
   int depth,
   double eps,
-  RotationPlan& plan) const
+  RotationPlan& plan,
+  RotationPlan* second) const
 {
   const FoldingTreeOptions& O = this->Options;
   plan = RotationPlan();
+  if (second)
+    *second = RotationPlan();
   if (!O.rotationNodes || this->HasRotationAbove(index) || depth + 3 > this->MaximumDepth)
     return false;
   const auto started = std::chrono::steady_clock::now();
@@ -224,9 +227,19 @@ bool Builder::PlanRotation(int index,
     for (int f = 0; f < w.NumberOfFaces(); ++f)
       pinned = pinned || this->IsPinned(w, f);
     std::vector<int> covered;
-    planned = !pinned &&
-      this->PlanSector(
-        r, w, CandidateOrders(r, O.maximumRotationOrder, !wholeMirror), eps, plan, &covered);
+    const std::vector<int> orders = CandidateOrders(r, O.maximumRotationOrder, !wholeMirror);
+    planned = !pinned && this->PlanSector(r, w, orders, eps, plan, &covered);
+    if (planned && second) // the next smaller order that passes, for the caller to compare
+    {
+      std::vector<int> smaller;
+      for (int k : orders)
+        if (k < plan.order)
+          smaller.push_back(k);
+      if (!this->PlanSector(r, w, smaller, eps, *second, nullptr))
+        *second = RotationPlan();
+      else if (O.trace)
+        O.trace(FormatTrace("[rotation]   order %d passes too: both sectors are built", second->order));
+    }
     // Else: the part of the detector's region (faces whose vertices map within epsilon under
     // both tested turns, degenerate faces following, pinned faces left out) that the turns
     // of an order map onto itself, for the orders whose sectors covered the whole region
