@@ -146,12 +146,12 @@ added, "" none); the other fold options keep the fold command's defaults.
                            the unfolded mesh stays within the root epsilon
   --keep-arrays            also store the mesh's point and cell arrays (lossless; a larger
                            file: the geometry is then coded in the leaves' order)
-  --search                 also fold with up to five other settings (the options given alone,
+  --search                 also fold with up to six other settings (the options given alone,
                            --keep fewer, --min-faces 400, --min-area-fraction 0.2 and
-                           combinations, on top of the options given; settings already folded
-                           are not folded again) and keep the smallest file (JSON
-                           "foldOptions", "foldSettingsTried"); up to six folds: about six
-                           times the time
+                           combinations, --rotation --min-faces 400, on top of the options
+                           given; settings already folded are not folded again) and keep the
+                           smallest file (JSON "foldOptions", "foldSettingsTried"); up to
+                           seven folds: about seven times the time
 decompress: unfolds a .fmz file like unfold (same options, --original too) and writes
 STEM.vtp and STEM.png in --outdir (JSON: "output"). Not kept in a .fmz: input ids, and user
 arrays without --keep-arrays (keep the .vtm for those). unfold reads .fmz files too.

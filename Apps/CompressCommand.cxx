@@ -131,7 +131,7 @@ int Compress(int argc, char* argv[])
   const std::string ownOptions = chosen;
   int tried = 1;
   const std::string candidatePath = output + ".candidate";
-  std::set<std::tuple<int, bool, int, bool, double>> folded{ FoldSettingsKey(best.builder) };
+  std::set<FoldSearchKey> folded{ FoldSettingsKey(best.builder) };
   for (const FoldSearchVariant& v : FoldSearchVariants)
   {
     if (!search)

@@ -336,7 +336,7 @@ int Builder::Build(WorkMesh w, int parent, int depth, double eps, int folds, uin
   if (this->BuildingAlternatives > 0)
   {
     const int regionFaces = rotation.region.empty() ? nf : rotation.regionFaces;
-    if (!meaningful || regionFaces * (1.0 - 1.0 / rotation.order) > 0.5 * sFaces)
+    if (regionFaces * (1.0 - 1.0 / rotation.order) > 0.5 * sFaces)
       this->Segment(index, std::move(w), pm, turned, depth, eps, folds, pathFolds, turn);
     else
       this->Segment(index, std::move(w), pm, S, depth, eps, folds, pathFolds, fold);
@@ -374,18 +374,21 @@ int Builder::Build(WorkMesh w, int parent, int depth, double eps, int folds, uin
   if (meaningful)
     folded = buildAside(S, fold);
   --this->BuildingAlternatives;
-  if (O.trace)
-    O.trace(FormatTrace("[rotation] node %d: the rotation's subtree (order %d) stores %d faces%s, "
-                        "the fold's %s",
-      index,
-      rotation.order,
-      first.faces,
-      second.order > 0 ? FormatTrace(", order %d's %d", second.order, other.faces).c_str() : "",
-      meaningful ? FormatTrace("%d", folded.faces).c_str() : "none"));
   Built* kept = &folded;
   for (Built* b : { &other, &first }) // on a tie the fold, then the larger order
     if (b->faces <= kept->faces && (b->faces < kept->faces || kept != &folded))
       kept = b;
+  if (O.trace)
+    O.trace(FormatTrace("[rotation] node %d: the rotation's subtree (order %d) stores %d faces%s, "
+                        "the fold's %s: %s kept (node numbers above from the other ones)",
+      index,
+      rotation.order,
+      first.faces,
+      second.order > 0 ? FormatTrace(", order %d's %d", second.order, other.faces).c_str() : "",
+      meaningful ? FormatTrace("%d", folded.faces).c_str() : "none",
+      kept == &folded    ? "the fold's"
+        : kept == &first ? FormatTrace("order %d's", rotation.order).c_str()
+                         : FormatTrace("order %d's", second.order).c_str()));
   this->Tree.nodes.resize(index);
   this->Tree.nodes.insert(this->Tree.nodes.end(), kept->nodes.begin(), kept->nodes.end());
   this->DoneFaces = kept->done;

@@ -197,7 +197,8 @@ struct FoldingTreeOptions
    * of it the turns map onto itself) within epsilon and the error budgets, keep that sector only
    * (FoldingNodeKind::Rotation; its subtree is built with epsilon / 2 and may fold again: a
    * dihedral part becomes rotation + fold). Where a fold passes too, both subtrees are built and
-   * the one storing fewer faces kept (ties: the fold). The rule for the order, the sector cut
+   * the one storing fewer faces kept (ties: the fold); so is a sector of the next smaller order
+   * that passes (ties: the larger order). The rule for the order, the sector cut
    * and the seams: FoldingTreeRotation.cxx. A tree with rotation nodes that verifyBound finds
    * beyond epsilon, or with holes where the input is closed, is rebuilt with the planes alone
    * (docs/builder.md). Off by default (docs/benchmarks.md: the 29 shared meshes' builds take

@@ -238,7 +238,8 @@ bool Builder::PlanRotation(int index,
       if (!this->PlanSector(r, w, smaller, eps, *second, nullptr))
         *second = RotationPlan();
       else if (O.trace)
-        O.trace(FormatTrace("[rotation]   order %d passes too: both sectors are built", second->order));
+        O.trace(
+          FormatTrace("[rotation]   order %d passes too: both sectors are built", second->order));
     }
     // Else: the part of the detector's region (faces whose vertices map within epsilon under
     // both tested turns, degenerate faces following, pinned faces left out) that the turns

@@ -217,7 +217,7 @@ int main(int argc, char* argv[])
     // settings were not folded yet; the smallest file wins, the earlier on ties.
     std::string bytes, chosen;
     int q = 0;
-    std::set<std::tuple<int, bool, int, bool, double>> folded;
+    std::set<foldingmeshes::FoldSearchKey> folded;
     for (int k = -1;
          k < (search ? static_cast<int>(std::size(foldingmeshes::FoldSearchVariants)) : 0);
          ++k)

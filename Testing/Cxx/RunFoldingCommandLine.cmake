@@ -293,7 +293,7 @@ if (NOT fmzBytes LESS foldDefaultBytes)
   message(FATAL_ERROR "compress's own fold default made ${fmzBytes} bytes, the fold command's ${foldDefaultBytes}")
 endif ()
 
-# compress --search: six fold settings tried, a file no larger than compress's own, and
+# compress --search: seven fold settings tried, a file no larger than compress's own, and
 # it decompresses within the root epsilon (proved).
 execute_process(COMMAND "${FOLDINGMESHES}" compress "${MESH}" --search --outdir "${WORK_DIR}/search"
   --json --quiet RESULT_VARIABLE rc OUTPUT_VARIABLE sout ERROR_VARIABLE err)
@@ -305,7 +305,7 @@ string(JSON searchTried ERROR_VARIABLE jsonError2 GET "${sout}" foldSettingsTrie
 string(JSON searchOptions ERROR_VARIABLE jsonError3 GET "${sout}" foldOptions)
 string(JSON plainBytes GET "${cout}" bytes)
 message("compress --search: ${searchBytes} bytes (plain ${plainBytes}), ${searchTried} settings tried, chose '${searchOptions}'")
-if (jsonError OR jsonError2 OR jsonError3 OR NOT searchTried EQUAL 6 OR searchBytes GREATER plainBytes)
+if (jsonError OR jsonError2 OR jsonError3 OR NOT searchTried EQUAL 7 OR searchBytes GREATER plainBytes)
   message(FATAL_ERROR "compress --search JSON: ${sout} ${jsonError} ${jsonError2} ${jsonError3}")
 endif ()
 file(GLOB leftovers "${WORK_DIR}/search/*.candidate")
