@@ -308,7 +308,7 @@ int Builder::Build(WorkMesh w, int parent, int depth, double eps, int folds, uin
       depth,
       eps,
       rotation,
-      this->BuildingAlternatives == 0 ? &second : nullptr);
+      this->BuildingAlternatives == 0 && this->SecondOrders ? &second : nullptr);
   regionFaces.reset();
   const SymmetricChild fold = [&](int at, WorkMesh region, int atDepth)
   { this->Fold(at, std::move(region), plane, atDepth, eps, folds, pathFolds, provenSide); };
@@ -389,6 +389,7 @@ int Builder::Build(WorkMesh w, int parent, int depth, double eps, int folds, uin
       kept == &folded    ? "the fold's"
         : kept == &first ? FormatTrace("order %d's", rotation.order).c_str()
                          : FormatTrace("order %d's", second.order).c_str()));
+  this->KeptSecondOrder = this->KeptSecondOrder || kept == &other;
   this->Tree.nodes.resize(index);
   this->Tree.nodes.insert(this->Tree.nodes.end(), kept->nodes.begin(), kept->nodes.end());
   this->DoneFaces = kept->done;
@@ -508,6 +509,7 @@ bool BuildFoldingTree(const TriangleMesh& input,
   const int np = static_cast<int>(input.points.size());
 
   // One build with the faces `pinned` kept out of every symmetric region.
+  bool secondOrders = true, keptSecondOrder = false; // rotation nodes' second orders
   auto build = [&](const FoldingTreeOptions& o, const std::vector<char>& pinned) -> bool
   {
     tree = FoldingTree();
@@ -545,8 +547,10 @@ bool BuildFoldingTree(const TriangleMesh& input,
     if (!(tree.originalArea > 0.0))
       return false;
     Builder builder(o, inputNormals, tree, pinned);
+    builder.SecondOrders = secondOrders;
     builder.Run(std::move(root));
     tree.aborted = builder.Aborted;
+    keptSecondOrder = builder.KeptSecondOrder;
     return true;
   };
   if (!build(options, {}))
@@ -599,16 +603,23 @@ bool BuildFoldingTree(const TriangleMesh& input,
         break;
       }
       // A first tree with rotation nodes that misses (the bound, or holes where the input is
-      // closed): the planes alone first, at epsilon, no pins (their seams are the ones the
-      // unfolder closes best); should that tree miss too, the rounds below go on from it.
-      if (round == 0 && again.rotationNodes && HasRotationNode(tree))
+      // closed): without the second orders it kept, if any, then the planes alone, at epsilon,
+      // no pins (their seams are the ones the unfolder closes best); should that tree miss
+      // too, the rounds below go on from it.
+      if (round == firstRound && again.rotationNodes && HasRotationNode(tree))
       {
-        again.rotationNodes = false;
-        firstRound = 1; // the planes' tree is the first of the rounds below
+        const bool withoutSecond = keptSecondOrder && secondOrders;
+        if (withoutSecond)
+          secondOrders = false;
+        else
+          again.rotationNodes = false;
+        firstRound = round + 1; // the rebuilt tree is the first of the rounds below
         if (check.within)
-          proved.reset(new FoldingTree(tree)); // should the planes' tree miss the bound
+          proved.reset(new FoldingTree(tree)); // should the rebuilt tree miss the bound
         if (options.trace)
-          options.trace("[verify] the tree with rotation nodes missed: rebuilt with planes alone");
+          options.trace(withoutSecond
+              ? "[verify] the tree with rotation nodes missed: rebuilt without second orders"
+              : "[verify] the tree with rotation nodes missed: rebuilt with planes alone");
         build(again, pinned);
         tree.verificationRounds = round + 1;
         if (check.within &&

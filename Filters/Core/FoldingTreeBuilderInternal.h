@@ -78,6 +78,11 @@ public:
   void RecordInputEdges(const WorkMesh& w);
 
   bool Aborted = false;
+  /// Whether a node may also plan and build the next smaller order that passes
+  /// (PlanRotation's `second`); whether a tree kept such a sector (BuildFoldingTree retries
+  /// without them before the planes alone when that tree misses the verification).
+  bool SecondOrders = true;
+  bool KeptSecondOrder = false;
 
 private:
   /// Reports monotonic progress; false once the callback asked to stop.
