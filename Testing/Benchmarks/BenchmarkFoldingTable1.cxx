@@ -16,7 +16,8 @@
 //   BenchmarkFoldingTable1 [--threads N] [--keep fewer] [--tree] [--no-unfold]
 //                          [--no-close-holes] [--hole-tolerance F] [--keep-projected-points]
 //                          [--keep-copy-density] [--tolerance F] [--rotation]
-//                          [--distance-locator static|facetree] MESH_OR_FOLDER...
+//                          [--compare-rotation] [--distance-locator static|facetree]
+//                          MESH_OR_FOLDER...
 //
 // --keep fewer: the builder keeps the half with fewer faces; --tree prints each tree's outline
 // (node kind, depth, faces, area share, symmetric area fraction, the detection's wall time and
@@ -27,7 +28,10 @@
 // --keep-copy-density: the mirrored copies keep the kept half's density (MatchDiscardedDensity
 // off);
 // --tolerance: the root epsilon as a fraction of the diagonal (the builder's Tolerance,
-// default 0.02); --rotation: the builder's RotationNodes on (issue 22); --distance-locator:
+// default 0.02); --rotation: the builder's RotationNodes on (issue 22); --compare-rotation:
+// under each mesh's row (rotation nodes as --rotation says), a line with the other setting's
+// stored faces, compression, rotation nodes, build time and the builder's own proved bound
+// (VerifiedBound over the diagonal, and whether it is within the root epsilon); --distance-locator:
 // what answers the Hausdorff columns' closest-triangle queries, vtkStaticCellLocator (default,
 // as the unfolder's DistanceToOriginal) or the core's face tree (the same values, 7-25x faster).
 #include "MeshComparison.h"
@@ -115,8 +119,47 @@ struct Settings
   double holeToleranceScale = -1.0; // < 0: the filter's default
   double tolerance = -1.0;          // root epsilon / diagonal; < 0: the builder's default
   bool rotationNodes = false;
+  bool compareRotation = false;
   foldingmeshes::DistanceLocator locator = foldingmeshes::DistanceLocator::StaticCellLocator;
 };
+
+/// The --compare-rotation line: the mesh folded with RotationNodes the other way.
+void CompareRotation(vtkPolyData* mesh, const Settings& settings)
+{
+  vtkNew<vtkFoldingTreeBuilder> builder;
+  builder->SetInputData(mesh);
+  if (settings.keepFewer)
+    builder->SetKeepSide(vtkFoldingTreeBuilder::FEWER_FACES);
+  if (settings.tolerance >= 0.0)
+    builder->SetTolerance(settings.tolerance);
+  builder->SetRotationNodes(!settings.rotationNodes);
+  const auto t0 = Clock::now();
+  builder->Update();
+  const double build = std::chrono::duration<double>(Clock::now() - t0).count();
+  auto* tree = vtkMultiBlockDataSet::SafeDownCast(builder->GetOutputDataObject(0));
+  foldingmeshes::FoldingTree folded;
+  std::string error;
+  if (!tree || !foldingmeshes::MultiBlockToFoldingTree(tree, folded, error))
+  {
+    std::printf("  rotation nodes %s: folding failed %s\n",
+      settings.rotationNodes ? "off" : "on",
+      error.c_str());
+    return;
+  }
+  int rotations = 0;
+  for (const foldingmeshes::FoldingNode& node : folded.nodes)
+    rotations += node.kind == foldingmeshes::FoldingNodeKind::Rotation;
+  std::printf("  rotation nodes %-3s %7d stored %6.1f%% %3d rotation nodes, build %7.3f s, "
+              "proved %7.4f%s of the diagonal\n",
+    settings.rotationNodes ? "off" : "on",
+    folded.StoredFaces(),
+    100.0 * folded.Compression(),
+    rotations,
+    build,
+    folded.verifiedBound / folded.diagonal,
+    folded.verifiedBound >= 0.0 && folded.verifiedBound <= folded.rootEpsilon ? " " : "!");
+  std::fflush(stdout);
+}
 
 void PrintOutline(vtkMultiBlockDataSet* blocks)
 {
@@ -320,6 +363,8 @@ int main(int argc, char* argv[])
       settings.keepFewer = std::string(argv[++i]) == "fewer";
     else if (arg == "--rotation")
       settings.rotationNodes = true;
+    else if (arg == "--compare-rotation")
+      settings.compareRotation = true;
     else if (arg == "--tree")
       settings.printTree = true;
     else if (arg == "--no-unfold")
@@ -394,6 +439,8 @@ int main(int argc, char* argv[])
       continue;
     }
     Run(path, mesh, settings);
+    if (settings.compareRotation)
+      CompareRotation(mesh, settings);
   }
   return 0;
 }
