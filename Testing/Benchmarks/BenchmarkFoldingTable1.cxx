@@ -123,16 +123,22 @@ struct Settings
   foldingmeshes::DistanceLocator locator = foldingmeshes::DistanceLocator::StaticCellLocator;
 };
 
+/// The builder's options from the command line (RotationNodes as `rotation` says).
+void Configure(vtkFoldingTreeBuilder* builder, const Settings& settings, bool rotation)
+{
+  if (settings.keepFewer)
+    builder->SetKeepSide(vtkFoldingTreeBuilder::FEWER_FACES);
+  if (settings.tolerance >= 0.0)
+    builder->SetTolerance(settings.tolerance);
+  builder->SetRotationNodes(rotation);
+}
+
 /// The --compare-rotation line: the mesh folded with RotationNodes the other way.
 void CompareRotation(vtkPolyData* mesh, const Settings& settings)
 {
   vtkNew<vtkFoldingTreeBuilder> builder;
   builder->SetInputData(mesh);
-  if (settings.keepFewer)
-    builder->SetKeepSide(vtkFoldingTreeBuilder::FEWER_FACES);
-  if (settings.tolerance >= 0.0)
-    builder->SetTolerance(settings.tolerance);
-  builder->SetRotationNodes(!settings.rotationNodes);
+  Configure(builder, settings, !settings.rotationNodes);
   const auto t0 = Clock::now();
   builder->Update();
   const double build = std::chrono::duration<double>(Clock::now() - t0).count();
@@ -222,11 +228,7 @@ void Run(const std::string& path, vtkPolyData* mesh, const Settings& settings)
   const std::string stem = std::filesystem::path(path).stem().string();
   vtkNew<vtkFoldingTreeBuilder> builder;
   builder->SetInputData(mesh);
-  if (settings.keepFewer)
-    builder->SetKeepSide(vtkFoldingTreeBuilder::FEWER_FACES);
-  if (settings.tolerance >= 0.0)
-    builder->SetTolerance(settings.tolerance);
-  builder->SetRotationNodes(settings.rotationNodes);
+  Configure(builder, settings, settings.rotationNodes);
   const auto t0 = Clock::now();
   builder->Update();
   const double build = std::chrono::duration<double>(Clock::now() - t0).count();

@@ -151,19 +151,25 @@ Folded Fold(vtkPolyData* mesh,
   return r;
 }
 
+/// The mesh `file` of `dir`, or null (a failed check).
+vtkSmartPointer<vtkPolyData> Read(const std::string& dir, const std::string& file)
+{
+  std::string error;
+  vtkSmartPointer<vtkPolyData> mesh = foldingmeshes::ReadMesh(dir + "/" + file, error);
+  if (!mesh)
+    Check(false, "cannot read " + file + ": " + error);
+  return mesh;
+}
+
 void TestMesh(const std::string& dir,
   const std::string& file,
   double minimumCompression,
   bool globalPlane)
 {
   std::printf("%s\n", file.c_str());
-  std::string error;
-  vtkSmartPointer<vtkPolyData> mesh = foldingmeshes::ReadMesh(dir + "/" + file, error);
+  vtkSmartPointer<vtkPolyData> mesh = Read(dir, file);
   if (!mesh)
-  {
-    Check(false, "cannot read " + file + ": " + error);
     return;
-  }
   double plane[3] = { 0, 0, 0 };
   bool hasPlane = false;
   vtkSMPTools::SetBackend("STDThread");
@@ -208,13 +214,9 @@ void TestMesh(const std::string& dir,
 void TestRotationNodes(const std::string& dir, const std::string& file, double share)
 {
   std::printf("%s, rotation nodes\n", file.c_str());
-  std::string error;
-  vtkSmartPointer<vtkPolyData> mesh = foldingmeshes::ReadMesh(dir + "/" + file, error);
+  vtkSmartPointer<vtkPolyData> mesh = Read(dir, file);
   if (!mesh)
-  {
-    Check(false, "cannot read " + file + ": " + error);
     return;
-  }
   double plane[3];
   bool hasPlane = false;
   vtkSMPTools::SetBackend("STDThread");
