@@ -306,9 +306,7 @@ WorkMesh SplitAtAxis(const AxisFrame& frame, const WorkMesh& w, double tiny)
     int split = -1, pole = -1;
     for (int k = 0; k < 3 && split < 0; ++k)
     {
-      const auto key =
-        std::make_pair(std::min(t[k], t[(k + 1) % 3]), std::max(t[k], t[(k + 1) % 3]));
-      const auto found = edgePole.find(key);
+      const auto found = edgePole.find(edgeKey(t[k], t[(k + 1) % 3]));
       if (found != edgePole.end())
       {
         split = k;
@@ -550,14 +548,12 @@ bool ChargeTurns(const AxisFrame& frame,
       sector.triangles.push_back(w.triangles[f]);
   const SurfaceDistanceQuery toSector(sector);
   std::vector<Vec3> back;
-  std::vector<int> removedPoints;
   for (int v = 0; v < np; ++v)
     if (!used[v])
     {
       const double angle = Modulo(frame.Angle(w.points[v]) - cut.start, TwoPi);
       const int j = std::min(k - 1, static_cast<int>(angle / width));
       back.push_back(AxisTurn(frame.Axis, -j * width).Point(w.points[v]));
-      removedPoints.push_back(v);
     }
   // A removed point is reproduced by the copy of the sector face closest to it turned back:
   // its distance is charged to that face's corners (as a fold charges a discarded point to
