@@ -113,12 +113,16 @@ bool Builder::PlanSector(const RotationResult& r,
   for (int k : orders)
   {
     const char* why = CutSector(frame, region, edges, k, snap, offAxis, cut);
-    if (covered && why != NotCoveredOnce)
+    // Whole faces cover the region once (a sector that would hold too many faces is checked
+    // first: whether it covers once is not known, and cut along its half-planes it only holds
+    // more).
+    const bool coversOnce = why != NotCoveredOnce && why != NoSector && why != TooManyPieces;
+    if (covered && coversOnce)
       covered->push_back(k);
     // Whole faces cover the region once but their seams do not meet: cut the faces along the
     // half-planes (step 3b).
     bool cutFaces = false;
-    if (why && why != NotCoveredOnce && why != NoSector)
+    if (why && coversOnce)
     {
       const double start = cut.start;
       split = SplitAtHalfPlanes(frame, region, start, TwoPi / k, offAxis);
@@ -254,28 +258,44 @@ bool Builder::PlanRotation(int index,
     const double minimumArea = O.symmetry.minimumSymmetricAreaFraction * Area(w);
     for (size_t i = 0; !planned && i < covered.size() && i < size_t(MaximumRegionOrders); ++i)
     {
-      std::vector<char> region = InvariantRegion(w, label, r.axis, covered[i], eps);
-      int faces = 0;
-      double area = 0.0;
-      for (int f = 0; f < w.NumberOfFaces(); ++f)
-        if (region[f])
-        {
-          ++faces;
-          area += TriangleArea(w, w.triangles[f]);
-        }
-      if (O.trace)
-        O.trace(FormatTrace("[rotation]   order %d: the turns map %d faces (%.1f%% of the area) "
-                            "onto the rotational region",
-          covered[i],
-          faces,
-          100.0 * area / Area(w)));
-      if (faces == 0 || faces == w.NumberOfFaces() || area < minimumArea)
-        continue;
-      planned = this->PlanSector(r, Extract(w, region), { covered[i] }, eps, plan, nullptr);
-      if (planned)
+      // The region that reaches up to its asymmetric surroundings first, then the strict one
+      // that stays clear of them (InvariantRegion), when it differs.
+      std::vector<char> loose;
+      for (const bool strict : { false, true })
       {
-        plan.region = std::move(region);
-        plan.regionFaces = faces;
+        if (planned)
+          break;
+        std::vector<char> region = InvariantRegion(w, label, r.axis, covered[i], eps, strict);
+        if (strict && region == loose)
+          break;
+        int faces = 0;
+        double area = 0.0;
+        for (int f = 0; f < w.NumberOfFaces(); ++f)
+          if (region[f])
+          {
+            ++faces;
+            area += TriangleArea(w, w.triangles[f]);
+          }
+        if (O.trace)
+          O.trace(FormatTrace("[rotation]   order %d: the turns map %d faces (%.1f%% of the "
+                              "area) onto the %s rotational region",
+            covered[i],
+            faces,
+            100.0 * area / Area(w),
+            strict ? "strict" : "loose"));
+        if (faces == 0 || faces == w.NumberOfFaces() || area < minimumArea)
+        {
+          loose = std::move(region);
+          continue;
+        }
+        planned = this->PlanSector(r, Extract(w, region), { covered[i] }, eps, plan, nullptr);
+        if (planned)
+        {
+          plan.region = std::move(region);
+          plan.regionFaces = faces;
+        }
+        else
+          loose = std::move(region);
       }
     }
   }

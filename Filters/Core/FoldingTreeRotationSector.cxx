@@ -575,68 +575,6 @@ bool ChargeTurns(const AxisFrame& frame,
       return false;
   return true;
 }
-
-/**
- * The faces of `region` (per face of w) whose vertices, turned by 360/k and by floor(k/2)
- * 360/k (the detector's test turns; ChargeTurns then checks every turn), lie within eps of a
- * face of the region: the part of a rotational region that the turns map onto itself (the
- * detector's region is ragged where it meets asymmetric parts). Three passes of removal at
- * most.
- */
-std::vector<char> InvariantRegion(const WorkMesh& w,
-  std::vector<char> region,
-  const RotationAxis& axis,
-  int k,
-  double eps)
-{
-  TriangleMesh surface;
-  surface.points = w.points;
-  surface.triangles = w.triangles;
-  const SurfaceDistanceQuery toMesh(surface);
-  for (int pass = 0; pass < 3; ++pass)
-  {
-    std::vector<int> points;
-    std::vector<char> inRegion(w.points.size(), 0);
-    for (int f = 0; f < w.NumberOfFaces(); ++f)
-      if (region[f])
-        for (int v : w.triangles[f])
-          inRegion[v] = 1;
-    for (int v = 0; v < w.NumberOfPoints(); ++v)
-      if (inRegion[v])
-        points.push_back(v);
-    std::vector<char> bad(w.points.size(), 0);
-    std::vector<int> turns = { 1 }; // the detector's two test turns (ChargeTurns checks all)
-    if (k / 2 > 1)
-      turns.push_back(k / 2);
-    for (int j : turns)
-    {
-      const AxisTurn turn(axis, 2.0 * EIGEN_PI * j / k);
-      std::vector<Vec3> turned;
-      turned.reserve(points.size());
-      for (int v : points)
-        turned.push_back(turn.Point(w.points[v]));
-      std::vector<double> distance;
-      std::vector<int> closest;
-      toMesh.Closest(turned, distance, closest);
-      for (size_t i = 0; i < points.size(); ++i)
-        bad[points[i]] =
-          bad[points[i]] || distance[i] > eps || closest[i] < 0 || !region[closest[i]];
-    }
-    bool dropped = false;
-    for (int f = 0; f < w.NumberOfFaces(); ++f)
-    {
-      const Triangle& t = w.triangles[f];
-      if (region[f] && (bad[t[0]] || bad[t[1]] || bad[t[2]]))
-      {
-        region[f] = 0;
-        dropped = true;
-      }
-    }
-    if (!dropped)
-      break;
-  }
-  return region;
-}
 }
 }
 }

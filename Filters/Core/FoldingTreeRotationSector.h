@@ -69,6 +69,7 @@ struct SectorCut
 /// CutSector's reasons that the planning compares (the others are only reported).
 extern const char* const NotCoveredOnce;
 extern const char* const NoSector;
+extern const char* const TooManyPieces;
 
 /// a in [0, m).
 double Modulo(double a, double m);
@@ -109,17 +110,21 @@ bool ChargeTurns(const AxisFrame& frame,
   double& worst);
 
 /**
- * The faces of `region` (per face of w) whose vertices, turned by 360/k and by floor(k/2)
- * 360/k (the detector's test turns; ChargeTurns then checks every turn), lie within eps of a
- * face of the region: the part of a rotational region that the turns map onto itself (the
- * detector's region is ragged where it meets asymmetric parts). Three passes of removal at
- * most.
+ * The faces of `region` (per face of w) whose vertices and centroid, turned by every j 360/k
+ * (j = 1 .. k - 1; above order 16 by 360/k and floor(k/2) 360/k, the detector's test turns:
+ * ChargeTurns then checks every turn), lie within eps of a face of the region: the part of a
+ * rotational region that the turns map onto itself (the detector's region is ragged where it
+ * meets asymmetric parts). `strict`: and no nearer to a face of w outside the region than to
+ * the region (a tie, e.g. a turned vertex on the region's border, counts as on it): a region
+ * that stays clear of its asymmetric surroundings, smaller, whose sector keeps the bound more
+ * often. Three passes of removal at most (the region shrinks with each).
  */
 std::vector<char> InvariantRegion(const WorkMesh& w,
   std::vector<char> region,
   const RotationAxis& axis,
   int k,
-  double eps);
+  double eps,
+  bool strict);
 }
 }
 }

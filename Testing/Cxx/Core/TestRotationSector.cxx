@@ -12,7 +12,8 @@
 // - a corner within the pole radius of the axis (1000 tiny) is the face's own pole: no cut
 //   at the axis; a pole 1e-3 off the axis is not, and its cap's share stays exact;
 // - no piece flips; every per-point and per-face array stays in step;
-// - a cap whose faces the axis does not pierce (it has a vertex there) is cut as before.
+// - a cap whose faces the axis does not pierce (it has a vertex there) is cut as before;
+// - InvariantRegion keeps a region that every turn of the order maps onto itself.
 //
 //   TestRotationSector
 #include "CoreTestUtilities.h"
@@ -193,11 +194,78 @@ void PiercePoint()
                             << " new faces (expected " << c.points << ", " << c.faces << ")");
   }
 }
+
+/// A tube (radius 1, height 1) of `columns` x `rows` quads, two triangles each; face
+/// 2 (row columns + column) + t.
+WorkMesh Tube(int columns, int rows)
+{
+  WorkMesh w;
+  for (int r = 0; r <= rows; ++r)
+    for (int c = 0; c < columns; ++c)
+    {
+      const double a = 2.0 * Pi * c / columns;
+      w.points.emplace_back(std::cos(a), std::sin(a), static_cast<double>(r) / rows);
+    }
+  for (int r = 0; r < rows; ++r)
+    for (int c = 0; c < columns; ++c)
+    {
+      const int a = r * columns + c, b = r * columns + (c + 1) % columns;
+      w.triangles.push_back({ a, b, b + columns });
+      w.triangles.push_back({ a, b + columns, a + columns });
+    }
+  return w;
+}
+
+/// InvariantRegion on a tube of 8-fold tessellation whose region lacks a small patch at 0
+/// degrees and a larger one at 180 (the teapot's spout and handle): the region it keeps is the
+/// same under all seven turns of order 8, not only under the first and the half turn (three
+/// passes of those left faces whose turn by 90 degrees lands on a patch).
+void InvariantUnderEveryTurn()
+{
+  const int columns = 48, rows = 10;
+  const WorkMesh tube = Tube(columns, rows);
+  std::vector<char> region(tube.NumberOfFaces(), 1);
+  auto column = [&](int f) { return (f / 2) % columns; };
+  auto row = [&](int f) { return (f / 2) / columns; };
+  for (int f = 0; f < tube.NumberOfFaces(); ++f)
+  {
+    const int c = column(f), r = row(f);
+    const bool small = (c == 0 || c == columns - 1) && r >= 4 && r <= 5;
+    const bool large = c >= 22 && c <= 25 && r >= 2 && r <= 7;
+    region[f] = !(small || large);
+  }
+  std::vector<char> loose;
+  for (const bool strict : { false, true })
+  {
+    const char* name = strict ? "strict" : "loose";
+    const std::vector<char> kept = InvariantRegion(tube, region, RotationAxis(), 8, 0.01, strict);
+    int faces = 0, changed = 0, outside = 0;
+    for (int f = 0; f < tube.NumberOfFaces(); ++f)
+    {
+      faces += kept[f];
+      outside += kept[f] && (!region[f] || (strict && !loose[f]));
+      for (int j = 1; j < 8; ++j)
+      {
+        const int turned = 2 * (row(f) * columns + (column(f) + j * columns / 8) % columns) + f % 2;
+        changed += kept[f] != kept[turned];
+      }
+    }
+    EXPECT(faces > 0 && faces < tube.NumberOfFaces() && outside == 0,
+      "InvariantRegion (" << name << ") on the tube: " << faces << " faces kept, " << outside
+                          << " of them outside the region (strict: the loose region)");
+    EXPECT(changed == 0,
+      "InvariantRegion (" << name << ") on the tube: " << changed
+                          << " (face, turn) pairs where a turn of order 8 maps a kept face onto "
+                             "a dropped one or back");
+    loose = kept;
+  }
+}
 }
 
 int main()
 {
   PierceCut();
   PiercePoint();
+  InvariantUnderEveryTurn();
   return coretest::Finish("TestRotationSector");
 }
