@@ -204,6 +204,7 @@ bool Builder::PlanRotation(int index,
   RotationOptions ro;
   ro.epsilon = eps;
   ro.maximumOrder = O.maximumRotationOrder;
+  ro.minimumOrder = wholeMirror ? 3 : 2; // CandidateOrders: no order 2 where a fold covers all
   ro.compatibilityAngle = O.symmetry.compatibilityAngle;
   // (A floor of half the region's area was tried: the spider's search 2.1 -> 1.0 s, but the
   // fandisk's rotation of 11% of its area, which beats the fold there, was lost.)
@@ -259,11 +260,14 @@ bool Builder::PlanRotation(int index,
     for (size_t i = 0; !planned && i < covered.size() && i < size_t(MaximumRegionOrders); ++i)
     {
       // The region that reaches up to its asymmetric surroundings first, then the strict one
-      // that stays clear of them (InvariantRegion), when it differs.
+      // that stays clear of them (InvariantRegion; a subset of the loose one), when it differs
+      // and the loose one was the whole region or its sector failed (a smaller or empty loose
+      // region leaves the strict one smaller still).
       std::vector<char> loose;
+      bool tryStrict = true;
       for (const bool strict : { false, true })
       {
-        if (planned)
+        if (planned || (strict && !tryStrict))
           break;
         std::vector<char> region = InvariantRegion(w, label, r.axis, covered[i], eps, strict);
         if (strict && region == loose)
@@ -285,6 +289,7 @@ bool Builder::PlanRotation(int index,
             strict ? "strict" : "loose"));
         if (faces == 0 || faces == w.NumberOfFaces() || area < minimumArea)
         {
+          tryStrict = faces == w.NumberOfFaces();
           loose = std::move(region);
           continue;
         }

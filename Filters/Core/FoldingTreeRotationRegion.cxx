@@ -5,6 +5,7 @@
 #include "SurfaceDistance.h"
 
 #include <algorithm>
+#include <limits>
 #include <memory>
 
 namespace foldingmeshes
@@ -47,8 +48,12 @@ std::vector<char> InvariantRegion(const WorkMesh& w,
     mesh.triangles = w.triangles;
     toMesh = std::make_unique<SurfaceDistanceQuery>(mesh);
   }
-  // Rounding between the two queries' distances to the same face.
-  const double tie = 1e-9 * std::max(eps, 1e-300);
+  // Rounding between the two queries' distances to the same face (or to two faces meeting at
+  // the point): a few ulps of the coordinates, far below eps.
+  double scale = axis.origin.cwiseAbs().maxCoeff();
+  for (const Vec3& x : w.points)
+    scale = std::max(scale, x.cwiseAbs().maxCoeff());
+  const double tie = 1e-9 * eps + 64.0 * std::numeric_limits<double>::epsilon() * scale;
   for (int pass = 0; pass < 3; ++pass)
   {
     // A turned sample must lie within eps of the region and (strict) no nearer to a face

@@ -117,7 +117,9 @@ bool ChargeTurns(const AxisFrame& frame,
  * meets asymmetric parts). `strict`: and no nearer to a face of w outside the region than to
  * the region (a tie, e.g. a turned vertex on the region's border, counts as on it): a region
  * that stays clear of its asymmetric surroundings, smaller, whose sector keeps the bound more
- * often. Three passes of removal at most (the region shrinks with each).
+ * often. Three passes of removal at most (the region shrinks with each; it is closed under
+ * the turns checked when a pass drops nothing, e.g. after one pass when the turns land clear
+ * of the region's border).
  */
 std::vector<char> InvariantRegion(const WorkMesh& w,
   std::vector<char> region,

@@ -210,8 +210,8 @@ ScanEntry ScanAxis(const PreparedMesh& mesh,
   const double threshold = std::max(options.minimumSymmetricAreaFraction, OrderAreaRatio * best);
   if (best < options.minimumSymmetricAreaFraction)
     return entry;
-  for (int k = options.maximumOrder;
-       k >= 2 && entry.orders.size() < static_cast<size_t>(RefinedOrders);
+  for (int k = options.maximumOrder; k >= std::max(2, options.minimumOrder) &&
+       entry.orders.size() < static_cast<size_t>(RefinedOrders);
        --k)
   {
     if (!entry.orders.empty() && entry.order % k != 0)

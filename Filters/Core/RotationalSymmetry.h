@@ -22,6 +22,11 @@ struct RotationOptions
 {
   double epsilon = 0.0;                           ///< tolerance as a length (required, > 0)
   int maximumOrder = DefaultMaximumRotationOrder; ///< orders 2 .. this are tried (2 .. 360)
+  /// Axes whose best order is below this are left out (2: none). An axis keeps only orders
+  /// whose area is at least 0.9 times its best order's, so an axis of order 2 over the whole
+  /// surface yields nothing: a caller that has no use for order 2 (the builder, where a
+  /// mirror fold covers the whole region) skips its fits.
+  int minimumOrder = 2;
   double compatibilityAngle = 45.0;
   double minimumSymmetricAreaFraction = 0.1;
   /// Mirror planes already found (e.g. SymmetryResult::finalists): two of them at an angle

@@ -7,7 +7,8 @@
 // - a surface of revolution (a = 0): every order passes (continuous, order = the cap);
 // - with noise of 0.05 epsilon, and with a separate box of about 15% of the area beside it;
 // - shapes with no rotational symmetry get none: a lumpy vase with three harmonics, and the
-//   procedural lumpy blob (MakeAsymmetricBlob, two seeds).
+//   procedural lumpy blob (MakeAsymmetricBlob, two seeds);
+// - with a minimum order of 3, a 2-fold vase gets none and a 6-fold one its order.
 // Every shape is moved by a seeded rigid motion; the axis found is compared with the moved z
 // axis (angle, and offset at the centroid over the diagonal).
 //
@@ -46,7 +47,8 @@ struct Case
   double noise = 0.0;       ///< per coordinate, in epsilon
   double boxFraction = 0.0; ///< area of the added box over the vase's
   unsigned seed = 1;
-  int blobFaces = 0; ///< > 0: MakeAsymmetricBlob of about this many faces instead of a vase
+  int blobFaces = 0;    ///< > 0: MakeAsymmetricBlob of about this many faces instead of a vase
+  int minimumOrder = 2; ///< RotationOptions::minimumOrder
 };
 
 /// Runs one case; expectedOrder 0: no symmetry expected; -1: continuous (order = the cap).
@@ -74,6 +76,7 @@ void Check(const Case& c, int expectedOrder, double minimumRegion)
   const double diagonal = (hi - lo).norm();
   RotationOptions options;
   options.epsilon = 0.02 * diagonal;
+  options.minimumOrder = c.minimumOrder;
   if (c.noise > 0.0)
   {
     std::mt19937 g(c.seed + 100);
@@ -152,5 +155,9 @@ int main()
   Check({ "lumpy vase, no symmetry", { 1, 0.0, 0.0, true }, 0.0, 0.0, 25 }, 0, 0.0);
   for (unsigned seed : { 3u, 4u })
     Check({ "asymmetric blob", {}, 0.0, 0.0, seed, 4000 }, 0, 0.0);
+  // RotationOptions::minimumOrder (the builder's, where a mirror fold covers the whole region):
+  // an axis of order 2 yields nothing, one of order 6 is found as without it.
+  Check({ "twisted 2-fold, orders >= 3", { 2, 0.15, 0.9, false }, 0.0, 0.0, 2, 0, 3 }, 0, 0.0);
+  Check({ "twisted 6-fold, orders >= 3", { 6, 0.15, 0.9, false }, 0.0, 0.0, 6, 0, 3 }, 6, 0.97);
   return coretest::Finish("TestRotationalSymmetry");
 }
