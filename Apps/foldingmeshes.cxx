@@ -11,6 +11,7 @@
 // Exit codes: 0 success, 1 bad command line, 2 unreadable or invalid input, 3 cannot write,
 // 4 roundtrip: Hausdorff distance above the root epsilon.
 #include "CommandLine.h"
+#include "ProcessMemory.h"
 
 #include <vtkSMPTools.h>
 
@@ -23,6 +24,7 @@ using namespace foldingmeshes::cli;
 
 int main(int argc, char* argv[])
 {
+  KeepFreedMemoryForReuse();
   // Use both cores unless the user chose an SMP backend (results do not depend on it).
   if (!std::getenv("VTK_SMP_BACKEND_IN_USE"))
     vtkSMPTools::SetBackend("STDThread");

@@ -30,12 +30,6 @@ void Builder::Run(WorkMesh root)
 {
   this->PlaneAtDepth.assign(MaximumFoldingTreeLevels, Plane());
   this->EpsilonAtDepth.assign(MaximumFoldingTreeLevels, 0.0);
-  {
-    TriangleMesh input;
-    input.points = root.points;
-    input.triangles = root.triangles;
-    this->ToInput.reset(new SurfaceDistanceQuery(input));
-  }
   this->Build(std::move(root), -1, 0, this->Options.epsilon, 0, 0);
   this->Report(1.0);
 }
@@ -508,6 +502,8 @@ bool BuildFoldingTree(const TriangleMesh& input,
     return false;
   const int np = static_cast<int>(input.points.size());
 
+  // Distances to the input (the core's face tree), for every build and the verification.
+  const SurfaceDistanceQuery toInput(input);
   // One build with the faces `pinned` kept out of every symmetric region.
   bool secondOrders = true, keptSecondOrder = false; // rotation nodes' second orders
   auto build = [&](const FoldingTreeOptions& o, const std::vector<char>& pinned) -> bool
@@ -546,7 +542,7 @@ bool BuildFoldingTree(const TriangleMesh& input,
     }
     if (!(tree.originalArea > 0.0))
       return false;
-    Builder builder(o, inputNormals, tree, pinned);
+    Builder builder(o, inputNormals, tree, pinned, toInput);
     builder.SecondOrders = secondOrders;
     builder.Run(std::move(root));
     tree.aborted = builder.Aborted;
@@ -580,7 +576,7 @@ bool BuildFoldingTree(const TriangleMesh& input,
     for (int round = 0;; ++round)
     {
       const UnfoldedBoundCheck check =
-        VerifyUnfoldedBound(input, tree, options.verificationQueries);
+        VerifyUnfoldedBound(input, tree, options.verificationQueries, &toInput);
       if (options.trace)
         options.trace(FormatTrace(
           "[verify] round %d: proved bound %.6g of epsilon %.6g, %s; %d open edges where the "

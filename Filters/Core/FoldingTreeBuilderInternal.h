@@ -58,14 +58,18 @@ class Builder
 public:
   /// pinned: per input face (or empty), 1 where the face may not be part of any symmetric
   /// region S (BuildFoldingTree's verification keeps it stored as it is).
+  /// toInput: distances to the input surface (shared by BuildFoldingTree's builds and its
+  /// verification).
   Builder(const FoldingTreeOptions& options,
     const std::vector<Vec3>& inputNormals,
     FoldingTree& tree,
-    const std::vector<char>& pinned)
+    const std::vector<char>& pinned,
+    const SurfaceDistanceQuery& toInput)
     : Options(options)
     , InputNormals(inputNormals)
     , Tree(tree)
     , Pinned(pinned)
+    , ToInput(toInput)
   {
     this->MaximumDepth = std::max(1, std::min(options.maximumDepth, MaximumFoldingTreeLevels - 1));
   }
@@ -310,7 +314,7 @@ private:
   {
     return !this->Pinned.empty() && this->Pinned[w.faceOrig[f]];
   }
-  std::unique_ptr<SurfaceDistanceQuery> ToInput; ///< distances to the input surface
+  const SurfaceDistanceQuery& ToInput; ///< distances to the input surface
   std::vector<Plane> PlaneAtDepth;
   std::vector<double> EpsilonAtDepth;
   /// Per input point id: 1 on the input's border (after the root's weld); see MakeLeaf.

@@ -319,7 +319,7 @@ double Builder::ChargeMirrorError(const WorkMesh& w,
   for (int v = 0; v < w.NumberOfPoints(); ++v)
     mirrored[v] = plane.Reflect(w.points[v]);
   const std::vector<double> toS = toRegion.Distances(mirrored);
-  const std::vector<double> toM = this->ToInput->Distances(mirrored);
+  const std::vector<double> toM = this->ToInput.Distances(mirrored);
   PointBuckets all, kept;
   all.cell = kept.cell = std::max(eps, 1e-12 * this->Tree.diagonal);
   double least = std::numeric_limits<double>::infinity();

@@ -10,6 +10,7 @@
 #include <array>
 #include <limits>
 #include <map>
+#include <memory>
 #include <string>
 
 namespace foldingmeshes
@@ -71,7 +72,8 @@ std::vector<Vec3> OpenEdgeProbes(const TriangleMesh& mesh, int& count)
 
 UnfoldedBoundCheck VerifyUnfoldedBound(const TriangleMesh& input,
   const FoldingTree& tree,
-  const ClosestFaceQueryFactory& queries)
+  const ClosestFaceQueryFactory& queries,
+  const SurfaceDistanceQuery* sharedToInput)
 {
   UnfoldedBoundCheck check;
   UnfoldedMesh unfolded;
@@ -90,7 +92,11 @@ UnfoldedBoundCheck VerifyUnfoldedBound(const TriangleMesh& input,
   out.triangles = unfolded.triangles;
   const double epsilon = tree.rootEpsilon;
   const double tolerance = 1e-7 * tree.diagonal;
-  const SurfaceDistanceQuery toInput(input, queries), toOut(out, queries);
+  std::unique_ptr<SurfaceDistanceQuery> ownToInput;
+  if (queries || !sharedToInput)
+    ownToInput = std::make_unique<SurfaceDistanceQuery>(input, queries);
+  const SurfaceDistanceQuery& toInput = ownToInput ? *ownToInput : *sharedToInput;
+  const SurfaceDistanceQuery toOut(out, queries);
   std::vector<int> outBeyond, inputBeyond;
   const HausdorffBounds there = DirectedHausdorffBounds(
     out, toInput, tolerance, DefaultMaximumEvaluations, epsilon, &outBeyond);

@@ -11,6 +11,8 @@
 
 namespace foldingmeshes
 {
+class SurfaceDistanceQuery;
+
 /// What VerifyUnfoldedBound found.
 struct UnfoldedBoundCheck
 {
@@ -36,11 +38,14 @@ struct UnfoldedBoundCheck
  * Where a point is not proved within epsilon, lists the input faces to pin there; where a
  * closed input comes back with open edges, the input faces to pin there too.
  * `queries` (optional): the closest-face queries of the distances (e.g. a VTK cell locator,
- * FoldingTreeOptions::verificationQueries); without it the core's FaceTree.
+ * FoldingTreeOptions::verificationQueries); without it the core's FaceTree. `toInput`
+ * (optional, used only without `queries`): distances to `input` through the core's FaceTree
+ * already built (the builder's), instead of a new one.
  */
 UnfoldedBoundCheck VerifyUnfoldedBound(const TriangleMesh& input,
   const FoldingTree& tree,
-  const ClosestFaceQueryFactory& queries = nullptr);
+  const ClosestFaceQueryFactory& queries = nullptr,
+  const SurfaceDistanceQuery* toInput = nullptr);
 }
 
 #endif

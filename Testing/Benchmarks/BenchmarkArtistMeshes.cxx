@@ -17,6 +17,7 @@
 // --double: the corpus as built (double coordinates) instead of as written (float).
 #include "ArtistMeshes.h"
 #include "EdgeTable.h"
+#include "ProcessMemory.h"
 #include "vtkFoldingTreeBuilder.h"
 #include "vtkFoldingTreeUnfolder.h"
 #include "vtkSymmetryPlaneDetector.h"
@@ -60,6 +61,7 @@ double Field(vtkFieldData* field, const char* name, int c = 0)
 
 int main(int argc, char* argv[])
 {
+  foldingmeshes::cli::KeepFreedMemoryForReuse(); // as the command-line program does
   std::vector<std::string> filters;
   bool doublePoints = false;
   for (int i = 1; i < argc; ++i)

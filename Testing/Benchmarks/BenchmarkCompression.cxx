@@ -16,6 +16,7 @@
 // (decode + unfold) seconds.
 #include "CompressionSearch.h"
 #include "MeshIO.h"
+#include "ProcessMemory.h"
 #include "vtkFoldingTreeBuilder.h"
 #include "vtkFoldingTreeCompactReader.h"
 #include "vtkFoldingTreeCompactWriter.h"
@@ -145,6 +146,7 @@ const std::map<std::string, std::string> Table1 = { { "dino_cgal", "Dino" },
 
 int main(int argc, char* argv[])
 {
+  foldingmeshes::cli::KeepFreedMemoryForReuse(); // as the command-line program does
   vtkSMPTools::SetBackend("STDThread");
   int bits = 0;
   bool rotation = false, search = false, foldDefaults = false;

@@ -36,6 +36,7 @@
 // as the unfolder's DistanceToOriginal) or the core's face tree (the same values, 7-25x faster).
 #include "MeshComparison.h"
 #include "MeshIO.h"
+#include "ProcessMemory.h"
 #include "vtkFoldingTreeBuilder.h"
 #include "vtkFoldingTreeIO.h"
 #include "vtkFoldingTreeUnfolder.h"
@@ -341,6 +342,7 @@ void Run(const std::string& path, vtkPolyData* mesh, const Settings& settings)
 
 int main(int argc, char* argv[])
 {
+  foldingmeshes::cli::KeepFreedMemoryForReuse(); // as the command-line program does
   std::vector<std::string> meshes;
   Settings settings;
   for (int i = 1; i < argc; ++i)
