@@ -14,6 +14,13 @@ namespace foldingmeshes
 {
 namespace unfolder_detail
 {
+namespace
+{
+/// A rotation node's points within this share of the diagonal of its axis are on it (Turn;
+/// the builder's sector cut moves its poles onto the axis, 1e-6 of the diagonal around it).
+constexpr double PoleOfDiagonal = 1e-9;
+}
+
 Piece Unfolder::Unfold(int index)
 {
   const FoldingNode& node = this->Tree.nodes[index];
@@ -210,6 +217,17 @@ void Unfolder::Turn(int index, Piece& piece)
   const int k = node.rotationOrder;
   const Piece sector = piece;
   std::vector<int> sectorOf(piece.points.size(), 0);
+  // Points on the axis (the builder moves a sector's poles onto it) stay where they are in
+  // every copy: turned, they would differ by rounding, and the stitch, which pairs each seam
+  // vertex with its nearest one of another copy, could then weld the k poles into two points
+  // (a fan of 6 turned copies came back with a doubled pole and three faces over the hole).
+  const double onAxis = PoleOfDiagonal * this->Tree.diagonal;
+  std::vector<char> pole(sector.points.size(), 0);
+  for (size_t v = 0; v < sector.points.size(); ++v)
+  {
+    const Vec3 r = sector.points[v] - node.axis.origin;
+    pole[v] = (r - r.dot(node.axis.direction) * node.axis.direction).norm() <= onAxis;
+  }
   for (int j = 1; j < k; ++j)
   {
     const AxisTurn turn(node.axis, 2.0 * EIGEN_PI * j / k);
@@ -227,8 +245,9 @@ void Unfolder::Turn(int index, Piece& piece)
       this->Result.copies.push_back(copy);
     }
     Piece turned = sector;
-    for (Vec3& p : turned.points)
-      p = turn.Point(p);
+    for (size_t v = 0; v < turned.points.size(); ++v)
+      if (!pole[v])
+        turned.points[v] = turn.Point(turned.points[v]);
     for (int& c : turned.pointCopy)
       c = turnedCopy[c];
     for (int& c : turned.faceCopy)

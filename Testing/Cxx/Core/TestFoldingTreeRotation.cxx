@@ -16,7 +16,9 @@
 // - a vase beside a separate box: the vase is a remaining region of the root's segmentation
 //   and becomes a rotation node of its own;
 // - with rotation nodes off, or on a shape with no rotational symmetry (a lumpy vase), no
-//   rotation node.
+//   rotation node;
+// - flat fans of 5, 6 and 12 triangles about a centre (the root a rotation node, its sector
+//   one face): the turned copies meet in one pole, the faces and area those of the input.
 // Run with FOLDINGMESHES_TRACE set to see the builder's decisions.
 //
 //   TestFoldingTreeRotation
@@ -234,10 +236,68 @@ void NoRotation()
   const FoldingTree tree = FoldAndCheck("lumpy vase", Moved(MakeVase(lumpy, 48, 24), Motion(12)));
   EXPECT(CountRotationNodes(tree, first) == 0, "lumpy vase: a rotation node was made");
 }
+
+double SurfaceArea(const std::vector<Vec3>& points, const std::vector<Triangle>& triangles)
+{
+  double area = 0.0;
+  for (const Triangle& t : triangles)
+    area += 0.5 * (points[t[1]] - points[t[0]]).cross(points[t[2]] - points[t[0]]).norm();
+  return area;
+}
+
+/// Flat regular n-gons as fans about their centre, moved: where the root is a rotation node
+/// (its sector one face), the n turned copies meet in one pole (before, rounding left the
+/// turned poles apart and the stitch welded them into two points, with faces laid over the
+/// hole between them: a fan of 6 came back with 9 faces and 1.5 times its area). The fans of 5
+/// and 6 must get a rotation node; the octagon's planes may win (a tie goes to the fold).
+void Fans()
+{
+  int rotated = 0, onePole = 0;
+  for (int n : { 5, 6, 8, 12 })
+    for (unsigned seed = 1; seed <= 6; ++seed)
+    {
+      TriangleMesh fan;
+      fan.points.push_back(Vec3::Zero());
+      for (int i = 0; i < n; ++i)
+        fan.points.emplace_back(std::cos(2.0 * Pi * i / n), std::sin(2.0 * Pi * i / n), 0.0);
+      for (int i = 0; i < n; ++i)
+        fan.triangles.push_back({ 0, 1 + i, 1 + (i + 1) % n });
+      fan = Moved(fan, Motion(100 + seed));
+      FoldingTreeOptions o;
+      o.rotationNodes = true;
+      o.useMinimumFaces = false;
+      const double epsilon = 0.02 * coretest::Diagonal(fan);
+      const FoldingTree tree = coretest::Fold(fan, epsilon, o);
+      int first = -1;
+      CountRotationNodes(tree, first);
+      EXPECT(first == 0 || n > 6,
+        "fan of " << n << ", motion " << seed << ": the root is not a rotation node");
+      if (first != 0)
+        continue;
+      ++rotated;
+      const UnfoldedMesh u = coretest::Unfold(tree);
+      int poles = 0;
+      for (const Vec3& p : u.points)
+        poles += (p - fan.points[0]).norm() <= 1e-9;
+      const double ratio =
+        SurfaceArea(u.points, u.triangles) / SurfaceArea(fan.points, fan.triangles);
+      const bool ok =
+        poles == 1 && static_cast<int>(u.triangles.size()) == n && std::abs(ratio - 1.0) < 1e-9;
+      onePole += ok;
+      EXPECT(ok,
+        "fan of " << n << ", motion " << seed << ": " << poles << " points at the pole, "
+                  << u.triangles.size() << " faces, area ratio " << ratio);
+    }
+  std::printf("fans of 5, 6, 8, 12 triangles, 6 motions each: %d with a rotation node at the "
+              "root, %d of them unfolded with one pole and their own faces\n",
+    rotated,
+    onePole);
+}
 }
 
 int main()
 {
+  Fans();
   TwistedVases(false);
   TwistedVases(true);
   Revolution();
