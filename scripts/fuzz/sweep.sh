@@ -4,7 +4,12 @@
 # <faces the repair dropped> <failed checks>". From the repository's top folder, with the
 # build in build/ and ../shared beside it. Usage: scripts/fuzz/sweep.sh OUT [MESHES]
 # MESHES (optional, quoted): only these meshes; "artist" for four artist-like meshes (not in the
-# default 440: 20 cases each, about half a minute a case).
+# default 440: 20 cases each, about half a minute a case); "rotation" for the default meshes
+# with the builder's RotationNodes on instead of the five option sets (two: with and without
+# the face stop; 176 cases; issue 22).
+# Known there: the bearing's unfolded area is 1.06-1.25 times its input's (its sectors are cut
+# along their half-planes, and surface is laid twice where the copies' cut seams meet; within
+# epsilon) - the "area" check fails on its 8 cases.
 set -u
 out=${1:?usage: sweep.sh OUT [MESHES]}
 : > "$out"
@@ -20,12 +25,14 @@ done
 meshes="square rect triangle isosceles fan6 fan8 polyfan6 grid4 grid6 cube boxlong twocubes
   twocubes_asym sphere12_10 sphere16_12 cyl8 cyl12 cylraw12 bumpbox Lprism
   file:../shared/data/meshes/anchor_cgal.off file:../shared/data/meshes/bearing_psb341.off"
-if [ -n "${2:-}" ]; then
-  meshes=${2/artist/$artist}
-fi
 options=('{}' '{"UseMinimumFaces": false}' '{"UseMinimumFaces": false, "UseMaximumFolds": false}'
   '{"UseMinimumFaces": false, "UseMinimumAreaFraction": false}'
   '{"UseMinimumFaces": false, "KeepSide": 1}')
+if [ "${2:-}" = rotation ]; then
+  options=('{"RotationNodes": true}' '{"RotationNodes": true, "UseMinimumFaces": false}')
+elif [ -n "${2:-}" ]; then
+  meshes=${2/artist/$artist}
+fi
 for m in $meshes; do
   doubles="false true"
   [ "${m#file:}" != "$m" ] && [ "${m#file:../shared}" = "$m" ] && doubles=false # a file: no effect
