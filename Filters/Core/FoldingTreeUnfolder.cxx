@@ -222,11 +222,12 @@ void Unfolder::Turn(int index, Piece& piece)
   // vertex with its nearest one of another copy, could then weld the k poles into two points
   // (a fan of 6 turned copies came back with a doubled pole and three faces over the hole).
   const double onAxis = PoleOfDiagonal * this->Tree.diagonal;
+  const Vec3 direction = node.axis.direction.normalized(); // read trees: unit within 1e-6
   std::vector<char> pole(sector.points.size(), 0);
   for (size_t v = 0; v < sector.points.size(); ++v)
   {
     const Vec3 r = sector.points[v] - node.axis.origin;
-    pole[v] = (r - r.dot(node.axis.direction) * node.axis.direction).norm() <= onAxis;
+    pole[v] = (r - r.dot(direction) * direction).norm() <= onAxis;
   }
   for (int j = 1; j < k; ++j)
   {

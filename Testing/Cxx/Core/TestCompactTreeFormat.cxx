@@ -15,7 +15,8 @@
 // - bad input fails cleanly with an error, never a crash: every truncation of a file, flipped
 //   bytes (checksum), flipped bytes in the tree section behind a valid checksum (a small fuzz
 //   corpus), another version, another magic number, huge counts, an invalid tree to encode,
-//   quantisation bits out of range.
+//   quantisation bits out of range;
+// - fans folded with rotation nodes, written at 8 bits: one pole, their own faces and area.
 #include "CompactTreeFormat.h"
 #include "CoreTestUtilities.h"
 #include "ProceduralMeshes.h"
@@ -420,8 +421,59 @@ void BadInput(const FoldingTree& tree)
 }
 }
 
+/// Fans of 5, 6 and 12 triangles about a centre, moved, folded with rotation nodes (the root a
+/// rotation node, one face stored): written at 8 bits (the pole then lies off the axis by up to
+/// the quantisation error) and read back, they unfold with one pole and their own faces and
+/// area, within the root epsilon.
+void RotationFans()
+{
+  for (int n : { 5, 6, 12 })
+    for (unsigned seed : { 3u, 8u })
+    {
+      TriangleMesh fan;
+      fan.points.push_back(Vec3::Zero());
+      for (int i = 0; i < n; ++i)
+        fan.points.emplace_back(
+          std::cos(2.0 * EIGEN_PI * i / n), std::sin(2.0 * EIGEN_PI * i / n), 0.0);
+      for (int i = 0; i < n; ++i)
+        fan.triangles.push_back({ 0, 1 + i, 1 + (i + 1) % n });
+      std::mt19937 g(seed);
+      std::uniform_real_distribution<double> u(-1.0, 1.0);
+      const Eigen::Matrix3d turn =
+        Eigen::AngleAxisd(3.0 * u(g), Vec3(u(g), u(g), u(g)).normalized()).toRotationMatrix();
+      const Vec3 shift(5.0 * u(g), 5.0 * u(g), 5.0 * u(g));
+      for (Vec3& p : fan.points)
+        p = turn * p + shift;
+      FoldingTreeOptions options;
+      options.rotationNodes = true;
+      options.useMinimumFaces = false;
+      const FoldingTree tree = coretest::Fold(fan, 0.02 * coretest::Diagonal(fan), options);
+      const std::string name = "fan of " + std::to_string(n) + ", seed " + std::to_string(seed);
+      REQUIRE(!tree.nodes.empty() && tree.nodes[0].kind == FoldingNodeKind::Rotation,
+        name << ": the root is not a rotation node");
+      RoundTrip(fan, tree, 8, name.c_str());
+      FoldingTree decoded;
+      std::string error;
+      REQUIRE(DecodeCompactTree(Encode(tree, 8), decoded, error), name << ": decode: " << error);
+      const UnfoldedMesh unfolded = coretest::Unfold(decoded);
+      double area = 0.0;
+      for (const Triangle& t : unfolded.triangles)
+        area += 0.5 *
+          (unfolded.points[t[1]] - unfolded.points[t[0]])
+            .cross(unfolded.points[t[2]] - unfolded.points[t[0]])
+            .norm();
+      const double expected = 0.5 * n * std::sin(2.0 * EIGEN_PI / n);
+      EXPECT(static_cast<int>(unfolded.triangles.size()) == n &&
+          static_cast<int>(unfolded.points.size()) == n + 1 &&
+          std::abs(area / expected - 1.0) < 0.01,
+        name << " at 8 bits: " << unfolded.triangles.size() << " faces, " << unfolded.points.size()
+             << " points, area ratio " << area / expected);
+    }
+}
+
 int main()
 {
+  RotationFans();
   struct Case
   {
     const char* name;
