@@ -264,11 +264,8 @@ bool Builder::PlanRotation(int index,
       // and the loose one was the whole region or its sector failed (a smaller or empty loose
       // region leaves the strict one smaller still).
       std::vector<char> loose;
-      bool tryStrict = true;
       for (const bool strict : { false, true })
       {
-        if (planned || (strict && !tryStrict))
-          break;
         std::vector<char> region = InvariantRegion(w, label, r.axis, covered[i], eps, strict);
         if (strict && region == loose)
           break;
@@ -287,20 +284,17 @@ bool Builder::PlanRotation(int index,
             faces,
             100.0 * area / Area(w),
             strict ? "strict" : "loose"));
-        if (faces == 0 || faces == w.NumberOfFaces() || area < minimumArea)
+        const bool part = faces > 0 && faces < w.NumberOfFaces() && area >= minimumArea;
+        if (part && this->PlanSector(r, Extract(w, region), { covered[i] }, eps, plan, nullptr))
         {
-          tryStrict = faces == w.NumberOfFaces();
-          loose = std::move(region);
-          continue;
-        }
-        planned = this->PlanSector(r, Extract(w, region), { covered[i] }, eps, plan, nullptr);
-        if (planned)
-        {
+          planned = true;
           plan.region = std::move(region);
           plan.regionFaces = faces;
+          break;
         }
-        else
-          loose = std::move(region);
+        if (!part && faces < w.NumberOfFaces())
+          break;
+        loose = std::move(region);
       }
     }
   }

@@ -97,14 +97,12 @@ std::vector<char> InvariantRegion(const WorkMesh& w,
       turned.reserve(samples.size());
       for (const Vec3& x : samples)
         turned.push_back(turn.Point(x));
-      std::vector<double> distance, anyDistance;
-      std::vector<int> closest;
-      toRegion.Closest(turned, distance, closest);
+      const std::vector<double> distance = toRegion.Distances(turned);
+      std::vector<double> anyDistance;
       if (strict)
         anyDistance = toMesh->Distances(turned);
       for (size_t i = 0; i < samples.size(); ++i)
-        bad[i] = bad[i] || distance[i] > eps || closest[i] < 0 ||
-          (strict && distance[i] > anyDistance[i] + tie);
+        bad[i] = bad[i] || !(distance[i] <= eps) || (strict && distance[i] > anyDistance[i] + tie);
     }
     std::vector<char> badPoint(w.points.size(), 0);
     for (size_t i = 0; i < points.size(); ++i)

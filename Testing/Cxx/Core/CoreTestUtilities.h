@@ -162,6 +162,16 @@ inline EdgeStats CountEdges(const std::vector<foldingmeshes::Triangle>& triangle
   return s;
 }
 
+/// Total area of the triangles.
+inline double SurfaceArea(const std::vector<foldingmeshes::Vec3>& p,
+  const std::vector<foldingmeshes::Triangle>& t)
+{
+  double a = 0.0;
+  for (const foldingmeshes::Triangle& f : t)
+    a += 0.5 * (p[f[1]] - p[f[0]]).cross(p[f[2]] - p[f[0]]).norm();
+  return a;
+}
+
 /// Signed volume enclosed by a closed triangle mesh (positive: oriented outward).
 inline double SignedVolume(const std::vector<foldingmeshes::Vec3>& p,
   const std::vector<foldingmeshes::Triangle>& t)

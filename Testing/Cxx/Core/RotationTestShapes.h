@@ -1,5 +1,6 @@
 // Procedural shapes with exact rotational symmetry for the rotation tests (TestRotationalSymmetry,
-// TestFoldingTreeRotation): twisted k-fold vases, a box to add beside them, seeded rigid motions.
+// TestFoldingTreeRotation, TestCompactTreeFormat): twisted k-fold vases, a box to add beside
+// them, flat fans, seeded rigid motions.
 #ifndef foldingmeshes_RotationTestShapes_h
 #define foldingmeshes_RotationTestShapes_h
 
@@ -96,6 +97,19 @@ inline TriangleMesh MakeVase(const VaseShape& s, int segments, int rings)
   if (s.polygonCaps) // the poles unused: dropped
     m.points.resize(bottom);
   return m;
+}
+
+/// A flat regular n-gon of radius 1 about the origin in the plane z = 0, a fan of n triangles
+/// about its centre (point 0).
+inline TriangleMesh MakeFan(int n)
+{
+  TriangleMesh fan;
+  fan.points.push_back(Vec3::Zero());
+  for (int i = 0; i < n; ++i)
+    fan.points.emplace_back(std::cos(2.0 * Pi * i / n), std::sin(2.0 * Pi * i / n), 0.0);
+  for (int i = 0; i < n; ++i)
+    fan.triangles.push_back({ 0, 1 + i, 1 + (i + 1) % n });
+  return fan;
 }
 
 /// A closed box of edge `side` centred at `c` appended to m (a separate part).

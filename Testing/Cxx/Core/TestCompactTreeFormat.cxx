@@ -20,6 +20,7 @@
 #include "CompactTreeFormat.h"
 #include "CoreTestUtilities.h"
 #include "ProceduralMeshes.h"
+#include "RotationTestShapes.h"
 #include "SurfaceDistance.h"
 
 #include <zlib.h>
@@ -430,13 +431,7 @@ void RotationFans()
   for (int n : { 5, 6, 12 })
     for (unsigned seed : { 3u, 8u })
     {
-      TriangleMesh fan;
-      fan.points.push_back(Vec3::Zero());
-      for (int i = 0; i < n; ++i)
-        fan.points.emplace_back(
-          std::cos(2.0 * EIGEN_PI * i / n), std::sin(2.0 * EIGEN_PI * i / n), 0.0);
-      for (int i = 0; i < n; ++i)
-        fan.triangles.push_back({ 0, 1 + i, 1 + (i + 1) % n });
+      TriangleMesh fan = rotationtest::MakeFan(n);
       std::mt19937 g(seed);
       std::uniform_real_distribution<double> u(-1.0, 1.0);
       const Eigen::Matrix3d turn =
@@ -456,12 +451,7 @@ void RotationFans()
       std::string error;
       REQUIRE(DecodeCompactTree(Encode(tree, 8), decoded, error), name << ": decode: " << error);
       const UnfoldedMesh unfolded = coretest::Unfold(decoded);
-      double area = 0.0;
-      for (const Triangle& t : unfolded.triangles)
-        area += 0.5 *
-          (unfolded.points[t[1]] - unfolded.points[t[0]])
-            .cross(unfolded.points[t[2]] - unfolded.points[t[0]])
-            .norm();
+      const double area = coretest::SurfaceArea(unfolded.points, unfolded.triangles);
       const double expected = 0.5 * n * std::sin(2.0 * EIGEN_PI / n);
       EXPECT(static_cast<int>(unfolded.triangles.size()) == n &&
           static_cast<int>(unfolded.points.size()) == n + 1 &&

@@ -237,14 +237,6 @@ void NoRotation()
   EXPECT(CountRotationNodes(tree, first) == 0, "lumpy vase: a rotation node was made");
 }
 
-double SurfaceArea(const std::vector<Vec3>& points, const std::vector<Triangle>& triangles)
-{
-  double area = 0.0;
-  for (const Triangle& t : triangles)
-    area += 0.5 * (points[t[1]] - points[t[0]]).cross(points[t[2]] - points[t[0]]).norm();
-  return area;
-}
-
 /// Flat regular n-gons as fans about their centre, moved: where the root is a rotation node
 /// (its sector one face), the n turned copies meet in one pole (before, rounding left the
 /// turned poles apart and the stitch welded them into two points, with faces laid over the
@@ -256,13 +248,7 @@ void Fans()
   for (int n : { 5, 6, 8, 12 })
     for (unsigned seed = 1; seed <= 6; ++seed)
     {
-      TriangleMesh fan;
-      fan.points.push_back(Vec3::Zero());
-      for (int i = 0; i < n; ++i)
-        fan.points.emplace_back(std::cos(2.0 * Pi * i / n), std::sin(2.0 * Pi * i / n), 0.0);
-      for (int i = 0; i < n; ++i)
-        fan.triangles.push_back({ 0, 1 + i, 1 + (i + 1) % n });
-      fan = Moved(fan, Motion(100 + seed));
+      const TriangleMesh fan = Moved(MakeFan(n), Motion(100 + seed));
       FoldingTreeOptions o;
       o.rotationNodes = true;
       o.useMinimumFaces = false;
@@ -279,8 +265,8 @@ void Fans()
       int poles = 0;
       for (const Vec3& p : u.points)
         poles += (p - fan.points[0]).norm() <= 1e-9;
-      const double ratio =
-        SurfaceArea(u.points, u.triangles) / SurfaceArea(fan.points, fan.triangles);
+      const double ratio = coretest::SurfaceArea(u.points, u.triangles) /
+        coretest::SurfaceArea(fan.points, fan.triangles);
       const bool ok =
         poles == 1 && static_cast<int>(u.triangles.size()) == n && std::abs(ratio - 1.0) < 1e-9;
       onePole += ok;

@@ -32,14 +32,6 @@ using namespace rotationtest;
 namespace
 {
 
-double Area(const TriangleMesh& m)
-{
-  double a = 0.0;
-  for (const Triangle& t : m.triangles)
-    a += 0.5 * (m.points[t[1]] - m.points[t[0]]).cross(m.points[t[2]] - m.points[t[0]]).norm();
-  return a;
-}
-
 struct Case
 {
   const char* name;
@@ -61,7 +53,8 @@ void Check(const Case& c, int expectedOrder, double minimumRegion)
     : MakeVase(c.shape, segments, 24);
   if (c.boxFraction > 0.0)
   {
-    const double side = std::sqrt(c.boxFraction * Area(m) / 6.0);
+    const double side =
+      std::sqrt(c.boxFraction * coretest::SurfaceArea(m.points, m.triangles) / 6.0);
     AddBox(m, Vec3(1.3 + side, 0.2, 1.0), side);
   }
   const Eigen::Isometry3d motion = Motion(c.seed);
