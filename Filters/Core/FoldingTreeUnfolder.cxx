@@ -215,20 +215,33 @@ void Unfolder::Turn(int index, Piece& piece)
 {
   const FoldingNode& node = this->Tree.nodes[index];
   const int k = node.rotationOrder;
-  const Piece sector = piece;
-  std::vector<int> sectorOf(piece.points.size(), 0);
   // Points on the axis (the builder moves a sector's poles onto it) stay where they are in
   // every copy: turned, they would differ by rounding, and the stitch, which pairs each seam
   // vertex with its nearest one of another copy, could then weld the k poles into two points
   // (a fan of 6 turned copies came back with a doubled pole and three faces over the hole).
+  // A seam vertex near the axis - a pole read back from a compact file, off the axis by up to
+  // the quantisation error - goes onto it first, as the stitch would place the k copies' full
+  // cluster (at their mean, on the axis), when its budget allows the move.
   const double onAxis = PoleOfDiagonal * this->Tree.diagonal;
+  const double nearAxis = 0.5 * this->Options.stitchToleranceScale * node.epsilon;
   const Vec3 direction = node.axis.direction.normalized(); // read trees: unit within 1e-6
-  std::vector<char> pole(sector.points.size(), 0);
-  for (size_t v = 0; v < sector.points.size(); ++v)
+  std::vector<char> pole(piece.points.size(), 0);
+  for (int v = 0; v < piece.NumberOfPoints(); ++v)
   {
-    const Vec3 r = sector.points[v] - node.axis.origin;
-    pole[v] = (r - r.dot(direction) * direction).norm() <= onAxis;
+    const Vec3 r = piece.points[v] - node.axis.origin;
+    const Vec3 off = r - r.dot(direction) * direction;
+    const double d = off.norm();
+    pole[v] = d <= onAxis;
+    if (!pole[v] && this->Options.stitch && d <= nearAxis && d <= piece.budget[v] &&
+      IsTear(piece.tear[v], node.depth))
+    {
+      piece.points[v] -= off;
+      piece.budget[v] -= d;
+      pole[v] = 1;
+    }
   }
+  const Piece sector = piece;
+  std::vector<int> sectorOf(piece.points.size(), 0);
   for (int j = 1; j < k; ++j)
   {
     const AxisTurn turn(node.axis, 2.0 * EIGEN_PI * j / k);

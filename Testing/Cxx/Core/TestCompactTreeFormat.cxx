@@ -429,16 +429,28 @@ void BadInput(const FoldingTree& tree)
 void RotationFans()
 {
   for (int n : { 5, 6, 12 })
-    for (unsigned seed : { 3u, 8u })
+    for (unsigned seed : { 3u, 8u, 203u, 208u })
     {
+      // Seeds 3, 8: a rotation about a random axis and a shift; 203, 208: rotationtest::Motion
+      // (its fan of 12 at seed 203 read back with its pole split in two, before the unfolder
+      // moved a pole near the axis onto it).
       TriangleMesh fan = rotationtest::MakeFan(n);
-      std::mt19937 g(seed);
-      std::uniform_real_distribution<double> u(-1.0, 1.0);
-      const Eigen::Matrix3d turn =
-        Eigen::AngleAxisd(3.0 * u(g), Vec3(u(g), u(g), u(g)).normalized()).toRotationMatrix();
-      const Vec3 shift(5.0 * u(g), 5.0 * u(g), 5.0 * u(g));
-      for (Vec3& p : fan.points)
-        p = turn * p + shift;
+      if (seed > 200)
+      {
+        const Eigen::Isometry3d motion = rotationtest::Motion(seed);
+        for (Vec3& p : fan.points)
+          p = motion * p;
+      }
+      else
+      {
+        std::mt19937 g(seed);
+        std::uniform_real_distribution<double> u(-1.0, 1.0);
+        const Eigen::Matrix3d turn =
+          Eigen::AngleAxisd(3.0 * u(g), Vec3(u(g), u(g), u(g)).normalized()).toRotationMatrix();
+        const Vec3 shift(5.0 * u(g), 5.0 * u(g), 5.0 * u(g));
+        for (Vec3& p : fan.points)
+          p = turn * p + shift;
+      }
       FoldingTreeOptions options;
       options.rotationNodes = true;
       options.useMinimumFaces = false;
