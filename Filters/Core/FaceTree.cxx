@@ -372,6 +372,31 @@ FaceTree::Hit FaceTree::ClosestCompatibleFaceAmong(const Vec3& p,
   return hit;
 }
 
+bool FaceTree::HasCompatibleFaceWithin(const Vec3& p,
+  const Vec3& normal,
+  double cosLimit,
+  double maxDistance) const
+{
+  if (this->Nodes.empty())
+    return false;
+  const double cosL = std::clamp(cosLimit, -1.0, 1.0);
+  const double sinL = std::sqrt((1.0 - cosL) * (1.0 + cosL));
+  // best2 stays maxDistance^2 until a face is taken; then every node left is pruned.
+  double best2 = maxDistance * maxDistance;
+  Hit hit;
+  bool found = false;
+  this->Traverse(
+    p,
+    best2,
+    [&](const Node& node) { return found || node.cone.Excludes(normal, cosL, sinL); },
+    [&](int k)
+    {
+      found =
+        found || this->TryFace(p, normal, cosLimit, sinL, k, best2, hit, [](int) { return false; });
+    });
+  return found;
+}
+
 bool FaceTree::CompatibleFaceHit(const Vec3& p,
   const Vec3& normal,
   double cosLimit,

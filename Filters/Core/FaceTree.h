@@ -55,6 +55,16 @@ public:
     const std::vector<char>* excludedFaces = nullptr) const;
 
   /**
+   * ClosestCompatibleFace(p, normal, cosLimit, maxDistance).face >= 0, answered by stopping at
+   * the first compatible face within maxDistance (the same tests, no search for the closest):
+   * for callers that only count the points with a partner.
+   */
+  bool HasCompatibleFaceWithin(const Vec3& p,
+    const Vec3& normal,
+    double cosLimit,
+    double maxDistance) const;
+
+  /**
    * Face `face` as ClosestCompatibleFace tests it: true (and `hit` its closest point and
    * distance) when it is compatible with `normal` and within maxDistance; false for other
    * faces, degenerate faces and ids out of range. A true answer bounds the closest compatible

@@ -62,7 +62,10 @@ public:
     {
       const double a = this->Mesh.vertexAreas[v];
       left -= a;
-      if (TurnedHit(this->Mesh, this->Faces, turn, v, this->CosLimit, this->Tolerance).face >= 0)
+      if (this->Faces.HasCompatibleFaceWithin(turn.Point(this->Mesh.points[v]),
+            turn.Direction(this->Mesh.vertexNormals[v]),
+            this->CosLimit,
+            this->Tolerance))
         passed += a;
       if (passed + left < needed)
       {

@@ -183,7 +183,8 @@ int RefineAxis(const PreparedMesh& mesh,
               turned[r % turns.size()][0],
               sample[r / turns.size()],
               cosLimit,
-              2.0 * sigma);
+              2.0 * sigma,
+              hits[r].face); // the last step's face: a hint, the same answer sooner
         });
       Eigen::Matrix4d jtj = Eigen::Matrix4d::Zero();
       Eigen::Vector4d jte = Eigen::Vector4d::Zero();
@@ -254,10 +255,11 @@ void EvaluateOnMesh(const PreparedMesh& mesh,
       {
         if (!(mesh.vertexAreas[v] > 0.0))
           continue;
+        // The largest over the turns: a turn without a partner (infinite) settles it.
         double d = 0.0;
-        for (const AxisTurn& turn : turned)
+        for (size_t t = 0; t < turned.size() && std::isfinite(d); ++t)
           d = std::max(d,
-            TurnedHit(mesh, faces, turn, static_cast<int>(v), cosLimit, 3.0 * options.epsilon)
+            TurnedHit(mesh, faces, turned[t], static_cast<int>(v), cosLimit, 3.0 * options.epsilon)
               .distance);
         result.distance[v] = d;
       }

@@ -1,0 +1,115 @@
+// FaceTree::HasCompatibleFaceWithin (the rotation scan's query: is there a partner at all?)
+// answers exactly ClosestCompatibleFace(...).face >= 0: on the bilateral blob, on the blob with
+// large triangles across its box (a soup) and on the blob turned obliquely (a rotated box
+// frame), for random points near and far, random and surface normals, compatibility angles of
+// 10 to 120 degrees and search radii from a hundredth of the diagonal to past the box - and
+// at the radius equal to the closest compatible distance itself, and just below it (the
+// boundary, where a search that stops early could decide otherwise). Both answers must occur.
+#include "CoreTestUtilities.h"
+#include "FaceTree.h"
+#include "ProceduralMeshes.h"
+
+#include <Eigen/Geometry>
+
+#include <cmath>
+#include <random>
+
+using foldingmeshes::FaceTree;
+using foldingmeshes::PreparedMesh;
+using foldingmeshes::TriangleMesh;
+using foldingmeshes::Vec3;
+using foldingmeshes::testing::MakeBilateralBlob;
+
+namespace
+{
+const double kPi = 3.14159265358979323846;
+std::mt19937_64 rng(7);
+
+double U(double a, double b)
+{
+  return std::uniform_real_distribution<double>(a, b)(rng);
+}
+
+Vec3 RandomUnit()
+{
+  Vec3 v;
+  do
+    v = Vec3(U(-1, 1), U(-1, 1), U(-1, 1));
+  while (v.squaredNorm() > 1.0 || v.squaredNorm() < 1e-6);
+  return v.normalized();
+}
+
+void Check(const char* name, const PreparedMesh& m, int queries)
+{
+  const FaceTree tree(m);
+  const double diagonal = m.diagonal;
+  const double angles[] = { 10.0, 45.0, 90.0, 120.0 };
+  int differ = 0, yes = 0, no = 0, boundary = 0;
+  for (int i = 0; i < queries; ++i)
+  {
+    const int v = static_cast<int>(U(0, m.NumberOfPoints() - 1e-9));
+    const bool near = i % 2 == 0;
+    const Vec3 p = near
+      ? Vec3(m.points[v] + U(0, 0.05) * diagonal * RandomUnit())
+      : Vec3(m.boundsMin +
+          (m.boundsMax - m.boundsMin).cwiseProduct(Vec3(U(-0.2, 1.2), U(-0.2, 1.2), U(-0.2, 1.2))));
+    const Vec3 n = i % 3 == 0 ? RandomUnit() : m.vertexNormals[v];
+    const double cosLimit = std::cos(angles[i % 4] * kPi / 180.0);
+    const double radii[] = { 0.01 * diagonal, 0.05 * diagonal, 0.3 * diagonal, 2.0 * diagonal };
+    for (double r : radii)
+    {
+      const bool has = tree.HasCompatibleFaceWithin(p, n, cosLimit, r);
+      const bool closest = tree.ClosestCompatibleFace(p, n, cosLimit, r).face >= 0;
+      differ += has != closest;
+      (has ? yes : no) += 1;
+    }
+    // At the closest compatible distance itself, and the next double below it.
+    const FaceTree::Hit hit =
+      tree.ClosestCompatibleFace(p, n, cosLimit, std::numeric_limits<double>::infinity());
+    if (hit.face >= 0)
+      for (double r : { hit.distance, std::nextafter(hit.distance, 0.0) })
+      {
+        differ += tree.HasCompatibleFaceWithin(p, n, cosLimit, r) !=
+          (tree.ClosestCompatibleFace(p, n, cosLimit, r).face >= 0);
+        ++boundary;
+      }
+  }
+  EXPECT(
+    differ == 0, name << ": " << differ << " existence answers differ from the closest search's");
+  EXPECT(yes > 0 && no > 0,
+    name << ": the queries must see both answers (" << yes << " yes, " << no << " no)");
+  EXPECT(boundary > queries / 2, name << ": too few boundary queries (" << boundary << ")");
+}
+}
+
+int main()
+{
+  const TriangleMesh blob = coretest::ToTriangleMesh(MakeBilateralBlob(3000).mesh);
+  Check("bilateral blob", coretest::Prepare(blob), 600);
+
+  TriangleMesh soup = blob;
+  Vec3 lo = soup.points[0], hi = soup.points[0];
+  for (const Vec3& q : soup.points)
+  {
+    lo = lo.cwiseMin(q);
+    hi = hi.cwiseMax(q);
+  }
+  for (int t = 0; t < 60; ++t)
+  {
+    const int base = static_cast<int>(soup.points.size());
+    const Vec3 a(U(lo.x(), hi.x()), U(lo.y(), hi.y()), U(lo.z(), hi.z()));
+    const Vec3 b(U(lo.x(), hi.x()), U(lo.y(), hi.y()), U(lo.z(), hi.z()));
+    const Vec3 c = 0.5 * (a + b) + (t % 2 == 0 ? 1e-3 : 0.3) * (hi - lo).norm() * RandomUnit();
+    soup.points.insert(soup.points.end(), { a, b, c });
+    soup.triangles.push_back({ base, base + 1, base + 2 });
+  }
+  Check("blob with large triangles", coretest::Prepare(soup), 600);
+
+  TriangleMesh turned = blob;
+  const Eigen::Matrix3d rotation =
+    Eigen::AngleAxisd(0.7, Vec3(1.0, 2.0, 3.0).normalized()).toRotationMatrix();
+  for (Vec3& q : turned.points)
+    q = rotation * q + Vec3(3.0, -1.0, 2.0);
+  Check("turned blob", coretest::Prepare(turned), 600);
+  return coretest::Finish("TestFaceTreeExistence");
+}
