@@ -123,7 +123,8 @@ public:
   ///@{
   /**
    * Tear vertices of different children closer than StitchToleranceScale times the
-   * segmentation node's epsilon may be merged (default 1, range 0..100).
+   * segmentation node's epsilon may be merged (default 1, range 0..100); between the sectors of
+   * a rotation node, a tenth of that (their seams were made to meet by the builder).
    */
   vtkSetClampMacro(StitchToleranceScale, double, 0.0, 100.0);
   vtkGetMacro(StitchToleranceScale, double);

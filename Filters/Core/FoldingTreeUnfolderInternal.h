@@ -355,7 +355,8 @@ private:
   void Stitch(const FoldingNode& node,
     Piece& piece,
     const std::vector<int>& childOf,
-    SeamReport& seam);
+    SeamReport& seam,
+    double toleranceShare = 1.0);
 
 public:
   void WeldBoundaries(Piece& piece, SeamReport& seam);

@@ -27,10 +27,11 @@ constexpr double SameCopyWeldOfEpsilon = 0.01;
 void Unfolder::Stitch(const FoldingNode& node,
   Piece& piece,
   const std::vector<int>& childOf,
-  SeamReport& seam)
+  SeamReport& seam,
+  double toleranceShare)
 {
   const int level = node.depth;
-  const double tol = std::max(this->Options.stitchToleranceScale * node.epsilon,
+  const double tol = std::max(toleranceShare * this->Options.stitchToleranceScale * node.epsilon,
     RoundingOfDiagonal * std::max(this->Tree.diagonal, 1e-300));
   std::vector<char> isTear(piece.points.size());
   for (int v = 0; v < piece.NumberOfPoints(); ++v)

@@ -31,6 +31,9 @@
 //   sphere): the tree lists their non-manifold edges ("InputNonManifoldEdges" on the "Tree"
 //   block) and every input face comes back (face count, no face dropped, the input's
 //   non-manifold edges, Hausdorff within the root epsilon).
+// - the bearing folded with rotation nodes (19 sectors cut along their half-planes) comes back
+//   with its area (within 3%; 1.10 before the sectors' seams were stitched within a tenth of
+//   the stitch tolerance), closed, within the bound;
 // - a fold's mirror image never lies on faces outside its region (a moved octagonal prism,
 //   face stop off: the cap came back twice) - area kept, AreaRatio reported;
 // - folds down to single faces (UseMinimumFaces off, and no stop criterion at all): a
@@ -575,6 +578,34 @@ void MirrorImagesOutsideTheRegion()
   EXPECT(bound <= epsilon, "octagonal prism: proved bound " << bound << " above " << epsilon);
 }
 
+/**
+ * The bearing folded with rotation nodes (a sector of order 19, cut along its half-planes,
+ * folded once more below) comes back with its own area, closed and within the bound: the
+ * sectors' seams are stitched within a tenth of the stitch tolerance (near the axis the full
+ * tolerance reached the next half-plane, and the unfolded bearing had 1.10 times its area).
+ */
+void RotationSeamsKeepTheArea(const std::string& name, vtkPolyData* mesh)
+{
+  const vtkSmartPointer<vtkPolyData> out =
+    FoldAndUnfold(mesh, [](vtkFoldingTreeBuilder* b) { b->RotationNodesOn(); });
+  const double epsilon = Field(out, "RootEpsilon"), bound = Field(out, "HausdorffToOriginalBound");
+  const double ratio = Field(out, "AreaRatio"), copies = Field(out, "NumberOfCopies");
+  const EdgeCounts edges = CountEdges(out);
+  std::printf("%s with rotation nodes: %g copies, area ratio %.4f, bound %.4g of epsilon %.4g, "
+              "open %lld\n",
+    name.c_str(),
+    copies,
+    ratio,
+    bound,
+    epsilon,
+    edges.open);
+  EXPECT(copies >= 19, name << ": " << copies << " copies: no rotation node of order 19 or more");
+  EXPECT(ratio >= 0.98 && ratio <= 1.03,
+    name << ": rotation nodes, unfolded area " << ratio << " times the input's");
+  EXPECT(bound <= epsilon, name << ": rotation nodes, proved bound " << bound << " > " << epsilon);
+  EXPECT(edges.open == 0, name << ": rotation nodes, " << edges.open << " open edges");
+}
+
 int main(int argc, char* argv[])
 {
   namespace pm = foldingmeshes::testing;
@@ -624,6 +655,8 @@ int main(int argc, char* argv[])
     std::printf("  (%.1f s)\n", seconds);
     if (name == "queen_chess_quaddamage")
       SeamGapFillsWithinTolerance(name, mesh);
+    if (name == "bearing_psb341")
+      RotationSeamsKeepTheArea(name, mesh);
   }
   if (Failures > 0)
     std::printf("TestUnfoldingAccuracy: %d check(s) FAILED\n", Failures);
