@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 namespace foldingmeshes
 {
@@ -25,6 +26,14 @@ constexpr int ParallelBuildFaces = 4096;
 /// needs no square root.
 constexpr double PruneRelativeMargin = 1e-6;
 constexpr double PruneAbsoluteMargin = 1e-12;
+
+/// cosLimit clamped to [-1, 1] and the sine of its angle, for NormalCone::Excludes (the sine
+/// from (1 - c)(1 + c): accurate for c near 1).
+std::pair<double, double> ConeLimits(double cosLimit)
+{
+  const double c = std::clamp(cosLimit, -1.0, 1.0);
+  return { c, std::sqrt((1.0 - c) * (1.0 + c)) };
+}
 }
 
 double FaceTree::PruneAdd(const Vec3& p) const
@@ -354,8 +363,8 @@ FaceTree::Hit FaceTree::ClosestCompatibleFaceAmong(const Vec3& p,
   if (this->Nodes.empty())
     return hit;
   // For the normal cones of nodes and faces (NormalCone::Excludes).
-  const double cosL = std::clamp(cosLimit, -1.0, 1.0);
-  const double sinL = std::sqrt((1.0 - cosL) * (1.0 + cosL)); // accurate for cosL near 1
+  const std::pair<double, double> cone = ConeLimits(cosLimit);
+  const double cosL = cone.first, sinL = cone.second;
   double best2 = maxDistance * maxDistance;
   // A compatible hint bounds the search from the start; the minimum (lowest id on ties) is
   // the same with or without it (Beyond's bounds hold with a slack above their rounding, also
@@ -379,8 +388,8 @@ bool FaceTree::HasCompatibleFaceWithin(const Vec3& p,
 {
   if (this->Nodes.empty())
     return false;
-  const double cosL = std::clamp(cosLimit, -1.0, 1.0);
-  const double sinL = std::sqrt((1.0 - cosL) * (1.0 + cosL));
+  const std::pair<double, double> cone = ConeLimits(cosLimit);
+  const double cosL = cone.first, sinL = cone.second;
   // best2 stays maxDistance^2 until a face is taken; then every node left is pruned.
   double best2 = maxDistance * maxDistance;
   Hit hit;

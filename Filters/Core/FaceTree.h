@@ -41,7 +41,7 @@ public:
   /**
    * The face closest to p among the faces compatible with the unit vector `normal`: the
    * normal interpolated (barycentrically, from the vertex normals) at the face's closest
-   * point makes a cosine >= cosLimit with `normal`. Only faces closer than maxDistance
+   * point makes a cosine >= cosLimit with `normal`. Only faces not farther than maxDistance
    * count; none gives face -1 and an infinite distance. `hintFace` (e.g. the answer of a
    * previous query for a nearby point) only speeds the search up: the result is the same.
    * With `excludedFaces` (per face id, nonzero: left out) the answer is the one for the mesh

@@ -22,7 +22,7 @@ namespace
 /// (StitchToleranceScale times its epsilon) reaches the next half-plane (2 r sin(180/k) away
 /// at radius r), where chains of pairs across the sectors moved the seams' vertices over their
 /// neighbours: the bearing's 19 sectors, cut along their half-planes, came back with 1.10
-/// times its area at the full tolerance, 1.04 at a quarter, 1.01 at a tenth (docs/unfolder.md).
+/// times its area at the full tolerance, 1.044 at a quarter, 1.014 at a tenth (docs/unfolder.md).
 constexpr double RotationStitchShare = 0.1;
 /// A rotation node's points within this share of the diagonal of its axis are on it (Turn;
 /// the builder's sector cut moves its poles onto the axis, 1e-6 of the diagonal around it).
@@ -217,8 +217,9 @@ void Unfolder::Reflect(const FoldingNode& node, Piece& piece)
 }
 
 /// The sector turned k - 1 times by 360/k degrees about the axis (copies keep their
-/// orientation), then the seams between the sectors stitched like a segmentation's: the
-/// builder flagged the seam vertices with the node's tear bit and made them meet.
+/// orientation), then the seams between the sectors stitched like a segmentation's, within
+/// RotationStitchShare of its tolerance: the builder flagged the seam vertices with the node's
+/// tear bit and made them meet.
 void Unfolder::Turn(int index, Piece& piece)
 {
   const FoldingNode& node = this->Tree.nodes[index];
@@ -228,8 +229,10 @@ void Unfolder::Turn(int index, Piece& piece)
   // vertex with its nearest one of another copy, could then weld the k poles into two points
   // (a fan of 6 turned copies came back with a doubled pole and three faces over the hole).
   // A seam vertex near the axis - a pole read back from a compact file, off the axis by up to
-  // the quantisation error - goes onto it first, as the stitch would place the k copies' full
-  // cluster (at their mean, on the axis), when its budget allows the move.
+  // the quantisation error - goes onto it first, when its budget allows the move: within half
+  // of StitchToleranceScale times the node's epsilon (five times the sectors' stitch tolerance,
+  // which pairs the k copies of a point only where they lie that close together), so that the
+  // k copies of a pole meet on the axis however far quantisation moved it.
   const double onAxis = PoleOfDiagonal * this->Tree.diagonal;
   const double nearAxis = 0.5 * this->Options.stitchToleranceScale * node.epsilon;
   const Vec3 direction = node.axis.direction.normalized(); // read trees: unit within 1e-6

@@ -20,7 +20,8 @@ struct UnfoldOptions
   /// Stitch and smooth the tears at segmentation nodes; false gives the raw union.
   bool stitch = true;
   /// Tear vertices of different children closer than stitchToleranceScale * (the
-  /// segmentation node's epsilon) may be merged.
+  /// segmentation node's epsilon) may be merged; between a rotation node's sectors, a tenth of
+  /// that (RotationStitchShare in FoldingTreeUnfolder.cxx).
   double stitchToleranceScale = 1.0;
   /// After vertex pairing, insert each tear vertex still without a partner into the nearest
   /// open seam edge of another child within the tolerance (splitting that triangle), which
@@ -138,9 +139,9 @@ struct UnfoldOptions
    * (FoldingTree::inputBorderEdges); without flags (older tree files) nothing is filled - by a
    * minimal-area triangulation of its vertices (a fan around a new point at its centroid when
    * every diagonal would repeat an edge), when every point of every new face lies within
-   * holeToleranceScale * root epsilon of the loop (proved, ProvedLoopDeviation), or the loop is small and
-   * flat, and it has at most maximumHoleEdges edges. A gap that opens into the input's border
-   * is closed by a chord between two border vertices (within 2 * that tolerance). Loops left
+   * holeToleranceScale * root epsilon of the loop (proved, ProvedLoopDeviation), or the loop is
+   * small and flat, and it has at most maximumHoleEdges edges. A gap that opens into the input's
+   * border is closed by a chord between two border vertices (within 2 * that tolerance). Loops left
    * open are reported; `trace` receives where the open, non-manifold and misoriented edges
    * are before and after.
    */

@@ -62,10 +62,7 @@ public:
     {
       const double a = this->Mesh.vertexAreas[v];
       left -= a;
-      if (this->Faces.HasCompatibleFaceWithin(turn.Point(this->Mesh.points[v]),
-            turn.Direction(this->Mesh.vertexNormals[v]),
-            this->CosLimit,
-            this->Tolerance))
+      if (TurnedHasPartner(this->Mesh, this->Faces, turn, v, this->CosLimit, this->Tolerance))
         passed += a;
       if (passed + left < needed)
       {
@@ -190,6 +187,17 @@ FaceTree::Hit TurnedHit(const PreparedMesh& mesh,
 {
   return faces.ClosestCompatibleFace(
     turn.Point(mesh.points[v]), turn.Direction(mesh.vertexNormals[v]), cosLimit, maxDistance, hint);
+}
+
+bool TurnedHasPartner(const PreparedMesh& mesh,
+  const FaceTree& faces,
+  const AxisTurn& turn,
+  int v,
+  double cosLimit,
+  double maxDistance)
+{
+  return faces.HasCompatibleFaceWithin(
+    turn.Point(mesh.points[v]), turn.Direction(mesh.vertexNormals[v]), cosLimit, maxDistance);
 }
 
 ScanEntry ScanAxis(const PreparedMesh& mesh,

@@ -42,6 +42,15 @@ FaceTree::Hit TurnedHit(const PreparedMesh& mesh,
   double maxDistance,
   int hint = -1);
 
+/// TurnedHit(...).face >= 0, sooner: whether the turned vertex v has a compatible face within
+/// maxDistance (FaceTree::HasCompatibleFaceWithin).
+bool TurnedHasPartner(const PreparedMesh& mesh,
+  const FaceTree& faces,
+  const AxisTurn& turn,
+  int v,
+  double cosLimit,
+  double maxDistance);
+
 /// One scanned (axis, order): the smallest passing area of its turns, as a fraction of the
 /// sample's vertex area.
 struct ScanEntry

@@ -162,6 +162,32 @@ inline EdgeStats CountEdges(const std::vector<foldingmeshes::Triangle>& triangle
   return s;
 }
 
+/// A capped cylinder along z (radius r, length 2 h) of `segments` long side slivers and two fans.
+inline foldingmeshes::TriangleMesh SliverCylinder(double r, double h, int segments)
+{
+  using foldingmeshes::Vec3;
+  const double pi = 3.14159265358979323846;
+  foldingmeshes::TriangleMesh m;
+  for (int i = 0; i < segments; ++i)
+  {
+    const double a = 2.0 * pi * i / segments;
+    m.points.push_back(Vec3(r * std::cos(a), r * std::sin(a), -h));
+    m.points.push_back(Vec3(r * std::cos(a), r * std::sin(a), h));
+  }
+  const int bottom = static_cast<int>(m.points.size());
+  m.points.push_back(Vec3(0, 0, -h));
+  m.points.push_back(Vec3(0, 0, h));
+  for (int i = 0; i < segments; ++i)
+  {
+    const int j = (i + 1) % segments;
+    m.triangles.push_back({ 2 * i, 2 * j, 2 * j + 1 });
+    m.triangles.push_back({ 2 * i, 2 * j + 1, 2 * i + 1 });
+    m.triangles.push_back({ bottom, 2 * j, 2 * i });
+    m.triangles.push_back({ bottom + 1, 2 * i + 1, 2 * j + 1 });
+  }
+  return m;
+}
+
 /// Total area of the triangles.
 inline double SurfaceArea(const std::vector<foldingmeshes::Vec3>& p,
   const std::vector<foldingmeshes::Triangle>& t)

@@ -441,30 +441,6 @@ void CheckExactAtSurface(const char* name, const PreparedMesh& m, int queries)
   EXPECT(mismatches == 0, name << ": " << mismatches << " answers differ from the scan");
 }
 
-/// A capped cylinder along z (radius r, length 2 h) of `segments` long side slivers and two fans.
-TriangleMesh SliverCylinder(double r, double h, int segments)
-{
-  TriangleMesh m;
-  for (int i = 0; i < segments; ++i)
-  {
-    const double a = 2.0 * kPi * i / segments;
-    m.points.push_back(Vec3(r * std::cos(a), r * std::sin(a), -h));
-    m.points.push_back(Vec3(r * std::cos(a), r * std::sin(a), h));
-  }
-  const int bottom = static_cast<int>(m.points.size());
-  m.points.push_back(Vec3(0, 0, -h));
-  m.points.push_back(Vec3(0, 0, h));
-  for (int i = 0; i < segments; ++i)
-  {
-    const int j = (i + 1) % segments;
-    m.triangles.push_back({ 2 * i, 2 * j, 2 * j + 1 });
-    m.triangles.push_back({ 2 * i, 2 * j + 1, 2 * i + 1 });
-    m.triangles.push_back({ bottom, 2 * j, 2 * i });
-    m.triangles.push_back({ bottom + 1, 2 * i + 1, 2 * j + 1 });
-  }
-  return m;
-}
-
 TriangleMesh Plate(double z, bool up, int n)
 {
   TriangleMesh m;
@@ -638,7 +614,7 @@ int main()
   }
   {
     // Long slivers, axis-aligned and turned: only the turned cylinder gets a rotated frame.
-    const TriangleMesh cylinder = SliverCylinder(0.025, 0.22, 300);
+    const TriangleMesh cylinder = coretest::SliverCylinder(0.025, 0.22, 300);
     const PreparedMesh straight = coretest::Prepare(cylinder);
     EXPECT(!FaceTree(straight).RotatedFrame(), "axis-aligned cylinder: rotated box frame");
     TriangleMesh turned = cylinder;
