@@ -124,7 +124,8 @@ public:
   /**
    * Tear vertices of different children closer than StitchToleranceScale times the
    * segmentation node's epsilon may be merged (default 1, range 0..100); between the sectors of
-   * a rotation node, a tenth of that (their seams were made to meet by the builder).
+   * a rotation node, a tenth of that (their seams were made to meet by the builder; above order
+   * 31, sin(180/k) of it).
    */
   vtkSetClampMacro(StitchToleranceScale, double, 0.0, 100.0);
   vtkGetMacro(StitchToleranceScale, double);

@@ -23,6 +23,9 @@ namespace
 /// at radius r), where chains of pairs across the sectors moved the seams' vertices over their
 /// neighbours: the bearing's 19 sectors, cut along their half-planes, came back with 1.10
 /// times its area at the full tolerance, 1.044 at a quarter, 1.014 at a tenth (docs/unfolder.md).
+/// Above order 31 the share is sin(180/k) instead: beyond the seam vertices Turn moves onto the
+/// axis (half of StitchToleranceScale times epsilon from it) two half-planes are then farther
+/// apart than the tolerance for any k.
 constexpr double RotationStitchShare = 0.1;
 /// A rotation node's points within this share of the diagonal of its axis are on it (Turn;
 /// the builder's sector cut moves its poles onto the axis, 1e-6 of the diagonal around it).
@@ -284,7 +287,11 @@ void Unfolder::Turn(int index, Piece& piece)
   seam.node = index;
   seam.depth = node.depth;
   if (this->Options.stitch)
-    this->Stitch(node, piece, sectorOf, seam, RotationStitchShare);
+    this->Stitch(node,
+      piece,
+      sectorOf,
+      seam,
+      std::min(RotationStitchShare, std::sin(static_cast<double>(EIGEN_PI) / k)));
   else
     this->CountTears(node, piece, seam);
   this->Result.seams.push_back(seam);

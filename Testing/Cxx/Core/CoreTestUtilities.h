@@ -188,6 +188,34 @@ inline foldingmeshes::TriangleMesh SliverCylinder(double r, double h, int segmen
   return m;
 }
 
+/// `m` with `count` large triangles across its bounding box (long slivers and fat ones in
+/// turn, random orientation: a soup), drawn with uniform(a, b) and randomUnit().
+template <typename Uniform, typename RandomUnit>
+foldingmeshes::TriangleMesh WithLargeTriangles(foldingmeshes::TriangleMesh m,
+  int count,
+  Uniform uniform,
+  RandomUnit randomUnit)
+{
+  using foldingmeshes::Vec3;
+  Vec3 lo = m.points[0], hi = m.points[0];
+  for (const Vec3& q : m.points)
+  {
+    lo = lo.cwiseMin(q);
+    hi = hi.cwiseMax(q);
+  }
+  for (int t = 0; t < count; ++t)
+  {
+    const int base = static_cast<int>(m.points.size());
+    const Vec3 a(uniform(lo.x(), hi.x()), uniform(lo.y(), hi.y()), uniform(lo.z(), hi.z()));
+    const Vec3 b(uniform(lo.x(), hi.x()), uniform(lo.y(), hi.y()), uniform(lo.z(), hi.z()));
+    const double width = t % 2 == 0 ? 1e-3 : 0.3;
+    const Vec3 c = 0.5 * (a + b) + width * (hi - lo).norm() * randomUnit();
+    m.points.insert(m.points.end(), { a, b, c });
+    m.triangles.push_back({ base, base + 1, base + 2 });
+  }
+  return m;
+}
+
 /// Total area of the triangles.
 inline double SurfaceArea(const std::vector<foldingmeshes::Vec3>& p,
   const std::vector<foldingmeshes::Triangle>& t)

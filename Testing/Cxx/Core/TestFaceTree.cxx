@@ -590,23 +590,8 @@ int main()
   {
     // A soup: the blob with 60 large triangles across its bounding box (long slivers and fat
     // ones, random orientation), which the tree splits into pieces.
-    TriangleMesh soup = coretest::ToTriangleMesh(MakeBilateralBlob(3000).mesh);
-    Vec3 lo = soup.points[0], hi = soup.points[0];
-    for (const Vec3& q : soup.points)
-    {
-      lo = lo.cwiseMin(q);
-      hi = hi.cwiseMax(q);
-    }
-    for (int t = 0; t < 60; ++t)
-    {
-      const int base = static_cast<int>(soup.points.size());
-      const Vec3 a(U(lo.x(), hi.x()), U(lo.y(), hi.y()), U(lo.z(), hi.z()));
-      const Vec3 b(U(lo.x(), hi.x()), U(lo.y(), hi.y()), U(lo.z(), hi.z()));
-      const double width = t % 2 == 0 ? 1e-3 : 0.3;
-      const Vec3 c = 0.5 * (a + b) + width * (hi - lo).norm() * RandomUnit();
-      soup.points.insert(soup.points.end(), { a, b, c });
-      soup.triangles.push_back({ base, base + 1, base + 2 });
-    }
+    const TriangleMesh soup = coretest::WithLargeTriangles(
+      coretest::ToTriangleMesh(MakeBilateralBlob(3000).mesh), 60, U, RandomUnit);
     const PreparedMesh m = coretest::Prepare(soup);
     CheckMesh("blob with large triangles", m, 600, angles, false);
     CheckExact("blob with large triangles, near", m, 400, 0.02);

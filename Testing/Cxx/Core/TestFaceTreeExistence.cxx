@@ -126,22 +126,7 @@ int main()
   const TriangleMesh blob = coretest::ToTriangleMesh(MakeBilateralBlob(3000).mesh);
   Check("bilateral blob", coretest::Prepare(blob), 600);
 
-  TriangleMesh soup = blob;
-  Vec3 lo = soup.points[0], hi = soup.points[0];
-  for (const Vec3& q : soup.points)
-  {
-    lo = lo.cwiseMin(q);
-    hi = hi.cwiseMax(q);
-  }
-  for (int t = 0; t < 60; ++t)
-  {
-    const int base = static_cast<int>(soup.points.size());
-    const Vec3 a(U(lo.x(), hi.x()), U(lo.y(), hi.y()), U(lo.z(), hi.z()));
-    const Vec3 b(U(lo.x(), hi.x()), U(lo.y(), hi.y()), U(lo.z(), hi.z()));
-    const Vec3 c = 0.5 * (a + b) + (t % 2 == 0 ? 1e-3 : 0.3) * (hi - lo).norm() * RandomUnit();
-    soup.points.insert(soup.points.end(), { a, b, c });
-    soup.triangles.push_back({ base, base + 1, base + 2 });
-  }
+  const TriangleMesh soup = coretest::WithLargeTriangles(blob, 60, U, RandomUnit);
   Check("blob with large triangles", coretest::Prepare(soup), 600);
 
   TriangleMesh turned = coretest::SliverCylinder(0.025, 0.22, 300);
