@@ -136,8 +136,11 @@ private:
   /// p in the box frame.
   Vec3 InFrame(const Vec3& p) const { return this->Rotated ? Vec3(this->Frame * p) : p; }
   /// A node whose (frame) box is d2 away from the query is skipped when
-  /// d2 > best2 * PruneScale + PruneAdd(p): exact for the identity frame, and in a rotated one
-  /// with margins far above the rounding of the rotation (see Traverse).
+  /// d2 > best2 * PruneScale + PruneAdd(p): in the identity frame with a relative margin of
+  /// 1e-12 (a face's computed closest point may lie an ulp outside its box, so its computed
+  /// distance below the box's), in a rotated one with margins far above the rounding of the
+  /// rotation (see Traverse). So a hint face, which only lowers best2 sooner, never hides a
+  /// face of the same computed distance.
   double PruneAdd(const Vec3& p) const;
   /// Visits the faces of the leaves not farther than sqrt(best2) from p (best2 may shrink
   /// during the visit) and not pruned by prune(node).
@@ -204,7 +207,7 @@ private:
   const PreparedMesh& Mesh;
   Eigen::Matrix3d Frame = Eigen::Matrix3d::Identity(); ///< rows: the box axes
   bool Rotated = false;                                ///< Frame is not the identity
-  double PruneScale = 1.0;
+  double PruneScale = 1.0 + 1e-12;
   double CoordinateScale = 0.0;   ///< largest |coordinate| of the mesh's points
   std::vector<int> Order;         ///< face ids, leaf ranges
   std::vector<PackedFace> Packed; ///< per Order entry

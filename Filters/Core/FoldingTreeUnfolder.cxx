@@ -233,9 +233,9 @@ void Unfolder::Turn(int index, Piece& piece)
   // (a fan of 6 turned copies came back with a doubled pole and three faces over the hole).
   // A seam vertex near the axis - a pole read back from a compact file, off the axis by up to
   // the quantisation error - goes onto it first, when its budget allows the move: within half
-  // of StitchToleranceScale times the node's epsilon (five times the sectors' stitch tolerance,
-  // which pairs the k copies of a point only where they lie that close together), so that the
-  // k copies of a pole meet on the axis however far quantisation moved it.
+  // of StitchToleranceScale times the node's epsilon (at least five times the sectors' stitch
+  // tolerance, which pairs the k copies of a point only where they lie that close together), so
+  // that the k copies of a pole meet on the axis however far quantisation moved it.
   const double onAxis = PoleOfDiagonal * this->Tree.diagonal;
   const double nearAxis = 0.5 * this->Options.stitchToleranceScale * node.epsilon;
   const Vec3 direction = node.axis.direction.normalized(); // read trees: unit within 1e-6
