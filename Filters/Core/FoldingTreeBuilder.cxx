@@ -238,6 +238,9 @@ int Builder::Build(WorkMesh w, int parent, int depth, double eps, int folds, uin
   if (depth + 2 > this->MaximumDepth)
     return this->MakeLeaf(index, w, LeafReason::MaximumDepth), index;
 
+  // The detection an earlier build of this call ran on this very region (DetectionCache).
+  std::shared_ptr<const SymmetryResult>* stored =
+    this->Detections ? &this->Detections->For(w, !this->InputNormals.empty(), eps) : nullptr;
   PreparedMesh pm;
   if (nf == 0 || !this->Prepare(w, eps, pm) || pm.NumberOfPoints() != w.NumberOfPoints())
     return this->MakeLeaf(index, w, LeafReason::DetectionFailed), index;
@@ -258,7 +261,9 @@ int Builder::Build(WorkMesh w, int parent, int depth, double eps, int folds, uin
   // One face tree of the region for detection, the trim's face bound and the runner-up
   // planes of ChooseSymmetricRegion; released before the recursion below.
   auto regionFaces = std::make_unique<FaceTree>(pm);
-  const SymmetryResult result = DetectSymmetry(pm, so, regionFaces.get());
+  const std::shared_ptr<const SymmetryResult> detected =
+    DetectOrReuse(stored, pm, so, regionFaces.get(), O.trace, index);
+  const SymmetryResult& result = *detected;
   FoldingNode& node = this->Tree.nodes[index];
   node.detectionRun = true;
   node.detectionStarts = result.startsTried;
@@ -506,6 +511,7 @@ bool BuildFoldingTree(const TriangleMesh& input,
   const SurfaceDistanceQuery toInput(input);
   // One build with the faces `pinned` kept out of every symmetric region.
   bool secondOrders = true, keptSecondOrder = false; // rotation nodes' second orders
+  treebuilder::DetectionCache detections; // what the builds detected, for the later ones to reuse
   auto build = [&](const FoldingTreeOptions& o, const std::vector<char>& pinned) -> bool
   {
     tree = FoldingTree();
@@ -544,6 +550,7 @@ bool BuildFoldingTree(const TriangleMesh& input,
       return false;
     Builder builder(o, inputNormals, tree, pinned, toInput);
     builder.SecondOrders = secondOrders;
+    builder.Detections = options.reuseDetections ? &detections : nullptr;
     builder.Run(std::move(root));
     tree.aborted = builder.Aborted;
     keptSecondOrder = builder.KeptSecondOrder;

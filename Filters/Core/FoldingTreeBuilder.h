@@ -207,6 +207,12 @@ struct FoldingTreeOptions
   bool rotationNodes = false;
   int maximumRotationOrder = DefaultMaximumRotationOrder;
 
+  /// When verifyBound builds the tree again, a region that an earlier build of the same call
+  /// detected on (the same points, triangles and epsilon, bit for bit) takes that build's
+  /// plane detection instead of running it again: the same tree, sooner
+  /// (FoldingTreeDetectionCache.h). False: every build detects anew (the tests compare both).
+  bool reuseDetections = true;
+
   /// Called with overall progress in [0,1]; return false to abort (the tree built so far is
   /// returned with `aborted` set; unfinished regions become Aborted leaves).
   std::function<bool(double)> progress;

@@ -4,6 +4,7 @@
 
 #include "FaceTree.h"
 #include "FoldingTreeBuilder.h"
+#include "FoldingTreeDetectionCache.h"
 #include "FoldingWorkMesh.h"
 #include "MeshPreparation.h"
 #include "ShrinkingSubsetDistances.h"
@@ -87,6 +88,8 @@ public:
   /// without them before the planes alone when that tree misses the verification).
   bool SecondOrders = true;
   bool KeptSecondOrder = false;
+  /// The detections of the earlier builds of this BuildFoldingTree call (null: none kept).
+  DetectionCache* Detections = nullptr;
 
 private:
   /// Reports monotonic progress; false once the callback asked to stop.

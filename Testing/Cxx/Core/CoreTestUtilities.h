@@ -37,6 +37,39 @@ inline int& Failures()
 
 #define EXPECT(cond, msg) FOLDINGMESHES_EXPECT(coretest::Failures(), cond, msg)
 
+/// Two trees node by node: structure, planes, axes, epsilons, discarded faces and every leaf's
+/// data, bit for bit (not the measured times).
+inline bool SameTree(const foldingmeshes::FoldingTree& a, const foldingmeshes::FoldingTree& b)
+{
+  if (a.NumberOfNodes() != b.NumberOfNodes() || a.verifiedBound != b.verifiedBound ||
+    a.pinnedFaces != b.pinnedFaces || a.verificationRounds != b.verificationRounds)
+    return false;
+  for (int i = 0; i < a.NumberOfNodes(); ++i)
+  {
+    const foldingmeshes::FoldingNode &x = a.nodes[i], &y = b.nodes[i];
+    if (x.kind != y.kind || x.children != y.children || x.epsilon != y.epsilon ||
+      x.originalFaces != y.originalFaces || x.plane.normal != y.plane.normal ||
+      x.plane.origin != y.plane.origin || x.leafReason != y.leafReason ||
+      x.axis.origin != y.axis.origin || x.axis.direction != y.axis.direction ||
+      x.rotationOrder != y.rotationOrder || x.discardedOriginalFaces != y.discardedOriginalFaces ||
+      x.detectionStarts != y.detectionStarts)
+      return false;
+    const foldingmeshes::FoldingLeafMesh &m = x.mesh, &n = y.mesh;
+    if (m.points != n.points || m.triangles != n.triangles ||
+      m.originalPointIds != n.originalPointIds || m.originalFaceIds != n.originalFaceIds ||
+      m.tearMask != n.tearMask || m.planeMask != n.planeMask || m.projected != n.projected ||
+      m.errorBudget != n.errorBudget || m.mirroredFlags.size() != n.mirroredFlags.size())
+      return false;
+    for (size_t k = 0; k < m.mirroredFlags.size(); ++k)
+      if (m.mirroredFlags[k].point != n.mirroredFlags[k].point ||
+        m.mirroredFlags[k].level != n.mirroredFlags[k].level ||
+        m.mirroredFlags[k].mirrorMask != n.mirroredFlags[k].mirrorMask ||
+        m.mirroredFlags[k].flag != n.mirroredFlags[k].flag)
+        return false;
+  }
+  return true;
+}
+
 /// Stops the test at once (for preconditions the rest depends on).
 #define REQUIRE(cond, msg)                                                                         \
   do                                                                                               \

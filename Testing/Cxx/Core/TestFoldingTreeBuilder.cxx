@@ -243,33 +243,6 @@ void CheckInvariants(const char* name, const Case& c, const FoldingTree& t, doub
     name << ": Compression");
 }
 
-bool SameTree(const FoldingTree& a, const FoldingTree& b)
-{
-  if (a.NumberOfNodes() != b.NumberOfNodes())
-    return false;
-  for (int i = 0; i < a.NumberOfNodes(); ++i)
-  {
-    const FoldingNode &x = a.nodes[i], &y = b.nodes[i];
-    if (x.kind != y.kind || x.children != y.children || x.epsilon != y.epsilon ||
-      x.originalFaces != y.originalFaces || x.plane.normal != y.plane.normal ||
-      x.plane.origin != y.plane.origin || x.leafReason != y.leafReason)
-      return false;
-    const FoldingLeafMesh &m = x.mesh, &n = y.mesh;
-    if (m.points != n.points || m.triangles != n.triangles ||
-      m.originalPointIds != n.originalPointIds || m.originalFaceIds != n.originalFaceIds ||
-      m.tearMask != n.tearMask || m.planeMask != n.planeMask ||
-      m.mirroredFlags.size() != n.mirroredFlags.size())
-      return false;
-    for (size_t k = 0; k < m.mirroredFlags.size(); ++k)
-      if (m.mirroredFlags[k].point != n.mirroredFlags[k].point ||
-        m.mirroredFlags[k].level != n.mirroredFlags[k].level ||
-        m.mirroredFlags[k].mirrorMask != n.mirroredFlags[k].mirrorMask ||
-        m.mirroredFlags[k].flag != n.mirroredFlags[k].flag)
-        return false;
-  }
-  return true;
-}
-
 int LeafAt(const FoldingTree& t, int depth, LeafReason reason)
 {
   for (int i = 0; i < t.NumberOfNodes(); ++i)
@@ -554,7 +527,7 @@ void TestDeterminismProgressAbort()
   const FoldingTree a = Build(c, o);
   o.progress = nullptr;
   const FoldingTree b = Build(c, o);
-  EXPECT(SameTree(a, b), "determinism: two builds differ");
+  EXPECT(coretest::SameTree(a, b), "determinism: two builds differ");
   bool monotonic = !values.empty();
   for (size_t k = 0; k < values.size(); ++k)
     monotonic =
