@@ -140,9 +140,11 @@ struct FoldingNode
   // Detection statistics (Folding and Segmentation nodes, and NoSymmetry leaves).
   double symmetricAreaFraction = 0.0; ///< area(S) / area(region) after trimming
   bool detectionRun = false;
-  int detectionStarts = 0;       ///< starts the detection tried (SymmetryResult::startsTried)
-  double detectionSeconds = 0.0; ///< wall time of the detection at this node (a measurement:
-                                 ///< differs between runs, like FoldingTree::buildSeconds)
+  int detectionStarts = 0; ///< starts the detection tried (SymmetryResult::startsTried)
+  /// Wall time of the detection at this node (a measurement: differs between runs, like
+  /// FoldingTree::buildSeconds; about 0 where the build reused an earlier detection of the same
+  /// region, FoldingTreeOptions::reuseDetections).
+  double detectionSeconds = 0.0;
 
   // Leaves.
   LeafReason leafReason = LeafReason::None;

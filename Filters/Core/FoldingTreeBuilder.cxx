@@ -238,12 +238,12 @@ int Builder::Build(WorkMesh w, int parent, int depth, double eps, int folds, uin
   if (depth + 2 > this->MaximumDepth)
     return this->MakeLeaf(index, w, LeafReason::MaximumDepth), index;
 
-  // The detection an earlier build of this call ran on this very region (DetectionCache).
-  std::shared_ptr<const SymmetryResult>* stored =
-    this->Detections ? &this->Detections->For(w, !this->InputNormals.empty(), eps) : nullptr;
   PreparedMesh pm;
   if (nf == 0 || !this->Prepare(w, eps, pm) || pm.NumberOfPoints() != w.NumberOfPoints())
     return this->MakeLeaf(index, w, LeafReason::DetectionFailed), index;
+  // The detection an earlier build ran on this very region (DetectionCache: what Prepare read).
+  DetectionCache::Slot* stored =
+    this->Detections ? &this->Detections->For(w, !this->InputNormals.empty(), eps) : nullptr;
   w.triangles = pm.triangles; // oriented
 
   SymmetryOptions so = O.symmetry;
@@ -261,7 +261,7 @@ int Builder::Build(WorkMesh w, int parent, int depth, double eps, int folds, uin
   // One face tree of the region for detection, the trim's face bound and the runner-up
   // planes of ChooseSymmetricRegion; released before the recursion below.
   auto regionFaces = std::make_unique<FaceTree>(pm);
-  const std::shared_ptr<const SymmetryResult> detected =
+  const DetectionCache::Slot detected =
     DetectOrReuse(stored, pm, so, regionFaces.get(), O.trace, index);
   const SymmetryResult& result = *detected;
   FoldingNode& node = this->Tree.nodes[index];
@@ -550,7 +550,8 @@ bool BuildFoldingTree(const TriangleMesh& input,
       return false;
     Builder builder(o, inputNormals, tree, pinned, toInput);
     builder.SecondOrders = secondOrders;
-    builder.Detections = options.reuseDetections ? &detections : nullptr;
+    const bool reuse = options.reuseDetections && treebuilder::SameDetectionOptions(o, options);
+    builder.Detections = reuse && options.verifyBound ? &detections : nullptr;
     builder.Run(std::move(root));
     tree.aborted = builder.Aborted;
     keptSecondOrder = builder.KeptSecondOrder;

@@ -207,10 +207,11 @@ struct FoldingTreeOptions
   bool rotationNodes = false;
   int maximumRotationOrder = DefaultMaximumRotationOrder;
 
-  /// When verifyBound builds the tree again, a region that an earlier build of the same call
-  /// detected on (the same points, triangles and epsilon, bit for bit) takes that build's
-  /// plane detection instead of running it again: the same tree, sooner
-  /// (FoldingTreeDetectionCache.h). False: every build detects anew (the tests compare both).
+  /// With verifyBound, the plane detection of every region is kept for the call: a region
+  /// detected on again (the same points, triangles, input ids where the input has normals,
+  /// epsilon and detection options, bit for bit - e.g. the root when the tree is built again
+  /// with pins) takes the kept result instead of running it again: the same tree, sooner
+  /// (FoldingTreeDetectionCache.h). False: every region detects anew (the tests compare both).
   bool reuseDetections = true;
 
   /// Called with overall progress in [0,1]; return false to abort (the tree built so far is

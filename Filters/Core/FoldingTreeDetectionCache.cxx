@@ -8,6 +8,9 @@ namespace treebuilder
 {
 namespace
 {
+static_assert(sizeof(Vec3) == 3 * sizeof(double) && sizeof(Triangle) == 3 * sizeof(int),
+  "regions are compared and hashed as packed bytes");
+
 /// FNV-1a over raw bytes, eight at a time (a region's points and triangles: megabytes at the
 /// root of a large mesh), continued from `h`.
 uint64_t HashBytes(uint64_t h, const void* data, size_t size)
@@ -28,53 +31,59 @@ uint64_t HashBytes(uint64_t h, const void* data, size_t size)
   }
   return h;
 }
+
+/// Bit for bit (-0.0 and 0.0 differ: the same input to the detection only when identical).
+template <typename T>
+bool SameBytes(const std::vector<T>& a, const std::vector<T>& b)
+{
+  return a.size() == b.size() &&
+    (a.empty() || std::memcmp(a.data(), b.data(), a.size() * sizeof(T)) == 0);
 }
 
-bool DetectionCache::Key::operator==(const Key& other) const
+bool SamePlane(const Plane& a, const Plane& b)
 {
-  // Bit for bit (-0.0 and 0.0 differ: the same input to the detection only when identical).
-  auto sameBytes = [](const auto& a, const auto& b)
-  {
-    return a.size() == b.size() &&
-      (a.empty() || std::memcmp(a.data(), b.data(), a.size() * sizeof(a[0])) == 0);
-  };
-  return std::memcmp(&eps, &other.eps, sizeof(eps)) == 0 && sameBytes(points, other.points) &&
-    sameBytes(triangles, other.triangles) && sameBytes(pointIds, other.pointIds);
+  return a.origin == b.origin && a.normal == b.normal;
+}
 }
 
-uint64_t DetectionCache::Hash(const Key& key)
+DetectionCache::Slot& DetectionCache::For(const WorkMesh& w, bool withPointIds, double eps)
 {
+  static const std::vector<int> none;
+  const std::vector<int>& ids = withPointIds ? w.pointOrig : none;
   uint64_t h = 14695981039346656037ull;
-  h = HashBytes(h, &key.eps, sizeof(key.eps));
-  h = HashBytes(h, key.points.data(), key.points.size() * sizeof(Vec3));
-  h = HashBytes(h, key.triangles.data(), key.triangles.size() * sizeof(Triangle));
-  return HashBytes(h, key.pointIds.data(), key.pointIds.size() * sizeof(int));
-}
-
-std::shared_ptr<const SymmetryResult>& DetectionCache::For(const WorkMesh& w,
-  bool withPointIds,
-  double eps)
-{
-  static_assert(sizeof(Vec3) == 3 * sizeof(double) && sizeof(Triangle) == 3 * sizeof(int),
-    "the key's vectors are compared and hashed as packed bytes");
-  Key key;
-  key.eps = eps;
-  key.points = w.points;
-  key.triangles = w.triangles;
-  if (withPointIds)
-    key.pointIds = w.pointOrig;
-  const uint64_t h = Hash(key);
+  h = HashBytes(h, &eps, sizeof(eps));
+  h = HashBytes(h, w.points.data(), w.points.size() * sizeof(Vec3));
+  h = HashBytes(h, w.triangles.data(), w.triangles.size() * sizeof(Triangle));
+  h = HashBytes(h, ids.data(), ids.size() * sizeof(int));
   const auto range = this->Entries.equal_range(h);
   for (auto it = range.first; it != range.second; ++it)
-    if (it->second.first == key)
-      return *it->second.second;
-  auto slot = std::make_unique<std::shared_ptr<const SymmetryResult>>();
-  std::shared_ptr<const SymmetryResult>& made = *slot;
-  this->Entries.emplace(h, std::make_pair(std::move(key), std::move(slot)));
-  return made;
+  {
+    const Entry& e = it->second;
+    if (std::memcmp(&e.eps, &eps, sizeof(eps)) == 0 && SameBytes(e.points, w.points) &&
+      SameBytes(e.triangles, w.triangles) && SameBytes(e.pointIds, ids))
+      return it->second.result;
+  }
+  // Elements of an unordered container stay where they are when others are inserted.
+  return this->Entries.emplace(h, Entry{ eps, w.points, w.triangles, ids, nullptr })->second.result;
 }
 
-std::shared_ptr<const SymmetryResult> DetectOrReuse(std::shared_ptr<const SymmetryResult>* slot,
+bool SameDetectionOptions(const FoldingTreeOptions& a, const FoldingTreeOptions& b)
+{
+  const SymmetryOptions &x = a.symmetry, &y = b.symmetry;
+  return x.robust == y.robust && x.useInitialPlane == y.useInitialPlane &&
+    SamePlane(x.initialPlane, y.initialPlane) && x.numberOfCandidates == y.numberOfCandidates &&
+    x.maximumIterations == y.maximumIterations && x.compatibilityAngle == y.compatibilityAngle &&
+    x.minimumSymmetricAreaFraction == y.minimumSymmetricAreaFraction && x.seed == y.seed &&
+    x.sampledSearchAboveFaces == y.sampledSearchAboveFaces &&
+    x.refineSampledFinalists == y.refineSampledFinalists &&
+    x.scoreEveryFinalist == y.scoreEveryFinalist &&
+    x.distancesUpTo3Sigma == y.distancesUpTo3Sigma && x.fastPathQuery == y.fastPathQuery &&
+    static_cast<bool>(x.closestFaceFastPath) == static_cast<bool>(y.closestFaceFastPath) &&
+    a.sampledSearchAboveFaces == b.sampledSearchAboveFaces &&
+    a.connectNearbyParts == b.connectNearbyParts;
+}
+
+DetectionCache::Slot DetectOrReuse(DetectionCache::Slot* slot,
   const PreparedMesh& pm,
   const SymmetryOptions& options,
   const FaceTree* faces,
@@ -84,9 +93,8 @@ std::shared_ptr<const SymmetryResult> DetectOrReuse(std::shared_ptr<const Symmet
   if (slot && *slot)
   {
     if (trace)
-      trace(FormatTrace(
-        "[detect] node %d: the region and epsilon of an earlier build's detection, its result "
-        "reused",
+      trace(FormatTrace("[detect] node %d: the region and epsilon of an earlier detection, its "
+                        "result reused",
         index));
     return *slot;
   }

@@ -37,28 +37,48 @@ inline int& Failures()
 
 #define EXPECT(cond, msg) FOLDINGMESHES_EXPECT(coretest::Failures(), cond, msg)
 
-/// Two trees node by node: structure, planes, axes, epsilons, discarded faces and every leaf's
-/// data, bit for bit (not the measured times).
+/// Two trees node by node: structure, planes, axes, epsilons, areas, discarded faces, every
+/// leaf's data and the tree's input edges and verification, bit for bit (not the measured
+/// times).
 inline bool SameTree(const foldingmeshes::FoldingTree& a, const foldingmeshes::FoldingTree& b)
 {
+  auto sameEdges = [](const foldingmeshes::FoldingTree& x, const foldingmeshes::FoldingTree& y)
+  {
+    if (x.inputNonManifoldEdges.size() != y.inputNonManifoldEdges.size())
+      return false;
+    for (size_t k = 0; k < x.inputNonManifoldEdges.size(); ++k)
+      if (x.inputNonManifoldEdges[k].a != y.inputNonManifoldEdges[k].a ||
+        x.inputNonManifoldEdges[k].b != y.inputNonManifoldEdges[k].b ||
+        x.inputNonManifoldEdges[k].faces != y.inputNonManifoldEdges[k].faces)
+        return false;
+    return x.inputBorderEdges == y.inputBorderEdges;
+  };
   if (a.NumberOfNodes() != b.NumberOfNodes() || a.verifiedBound != b.verifiedBound ||
-    a.pinnedFaces != b.pinnedFaces || a.verificationRounds != b.verificationRounds)
+    a.pinnedFaces != b.pinnedFaces || a.verificationRounds != b.verificationRounds ||
+    a.aborted != b.aborted || a.rootEpsilon != b.rootEpsilon ||
+    a.numberOfDroppedFaces != b.numberOfDroppedFaces || !sameEdges(a, b))
     return false;
   for (int i = 0; i < a.NumberOfNodes(); ++i)
   {
     const foldingmeshes::FoldingNode &x = a.nodes[i], &y = b.nodes[i];
-    if (x.kind != y.kind || x.children != y.children || x.epsilon != y.epsilon ||
+    if (x.kind != y.kind || x.parent != y.parent || x.children != y.children ||
+      x.depth != y.depth || x.epsilon != y.epsilon || x.foldsAbove != y.foldsAbove ||
+      x.numberOfFaces != y.numberOfFaces || x.area != y.area ||
       x.originalFaces != y.originalFaces || x.plane.normal != y.plane.normal ||
       x.plane.origin != y.plane.origin || x.leafReason != y.leafReason ||
       x.axis.origin != y.axis.origin || x.axis.direction != y.axis.direction ||
-      x.rotationOrder != y.rotationOrder || x.discardedOriginalFaces != y.discardedOriginalFaces ||
+      x.rotationOrder != y.rotationOrder || x.discardedFaces != y.discardedFaces ||
+      x.discardedOriginalFaces != y.discardedOriginalFaces ||
+      x.projectedPoints != y.projectedPoints ||
+      x.symmetricAreaFraction != y.symmetricAreaFraction || x.detectionRun != y.detectionRun ||
       x.detectionStarts != y.detectionStarts)
       return false;
     const foldingmeshes::FoldingLeafMesh &m = x.mesh, &n = y.mesh;
     if (m.points != n.points || m.triangles != n.triangles ||
       m.originalPointIds != n.originalPointIds || m.originalFaceIds != n.originalFaceIds ||
       m.tearMask != n.tearMask || m.planeMask != n.planeMask || m.projected != n.projected ||
-      m.errorBudget != n.errorBudget || m.mirroredFlags.size() != n.mirroredFlags.size())
+      m.errorBudget != n.errorBudget || m.inputBoundary != n.inputBoundary ||
+      m.mirroredFlags.size() != n.mirroredFlags.size())
       return false;
     for (size_t k = 0; k < m.mirroredFlags.size(); ++k)
       if (m.mirroredFlags[k].point != n.mirroredFlags[k].point ||
