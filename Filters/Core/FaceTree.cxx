@@ -15,6 +15,11 @@ namespace foldingmeshes
 namespace
 {
 constexpr int LeafSize = 8;
+/// Faces whose longest edge is more than this many times the median face's are large: the
+/// root's first child holds them, so that their boxes do not swell the boxes of the rest.
+constexpr double LargeFaceRatio = 8.0;
+/// ... unless more than one face in this many is large (then they are not outliers).
+constexpr size_t MaximumLargeShare = 8;
 /// Subtrees of at least this many faces build their two halves in parallel.
 constexpr int ParallelBuildFaces = 4096;
 /// In a rotated box frame a node is skipped only when its box is farther than
@@ -56,7 +61,9 @@ FaceTree::FaceTree(const PreparedMesh& mesh)
     this->Frame = BoxFrame(mesh, this->Order);
     this->Rotated = !this->Frame.isIdentity(0.0);
     const int count = static_cast<int>(this->Order.size());
-    this->Nodes.resize(SubtreeNodes(count));
+    const int large = this->Large = this->PutLargeFacesFirst();
+    this->Nodes.resize(
+      large > 0 ? 1 + SubtreeNodes(large) + SubtreeNodes(count - large) : SubtreeNodes(count));
     if (this->Rotated)
     {
       // The margins of PruneAdd (only a rotated frame has them).
@@ -73,10 +80,10 @@ FaceTree::FaceTree(const PreparedMesh& mesh)
         });
       for (int f : this->Order)
         centroids[f] = this->Frame * mesh.faceCentroids[f];
-      this->Build(0, count, 0, points, centroids);
+      this->Build(0, count, 0, points, centroids, large);
     }
     else
-      this->Build(0, count, 0, mesh.points, mesh.faceCentroids);
+      this->Build(0, count, 0, mesh.points, mesh.faceCentroids, large);
   }
   this->OrderIndex.assign(mesh.NumberOfFaces(), -1);
   // Appended (reserve, not resize: value-initialising PackedFace zeroes every byte first).
@@ -199,11 +206,38 @@ int FaceTree::SubtreeNodes(int count)
   return count <= LeafSize ? 1 : 1 + SubtreeNodes(count / 2) + SubtreeNodes(count - count / 2);
 }
 
+int FaceTree::PutLargeFacesFirst()
+{
+  const int count = static_cast<int>(this->Order.size());
+  if (count <= LeafSize)
+    return 0;
+  std::vector<double> longest(count);
+  for (int k = 0; k < count; ++k)
+  {
+    const Triangle& t = this->Mesh.triangles[this->Order[k]];
+    const Vec3 &a = this->Mesh.points[t[0]], &b = this->Mesh.points[t[1]],
+               &c = this->Mesh.points[t[2]];
+    longest[k] = std::max({ (b - a).squaredNorm(), (c - a).squaredNorm(), (c - b).squaredNorm() });
+  }
+  std::vector<double> sorted = longest;
+  std::nth_element(sorted.begin(), sorted.begin() + count / 2, sorted.end());
+  const double limit = LargeFaceRatio * LargeFaceRatio * sorted[count / 2];
+  std::vector<int> large, rest;
+  for (int k = 0; k < count; ++k)
+    (longest[k] > limit ? large : rest).push_back(this->Order[k]);
+  if (large.empty() || large.size() * MaximumLargeShare > static_cast<size_t>(count))
+    return 0;
+  large.insert(large.end(), rest.begin(), rest.end());
+  this->Order = std::move(large);
+  return count - static_cast<int>(rest.size());
+}
+
 void FaceTree::Build(int first,
   int count,
   int index,
   const std::vector<Vec3>& points,
-  const std::vector<Vec3>& centroids)
+  const std::vector<Vec3>& centroids,
+  int split)
 {
   Node node;
   node.lo = Vec3::Constant(std::numeric_limits<double>::max());
@@ -239,15 +273,16 @@ void FaceTree::Build(int first,
   }
   int axisIndex = 0;
   (chi - clo).maxCoeff(&axisIndex);
-  const int half = count / 2;
-  std::nth_element(this->Order.begin() + first,
-    this->Order.begin() + first + half,
-    this->Order.begin() + first + count,
-    [&](int a, int b)
-    {
-      const double ca = centroids[a][axisIndex], cb = centroids[b][axisIndex];
-      return ca != cb ? ca < cb : a < b;
-    });
+  const int half = split > 0 ? split : count / 2;
+  if (split <= 0)
+    std::nth_element(this->Order.begin() + first,
+      this->Order.begin() + first + half,
+      this->Order.begin() + first + count,
+      [&](int a, int b)
+      {
+        const double ca = centroids[a][axisIndex], cb = centroids[b][axisIndex];
+        return ca != cb ? ca < cb : a < b;
+      });
   node.first = first;
   node.count = 0;
   node.left = index + 1;

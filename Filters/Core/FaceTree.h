@@ -14,7 +14,8 @@ namespace foldingmeshes
 {
 /**
  * Faces are split recursively at the median centroid along the longest axis (leaves of
- * at most 8 faces), in the frame BoxFrame chooses (the identity, or axes along the mesh's
+ * at most 8 faces; a few faces far larger than the rest are held apart under the root first,
+ * PutLargeFacesFirst), in the frame BoxFrame chooses (the identity, or axes along the mesh's
  * long edges when its faces' boxes are much smaller there: slivers of a rotated mesh). Every node
  * stores the bounding box of its triangles and a cone bounding the vertex normals of its faces, so
  * a query skips whole subtrees that are too far away *or* whose normals cannot be compatible with
@@ -86,6 +87,8 @@ public:
   int NearestCentroidFace(const Vec3& p) const;
 
   int NumberOfNodes() const { return static_cast<int>(this->Nodes.size()); }
+  /// Faces held apart as large (the root's first child: see PutLargeFacesFirst); 0: none.
+  int LargeFaces() const { return this->Large; }
   /// True when the boxes are built in a rotated frame (see BoxFrame).
   bool RotatedFrame() const { return this->Rotated; }
   /// The box frame (rows: its axes; the identity unless RotatedFrame()).
@@ -128,11 +131,18 @@ private:
   static int SubtreeNodes(int count);
   /// Builds the subtree over Order[first, first + count) as Nodes[index] and its successors,
   /// from the points and face centroids in the box frame.
+  /// `split` > 0: the first `split` faces (in Order) are the left child, the rest the right
+  /// one (the root's split of PutLargeFacesFirst); else the median split.
   void Build(int first,
     int count,
     int index,
     const std::vector<Vec3>& points,
-    const std::vector<Vec3>& centroids);
+    const std::vector<Vec3>& centroids,
+    int split = 0);
+  /// Moves the large faces (longest edge over LargeFaceRatio times the median face's, at most
+  /// one face in MaximumLargeShare) to the front of Order, in id order; returns their count
+  /// (0: none, Order unchanged).
+  int PutLargeFacesFirst();
   /// p in the box frame.
   Vec3 InFrame(const Vec3& p) const { return this->Rotated ? Vec3(this->Frame * p) : p; }
   /// A node whose (frame) box is d2 away from the query is skipped when
@@ -207,6 +217,7 @@ private:
   const PreparedMesh& Mesh;
   Eigen::Matrix3d Frame = Eigen::Matrix3d::Identity(); ///< rows: the box axes
   bool Rotated = false;                                ///< Frame is not the identity
+  int Large = 0;                                       ///< see LargeFaces
   double PruneScale = 1.0 + 1e-12;
   double CoordinateScale = 0.0;   ///< largest |coordinate| of the mesh's points
   std::vector<int> Order;         ///< face ids, leaf ranges

@@ -21,7 +21,8 @@
 //   n . q >= cos * |n|, ties: lowest id), with and without a hint face, and with a third of
 //   the faces excluded (a scan of the others; the hint may be an excluded face).
 // - a soup: the blob with 60 long triangles and slivers spanning its box, checked like the
-//   blob above, near and far; and flat plates turned obliquely (where the nodes' oriented
+//   blob above, near and far (the tree holds them apart under its root: LargeFaces; not when a
+//   third of the faces are large); and flat plates turned obliquely (where the nodes' oriented
 //   boxes, not their axis-aligned ones, prune): bit for bit the exhaustive scan.
 // - a capped cylinder of long slivers (the artist-like chair's legs) under a random rotation:
 //   the tree builds its boxes in a rotated frame (not for the cylinder as built, axis-aligned),
@@ -593,6 +594,17 @@ int main()
     const TriangleMesh soup = coretest::WithLargeTriangles(
       coretest::ToTriangleMesh(MakeBilateralBlob(3000).mesh), 60, U, RandomUnit);
     const PreparedMesh m = coretest::Prepare(soup);
+    // The large triangles are held apart under the root (FaceTree::LargeFaces), the blob's
+    // own faces not; a soup of large triangles alone has no outliers.
+    const int large = FaceTree(m).LargeFaces();
+    EXPECT(large > 0 && large <= 60, "blob with large triangles: " << large << " held apart");
+    EXPECT(FaceTree(coretest::Prepare(coretest::ToTriangleMesh(MakeBilateralBlob(3000).mesh)))
+             .LargeFaces() == 0,
+      "blob: faces held apart");
+    const TriangleMesh mostlyLarge = coretest::WithLargeTriangles(
+      coretest::ToTriangleMesh(MakeBilateralBlob(200).mesh), 100, U, RandomUnit);
+    EXPECT(FaceTree(coretest::Prepare(mostlyLarge)).LargeFaces() == 0,
+      "a third of the faces large: held apart as outliers");
     CheckMesh("blob with large triangles", m, 600, angles, false);
     CheckExact("blob with large triangles, near", m, 400, 0.02);
     CheckExact("blob with large triangles, far", m, 400, 0.15);
