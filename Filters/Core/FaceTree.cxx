@@ -7,6 +7,7 @@
 #include "ParallelTasks.h"
 
 #include <algorithm>
+#include <cassert>
 #include <cmath>
 #include <utility>
 
@@ -221,15 +222,20 @@ int FaceTree::PutLargeFacesFirst()
   }
   std::vector<double> sorted = longest;
   std::nth_element(sorted.begin(), sorted.begin() + count / 2, sorted.end());
+  // The face at count / 2 (the upper median for an even count); an infinite one: none large.
   const double limit = LargeFaceRatio * LargeFaceRatio * sorted[count / 2];
-  std::vector<int> large, rest;
-  for (int k = 0; k < count; ++k)
-    (longest[k] > limit ? large : rest).push_back(this->Order[k]);
-  if (large.empty() || large.size() * MaximumLargeShare > static_cast<size_t>(count))
+  const int large = static_cast<int>(
+    std::count_if(longest.begin(), longest.end(), [&](double l) { return l > limit; }));
+  if (large == 0 || static_cast<size_t>(large) * MaximumLargeShare > static_cast<size_t>(count))
     return 0;
-  large.insert(large.end(), rest.begin(), rest.end());
-  this->Order = std::move(large);
-  return count - static_cast<int>(rest.size());
+  std::vector<int> reordered;
+  reordered.reserve(count);
+  for (const bool first : { true, false })
+    for (int k = 0; k < count; ++k)
+      if ((longest[k] > limit) == first)
+        reordered.push_back(this->Order[k]);
+  this->Order = std::move(reordered);
+  return large;
 }
 
 void FaceTree::Build(int first,
@@ -271,6 +277,7 @@ void FaceTree::Build(int first,
     this->Nodes[index] = node;
     return;
   }
+  assert(split == 0 || (split < count && count > LeafSize)); // PutLargeFacesFirst's split
   int axisIndex = 0;
   (chi - clo).maxCoeff(&axisIndex);
   const int half = split > 0 ? split : count / 2;
@@ -290,9 +297,17 @@ void FaceTree::Build(int first,
   this->Nodes[index] = node;
   // Preorder numbering fixed in advance: the two halves touch disjoint ranges of Order and
   // Nodes, so large ones are built in parallel (ForRanges; nested calls run serially) with
-  // the same tree for any thread count.
+  // the same tree for any thread count. The root's split of the large faces holds few faces
+  // on its left: its halves are built one after the other, so that the rest's own halves
+  // are built in parallel.
   const int firsts[2] = { first, first + half }, counts[2] = { half, count - half };
   const int indices[2] = { node.left, node.right };
+  if (split > 0)
+  {
+    for (int c = 0; c < 2; ++c)
+      this->Build(firsts[c], counts[c], indices[c], points, centroids);
+    return;
+  }
   ForRanges(2,
     count >= ParallelBuildFaces ? 1 : 2,
     [&](vtkIdType begin, vtkIdType end)

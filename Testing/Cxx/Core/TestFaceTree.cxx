@@ -21,9 +21,11 @@
 //   n . q >= cos * |n|, ties: lowest id), with and without a hint face, and with a third of
 //   the faces excluded (a scan of the others; the hint may be an excluded face).
 // - a soup: the blob with 60 long triangles and slivers spanning its box, checked like the
-//   blob above, near and far (the tree holds them apart under its root: LargeFaces; not when a
-//   third of the faces are large); and flat plates turned obliquely (where the nodes' oriented
-//   boxes, not their axis-aligned ones, prune): bit for bit the exhaustive scan.
+//   blob above, near and far, by ClosestFace too and on the surface (the tree holds them apart
+//   under its root: LargeFaces; not when a third of the faces are large); the same with 12
+//   faces, one of them large, and with the turned cylinder below (a rotated frame too); and flat
+//   plates turned obliquely (where the nodes' oriented boxes, not their axis-aligned ones, prune):
+//   bit for bit the exhaustive scan.
 // - a capped cylinder of long slivers (the artist-like chair's legs) under a random rotation:
 //   the tree builds its boxes in a rotated frame (not for the cylinder as built, axis-aligned),
 //   and its answers - ClosestCompatibleFace, ClosestFace with and without excluded faces,
@@ -595,7 +597,7 @@ int main()
       coretest::ToTriangleMesh(MakeBilateralBlob(3000).mesh), 60, U, RandomUnit);
     const PreparedMesh m = coretest::Prepare(soup);
     // The large triangles are held apart under the root (FaceTree::LargeFaces), the blob's
-    // own faces not; a soup of large triangles alone has no outliers.
+    // own faces not; a blob of 200 faces with 100 large ones has no outliers.
     const int large = FaceTree(m).LargeFaces();
     EXPECT(large > 0 && large <= 60, "blob with large triangles: " << large << " held apart");
     EXPECT(FaceTree(coretest::Prepare(coretest::ToTriangleMesh(MakeBilateralBlob(3000).mesh)))
@@ -608,6 +610,23 @@ int main()
     CheckMesh("blob with large triangles", m, 600, angles, false);
     CheckExact("blob with large triangles, near", m, 400, 0.02);
     CheckExact("blob with large triangles, far", m, 400, 0.15);
+    CheckPlainExact("blob with large triangles", m, 300, 0.1);
+    CheckExactAtSurface("blob with large triangles, on the surface and far", m, 600);
+    // The smallest tree with a face held apart: 12 faces, one of them 50 times the others.
+    TriangleMesh few;
+    for (int k = 0; k < 11; ++k)
+    {
+      const int base = static_cast<int>(few.points.size());
+      few.points.insert(few.points.end(),
+        { Vec3(0.1 * k, 0, 0), Vec3(0.1 * k + 0.05, 0, 0.01), Vec3(0.1 * k, 0.05, 0.02) });
+      few.triangles.push_back({ base, base + 1, base + 2 });
+    }
+    few.points.insert(few.points.end(), { Vec3(-1, -1, 0.3), Vec3(2.5, -1, 0.3), Vec3(0, 2, 0.3) });
+    few.triangles.push_back({ 33, 34, 35 });
+    const PreparedMesh fewMesh = coretest::Prepare(few);
+    EXPECT(FaceTree(fewMesh).LargeFaces() == 1, "12 faces, one large: not held apart");
+    CheckExact("12 faces, one large", fewMesh, 300, 0.5);
+    CheckExactAtSurface("12 faces, one large, on the surface and far", fewMesh, 300);
   }
   {
     // Long slivers, axis-aligned and turned: only the turned cylinder gets a rotated frame.
@@ -634,10 +653,27 @@ int main()
     EXPECT(
       FaceTree(farMesh).RotatedFrame(), "turned cylinder at 1e6: boxes not in a rotated frame");
     CheckExactAtSurface("turned cylinder of slivers 1e6 from the origin", farMesh, 900);
-    CheckPlainExact("blob with large triangles",
-      coretest::Prepare(coretest::ToTriangleMesh(MakeBilateralBlob(3000).mesh)),
-      300,
-      0.1);
+    CheckPlainExact(
+      "blob", coretest::Prepare(coretest::ToTriangleMesh(MakeBilateralBlob(3000).mesh)), 300, 0.1);
+    // A rotated frame and large faces held apart together.
+    // ... with 10 triangles 14 times the slivers' length across the axis, turned alike.
+    TriangleMesh withLarge = turned;
+    for (int k = 0; k < 10; ++k)
+    {
+      const int base = static_cast<int>(withLarge.points.size());
+      const double z = 0.02 * k;
+      for (const Vec3& x : { Vec3(-3.0, -3.0, z), Vec3(3.0, -3.0, z), Vec3(0.0, 3.0, z) })
+        withLarge.points.push_back(rotation * x + Vec3(0.4, -1.3, 2.2));
+      withLarge.triangles.push_back({ base, base + 1, base + 2 });
+    }
+    const PreparedMesh both = coretest::Prepare(withLarge);
+    const FaceTree bothTree(both);
+    EXPECT(bothTree.RotatedFrame() && bothTree.LargeFaces() > 0,
+      "turned cylinder with large triangles: rotated " << bothTree.RotatedFrame() << ", "
+                                                       << bothTree.LargeFaces() << " held apart");
+    CheckExact("turned cylinder with large triangles", both, 300, 0.1);
+    CheckPlainExact("turned cylinder with large triangles", both, 300, 0.1);
+    CheckExactAtSurface("turned cylinder with large triangles, on the surface and far", both, 600);
   }
   std::printf("TestFaceTree: %.2f s\n", coretest::Seconds(t0));
   return coretest::Finish("TestFaceTree");
