@@ -11,6 +11,8 @@
 #include "PointTriangleDistance.h"
 #include "TriangleMesh.h"
 
+#include <Eigen/Geometry>
+
 #include <vtkCellArray.h>
 #include <vtkIdList.h>
 #include <vtkNew.h>
@@ -213,6 +215,15 @@ inline EdgeStats CountEdges(const std::vector<foldingmeshes::Triangle>& triangle
     s.misoriented += uses == 2 && e.second.first != 1;
   }
   return s;
+}
+
+/// The rigid motion the face-tree tests turn meshes by: x rotated by 0.7 radians about an
+/// oblique axis and moved (axis-aligned slivers then need the tree's rotated box frame).
+inline foldingmeshes::Vec3 Turned(const foldingmeshes::Vec3& x)
+{
+  static const Eigen::Matrix3d rotation =
+    Eigen::AngleAxisd(0.7, foldingmeshes::Vec3(0.3, -0.8, 0.5).normalized()).toRotationMatrix();
+  return rotation * x + foldingmeshes::Vec3(0.4, -1.3, 2.2);
 }
 
 /// A capped cylinder along z (radius r, length 2 h) of `segments` long side slivers and two fans.

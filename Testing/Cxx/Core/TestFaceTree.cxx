@@ -634,10 +634,8 @@ int main()
     const PreparedMesh straight = coretest::Prepare(cylinder);
     EXPECT(!FaceTree(straight).RotatedFrame(), "axis-aligned cylinder: rotated box frame");
     TriangleMesh turned = cylinder;
-    const Eigen::Matrix3d rotation =
-      Eigen::AngleAxisd(0.7, Vec3(0.3, -0.8, 0.5).normalized()).toRotationMatrix();
     for (Vec3& x : turned.points)
-      x = rotation * x + Vec3(0.4, -1.3, 2.2);
+      x = coretest::Turned(x);
     const PreparedMesh m = coretest::Prepare(turned);
     EXPECT(FaceTree(m).RotatedFrame(), "turned cylinder of slivers: boxes not in a rotated frame");
     CheckMesh("turned cylinder of slivers", m, 200, angles, false);
@@ -663,7 +661,7 @@ int main()
       const int base = static_cast<int>(withLarge.points.size());
       const double z = 0.02 * k;
       for (const Vec3& x : { Vec3(-3.0, -3.0, z), Vec3(3.0, -3.0, z), Vec3(0.0, 3.0, z) })
-        withLarge.points.push_back(rotation * x + Vec3(0.4, -1.3, 2.2));
+        withLarge.points.push_back(coretest::Turned(x));
       withLarge.triangles.push_back({ base, base + 1, base + 2 });
     }
     const PreparedMesh both = coretest::Prepare(withLarge);

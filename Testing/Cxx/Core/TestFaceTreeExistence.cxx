@@ -12,7 +12,6 @@
 #include "FaceTree.h"
 #include "ProceduralMeshes.h"
 
-#include <Eigen/Geometry>
 
 #include <cmath>
 #include <limits>
@@ -130,10 +129,8 @@ int main()
   Check("blob with large triangles", coretest::Prepare(soup), 600);
 
   TriangleMesh turned = coretest::SliverCylinder(0.025, 0.22, 300);
-  const Eigen::Matrix3d rotation =
-    Eigen::AngleAxisd(0.7, Vec3(0.3, -0.8, 0.5).normalized()).toRotationMatrix();
   for (Vec3& q : turned.points)
-    q = rotation * q + Vec3(0.4, -1.3, 2.2);
+    q = coretest::Turned(q);
   const PreparedMesh cylinder = coretest::Prepare(turned);
   EXPECT(FaceTree(cylinder).RotatedFrame(), "turned cylinder: boxes not in a rotated frame");
   Check("turned cylinder of slivers", cylinder, 600);
