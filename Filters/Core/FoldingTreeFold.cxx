@@ -5,7 +5,8 @@
 #include "CandidatePlanes.h"
 #include "MeshPreparation.h"
 #include "MirrorDistance.h"
-#include "PointBuckets.h"
+#include "ParallelTasks.h"
+#include "PointKdTree.h"
 #include "RegionGrowing.h"
 #include "SurfaceDistance.h"
 
@@ -94,13 +95,11 @@ void Builder::TransferDiscardedTears(WorkMesh& w,
     return;
   // Boundary vertices of the region (all its faces, before the fold).
   const std::vector<char> boundary = BorderPoints(w.triangles, w.points.size());
-  PointBuckets kept, removed;
-  kept.cell = removed.cell = std::max(eps, 1e-12 * this->Tree.diagonal);
+  std::vector<int> keptIds;
   for (int v = 0; v < w.NumberOfPoints(); ++v)
     if (used[v] && boundary[v])
-      kept.Add(w.points[v], v);
-  for (int t : lost)
-    removed.Add(w.points[t], t);
+      keptIds.push_back(v);
+  const PointKdTree kept(w.points, keptIds), removed(w.points, lost);
   auto transfer = [&](int t, int v)
   {
     auto& into = w.mirrorFlags[v];
@@ -114,14 +113,14 @@ void Builder::TransferDiscardedTears(WorkMesh& w,
   std::vector<std::pair<int, int>> pairs; // (kept, removed)
   for (int t : lost)
   {
-    const int v = kept.Nearest(w.points, plane.Reflect(w.points[t]), eps);
+    const int v = kept.NearestWithin(plane.Reflect(w.points[t]), eps);
     if (v >= 0)
       pairs.push_back({ v, t });
   }
   for (int v = 0; v < w.NumberOfPoints(); ++v)
     if (used[v] && boundary[v])
     {
-      const int t = removed.Nearest(w.points, plane.Reflect(w.points[v]), eps);
+      const int t = removed.NearestWithin(plane.Reflect(w.points[v]), eps);
       if (t >= 0)
         pairs.push_back({ v, t });
     }
@@ -315,29 +314,43 @@ double Builder::ChargeMirrorError(const WorkMesh& w,
 {
   double mirrorError = 0.0;
 
-  std::vector<Vec3> mirrored(w.points.size());
-  for (int v = 0; v < w.NumberOfPoints(); ++v)
+  const int np = w.NumberOfPoints();
+  std::vector<Vec3> mirrored(np);
+  for (int v = 0; v < np; ++v)
     mirrored[v] = plane.Reflect(w.points[v]);
   const std::vector<double> toS = toRegion.Distances(mirrored);
   const std::vector<double> toM = this->ToInput.Distances(mirrored);
-  PointBuckets all, kept;
-  all.cell = kept.cell = std::max(eps, 1e-12 * this->Tree.diagonal);
+  std::vector<int> keptIds;
   double least = std::numeric_limits<double>::infinity();
-  for (int v = 0; v < w.NumberOfPoints(); ++v)
+  for (int v = 0; v < np; ++v)
   {
-    all.Add(w.points[v], v);
     if (used[v])
-      kept.Add(w.points[v], v);
+      keptIds.push_back(v);
     least = std::min(least, w.budget[v]);
   }
-  for (int v = 0; v < w.NumberOfPoints(); ++v)
+  const PointKdTree all(w.points), kept(w.points, keptIds);
+  // Each point's charged kept point and the point nearest its mirror image, every point alone
+  // (read-only trees); then the charges, in point order.
+  std::vector<int> chargedPoint(np, -1), nearestPoint(np, -1);
+  ForRanges(np,
+    256,
+    [&](vtkIdType first, vtkIdType last)
+    {
+      for (vtkIdType v = first; v < last; ++v)
+      {
+        chargedPoint[v] = used[v] ? static_cast<int>(v) : kept.NearestWithin(mirrored[v], eps);
+        if (chargedPoint[v] >= 0)
+          nearestPoint[v] = all.NearestWithin(mirrored[v], eps);
+      }
+    });
+  for (int v = 0; v < np; ++v)
   {
     const double e = used[v] ? toM[v] : toS[v];
     mirrorError = std::max(mirrorError, e);
-    const int k = used[v] ? v : kept.Nearest(w.points, mirrored[v], eps);
+    const int k = chargedPoint[v];
     if (k < 0)
       continue; // no kept point there: its copy reproduces nothing of v
-    const int p = all.Nearest(w.points, mirrored[v], eps);
+    const int p = nearestPoint[v];
     charge[k] = std::max(charge[k], e);
     limit[k] = std::min({ limit[k], w.budget[v], p >= 0 ? w.budget[p] : least });
   }

@@ -3,7 +3,7 @@
 // that uses them is in FoldingTreeRotation.cxx.
 #include "FoldingTreeRotationSector.h"
 
-#include "PointBuckets.h"
+#include "PointKdTree.h"
 
 #include <algorithm>
 #include <cmath>
@@ -398,8 +398,6 @@ const char* CutSector(const AxisFrame& frame,
   std::vector<int> side0, side1;
   std::vector<double> offset(np, 0.0);
   bool planar = true;
-  PointBuckets bucket0, bucket1;
-  bucket0.cell = bucket1.cell = snap;
   for (int v = 0; v < np; ++v)
   {
     if (!cut.seam[v])
@@ -419,16 +417,16 @@ const char* CutSector(const AxisFrame& frame,
       std::max(cut.halfPlaneMove, 2.0 * radius * std::abs(std::sin(0.5 * offset[v])));
     planar = cut.halfPlaneMove <= snap;
     (first ? side0 : side1).push_back(v);
-    (first ? bucket0 : bucket1).Add(w.points[v], v);
   }
+  const PointKdTree tree0(w.points, side0), tree1(w.points, side1);
   // Mutual nearest pairs: a (side 0) turned forward meets b (side 1) and b turned back a.
   std::vector<std::pair<int, int>> pairs;
   bool paired = side0.size() == side1.size();
   for (size_t i = 0; paired && i < side0.size(); ++i)
   {
     const int a = side0[i];
-    const int b = bucket1.Nearest(w.points, forward.Point(w.points[a]), snap);
-    paired = b >= 0 && bucket0.Nearest(w.points, back.Point(w.points[b]), snap) == a;
+    const int b = tree1.NearestWithin(forward.Point(w.points[a]), snap);
+    paired = b >= 0 && tree0.NearestWithin(back.Point(w.points[b]), snap) == a;
     pairs.push_back({ a, b });
   }
   if (!paired) // each seam onto its half-plane; the unfolder's zipper joins them

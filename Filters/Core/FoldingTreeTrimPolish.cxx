@@ -291,8 +291,7 @@ std::vector<char> Builder::Trim(const WorkMesh& w,
   ShrinkingSubsetDistances distances(
     pm, plane, this->Options.symmetry.compatibilityAngle, eps, &edgeUses);
   distances.Adopt(std::move(prepared));
-  ShrinkingMirrorBudget budget(
-    w.points, w.budget, plane, eps, std::max(eps, 1e-12 * this->Tree.diagonal));
+  ShrinkingMirrorBudget budget(w.points, w.budget, plane, eps);
   // The mirrored-face proof's closest triangles: those of S itself (the region's face tree
   // without the faces that left S, or the user's locator over S, built when a face first
   // needs it), not of the whole region - a kept face whose mirror image lies on faces outside

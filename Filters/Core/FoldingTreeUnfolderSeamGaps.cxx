@@ -1,6 +1,6 @@
 // Seam repair after pairing: the zipper and the ear-clipping fill of small seam gap loops.
 #include "FoldingTreeUnfolderInternal.h"
-#include "PointBuckets.h"
+#include "IntegerTripleHash.h"
 
 #include <algorithm>
 #include <array>
@@ -124,7 +124,7 @@ int Unfolder::Zip(Piece& out,
       longest = std::max(longest, (out.points[e.first] - out.points[e.second]).norm());
     const double cell = std::max({ tol, longest / ZipCellsPerLongestEdge, 1e-300 });
     auto cellOf = [cell](double x) { return static_cast<long long>(std::floor(x / cell)); };
-    std::unordered_map<std::array<long long, 3>, std::vector<int>, PointBuckets::KeyHash> buckets;
+    std::unordered_map<std::array<long long, 3>, std::vector<int>, IntegerTripleHash> buckets;
     for (int i = 0; i < static_cast<int>(open.size()); ++i)
     {
       const Vec3 lo = out.points[open[i].first].cwiseMin(out.points[open[i].second]);
@@ -460,7 +460,7 @@ private:
   SeamReport& Seam;
   FlatEdgeMap<int> HalfEdges; // directed edge -> face (the last face of two)
   FlatEdgeMap<int> Uses;      // undirected edge -> faces
-  std::unordered_set<std::array<int, 3>, PointBuckets::KeyHash> FaceSets; // sorted corners
+  std::unordered_set<std::array<int, 3>, IntegerTripleHash> FaceSets; // sorted corners
   EdgeSet VisitedHoles;
 };
 } // namespace

@@ -1,6 +1,6 @@
 // Seam stitching and final weld: union-find pairing, budgeted cluster placement, smoothing.
 #include "FoldingTreeUnfolderInternal.h"
-#include "PointBuckets.h"
+#include "PointKdTree.h"
 
 #include <algorithm>
 #include <array>
@@ -158,22 +158,20 @@ std::vector<StitchProposal> ProposeStitches(const std::vector<Vec3>& points,
   double tol,
   double sameChildDistance)
 {
-  PointBuckets grid;
-  grid.cell = tol;
-  for (int v : tears)
-    grid.Add(points[v], v);
+  const PointKdTree grid(points, tears);
   std::vector<StitchProposal> proposals;
   for (int v : tears)
   {
     // Each tear vertex's nearest tear vertex of another child (lowest distance, then id).
     const int best =
-      grid.NearestWhere(points, points[v], tol, [&](int w) { return childOf[w] != childOf[v]; });
+      grid.NearestWithinWhere(points[v], tol, [&](int w) { return childOf[w] != childOf[v]; });
     if (best >= 0)
       proposals.push_back(
         { (points[best] - points[v]).norm(), std::min(v, best), std::max(v, best), false });
     // Two vertices of one child are merged with each other only when nearly coincident.
     if (sameChildDistance > 0.0)
-      grid.ForEachNear(points[v],
+      grid.ForEachWithin(points[v],
+        sameChildDistance,
         [&](int w)
         {
           const double d = (points[w] - points[v]).norm();

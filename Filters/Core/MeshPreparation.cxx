@@ -1,7 +1,8 @@
 #include "MeshPreparation.h"
 
 #include "EdgeTable.h"
-#include "PointBuckets.h"
+#include "ParallelTasks.h"
+#include "PointKdTree.h"
 #include "UnionFind.h"
 
 #include <Eigen/Geometry>
@@ -437,24 +438,29 @@ void LinkNearbyParts(PreparedMesh& mesh, double gap)
   for (int f = 0; f < mesh.NumberOfFaces(); ++f)
     for (int v : mesh.triangles[f])
       vertexPart[v] = mesh.facePart[f];
-  PointBuckets buckets;
-  buckets.cell = gap;
+  std::vector<int> used;
   for (int v = 0; v < nv; ++v)
     if (vertexPart[v] >= 0)
-      buckets.Add(mesh.points[v], v);
+      used.push_back(v);
+  const PointKdTree search(mesh.points, used);
   // Closer than `gap` (strictly: the largest double below it as the radius).
   const double radius = std::nextafter(gap, 0.0);
+  // Only the nearest vertex of another part: linear in the mesh size even for triangle soups,
+  // where every face is its own part. Every vertex alone (a read-only tree), the links then in
+  // vertex order: the same for any thread count.
+  std::vector<int> nearest(nv, -1);
+  ForRanges(nv,
+    512,
+    [&](vtkIdType first, vtkIdType last)
+    {
+      for (vtkIdType v = first; v < last; ++v)
+        if (vertexPart[v] >= 0)
+          nearest[v] = search.NearestWithinWhere(
+            mesh.points[v], radius, [&](int w) { return vertexPart[w] != vertexPart[v]; });
+    });
   for (int v = 0; v < nv; ++v)
-  {
-    if (vertexPart[v] < 0)
-      continue;
-    // Only the nearest vertex of another part: linear in the mesh size even for triangle
-    // soups, where every face is its own part.
-    const int nearest = buckets.NearestWhere(
-      mesh.points, mesh.points[v], radius, [&](int w) { return vertexPart[w] != vertexPart[v]; });
-    if (nearest >= 0)
-      mesh.proximityLinks.push_back({ v, nearest });
-  }
+    if (nearest[v] >= 0)
+      mesh.proximityLinks.push_back({ v, nearest[v] });
 }
 
 std::vector<char> BorderPoints(const std::vector<Triangle>& triangles, size_t pointCount)

@@ -9,13 +9,11 @@ namespace foldingmeshes
 ShrinkingMirrorBudget::ShrinkingMirrorBudget(const std::vector<Vec3>& points,
   const std::vector<double>& budget,
   const Plane& plane,
-  double eps,
-  double cell)
+  double eps)
   : Points(points)
   , Budget(budget)
   , Mirror(plane)
   , Eps(eps)
-  , Cell(cell)
 {
 }
 
@@ -39,16 +37,13 @@ std::vector<double> ShrinkingMirrorBudget::Limits(const std::vector<int>& ids)
 
 void ShrinkingMirrorBudget::Start(const std::vector<int>& ids)
 {
-  this->Buckets = PointBuckets();
-  this->Buckets.cell = this->Cell;
-  for (int v : ids)
-    this->Buckets.Add(this->Points[v], v);
+  this->Search = std::make_unique<PointKdTree>(this->Points, ids);
   this->Region = ids;
   this->InRegion.assign(this->Points.size(), 0);
   for (int v : ids)
     this->InRegion[v] = 1;
   this->Partner.assign(this->Points.size(), -1);
-  // Every point alone (read-only buckets): the same partners for any thread count.
+  // Every point alone (a read-only tree): the same partners for any thread count.
   ForRanges(static_cast<vtkIdType>(ids.size()),
     256,
     [&](vtkIdType first, vtkIdType last)
@@ -57,7 +52,7 @@ void ShrinkingMirrorBudget::Start(const std::vector<int>& ids)
       {
         const int v = ids[k];
         this->Partner[v] =
-          this->Buckets.Nearest(this->Points, this->Mirror.Reflect(this->Points[v]), this->Eps);
+          this->Search->NearestWithin(this->Mirror.Reflect(this->Points[v]), this->Eps);
       }
     });
 }
@@ -89,8 +84,7 @@ void ShrinkingMirrorBudget::Shrink(const std::vector<int>& ids)
 
 int ShrinkingMirrorBudget::PartnerInRegion(int v) const
 {
-  return this->Buckets.NearestWhere(this->Points,
-    this->Mirror.Reflect(this->Points[v]),
+  return this->Search->NearestWithinWhere(this->Mirror.Reflect(this->Points[v]),
     this->Eps,
     [this](int p) { return this->InRegion[p] != 0; });
 }

@@ -3,8 +3,9 @@
 #define foldingmeshes_ShrinkingMirrorBudget_h
 
 #include "Plane.h"
-#include "PointBuckets.h"
+#include "PointKdTree.h"
 
+#include <memory>
 #include <vector>
 
 namespace foldingmeshes
@@ -16,27 +17,26 @@ namespace foldingmeshes
  * copy made by the fold lands there), or without a partner the least budget of `ids`.
  *
  * Builder::Trim asks again and again with one plane while the region shrinks. A partner is the
- * lowest (distance, id) among the points within eps (PointBuckets), so it stays the partner
- * while it stays in the region, and a point without one never gets one; only the points whose
- * partner left are looked up again, in the first region's buckets restricted to the current
- * points. The limits are bit for bit those of fresh buckets over each region. A region that is
- * not a subset of the previous one starts over.
+ * lowest (distance, id) among the points within eps (PointKdTree::NearestWithin), so it stays
+ * the partner while it stays in the region, and a point without one never gets one; only the
+ * points whose partner left are looked up again, in the first region's tree restricted to the
+ * current points. The limits are bit for bit those of a fresh search over each region. A region
+ * that is not a subset of the previous one starts over.
  */
 class ShrinkingMirrorBudget
 {
 public:
-  /// `cell`: the bucket size (at least eps). Keeps references to points and budget.
+  /// Keeps references to points and budget.
   ShrinkingMirrorBudget(const std::vector<Vec3>& points,
     const std::vector<double>& budget,
     const Plane& plane,
-    double eps,
-    double cell);
+    double eps);
 
   /// The limit of each point of `ids` (increasing indices into points).
   std::vector<double> Limits(const std::vector<int>& ids);
 
 private:
-  /// Buckets over `ids` and every partner looked up.
+  /// A tree over `ids` and every partner looked up.
   void Start(const std::vector<int>& ids);
   /// True when every point of `ids` was in the previous region.
   bool Shrinks(const std::vector<int>& ids) const;
@@ -49,9 +49,8 @@ private:
   const std::vector<double>& Budget;
   const Plane Mirror;
   const double Eps;
-  const double Cell;
-  PointBuckets Buckets;    ///< over the region of the last Start
-  std::vector<int> Region; ///< the current points
+  std::unique_ptr<PointKdTree> Search; ///< over the region of the last Start
+  std::vector<int> Region;             ///< the current points
   std::vector<char> InRegion;
   std::vector<int> Partner; ///< per point of Region (-1: none)
 };

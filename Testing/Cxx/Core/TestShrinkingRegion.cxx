@@ -6,7 +6,7 @@
 //   its vertices (MirrorDistance on it), on the blob with its own normals (the incremental path:
 //   a single full update) and with random input normals (the signs of the subset's normals
 //   change as faces go: full updates again, still the same distances);
-// - ShrinkingMirrorBudget: the limits Trim derived from fresh buckets of each S's points;
+// - ShrinkingMirrorBudget: the limits by definition (every point of S tested for each partner);
 // - a region that grows again (not a subset): everything starts over, still the same;
 // - a preparation of S made elsewhere with its queries (Builder::Polish's, Adopt): used when
 //   it is S's (one adopted update), dropped when it is another subset's; the distances the
@@ -14,7 +14,6 @@
 #include "CoreTestUtilities.h"
 #include "FaceTree.h"
 #include "MirrorDistance.h"
-#include "PointBuckets.h"
 #include "ProceduralMeshes.h"
 #include "RegionGrowing.h"
 #include "ShrinkingMirrorBudget.h"
@@ -43,26 +42,33 @@ bool BitIdentical(const std::vector<double>& a, const std::vector<double>& b)
   return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(double)) == 0;
 }
 
-/// Builder's limits from scratch (fresh buckets of `ids`), as Trim computed them before.
+/// Builder's limits from scratch, by definition: a point's partner is the lowest (distance, id)
+/// among the points of `ids` within eps of its mirror image, every point tested.
 std::vector<double> FreshLimits(const std::vector<Vec3>& points,
   const std::vector<double>& budget,
   const std::vector<int>& ids,
   const Plane& plane,
   double eps)
 {
-  PointBuckets buckets;
-  buckets.cell = eps;
   double least = eps;
   for (int v : ids)
-  {
-    buckets.Add(points[v], v);
     least = std::min(least, budget[v]);
-  }
   std::vector<double> limit(ids.size());
   for (size_t k = 0; k < ids.size(); ++k)
   {
     const int v = ids[k];
-    const int p = buckets.Nearest(points, plane.Reflect(points[v]), eps);
+    const Vec3 image = plane.Reflect(points[v]);
+    int p = -1;
+    double best = eps;
+    for (int q : ids) // increasing ids: the first of equal distances is the lowest id
+    {
+      const double d = (points[q] - image).norm();
+      if (d <= best && (p < 0 || d < best))
+      {
+        best = d;
+        p = q;
+      }
+    }
     limit[k] = std::min({ eps, budget[v], p >= 0 ? budget[p] : least });
   }
   return limit;
@@ -78,7 +84,7 @@ public:
     , Eps(eps)
     , Name(name)
     , Distances(mesh, plane, kCompatibilityAngle, eps)
-    , Budget(mesh.points, this->PointBudget, plane, eps, eps)
+    , Budget(mesh.points, this->PointBudget, plane, eps)
   {
     // Budgets from a third to 1.5 times eps: partners' budgets matter.
     std::mt19937 rng(5);
@@ -121,7 +127,7 @@ public:
     const std::vector<double> limit = this->Budget.Limits(ids);
     EXPECT(BitIdentical(limit,
              FreshLimits(this->Mesh.points, this->PointBudget, ids, this->Mirror, this->Eps)),
-      what << ": the budget limits differ from fresh buckets'");
+      what << ": the budget limits differ from those by definition");
     return true;
   }
 
