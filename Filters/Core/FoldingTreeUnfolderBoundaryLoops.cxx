@@ -51,10 +51,6 @@ struct OpenEdges
 
   explicit OpenEdges(const Piece& piece)
   {
-    this->halfEdges.reserve(3 * piece.triangles.size());
-    for (int f = 0; f < piece.NumberOfFaces(); ++f)
-      for (int k = 0; k < 3; ++k)
-        this->halfEdges[{ piece.triangles[f][k], piece.triangles[f][(k + 1) % 3] }] = f;
     for (const auto& e : EdgeFaces(piece))
       if (e.second.size() == 1)
       {
@@ -66,6 +62,12 @@ struct OpenEdges
         else
           this->holeNext[a].push_back(b);
       }
+    if (this->open.empty())
+      return; // a closed piece: no loop to trace, no half-edges needed
+    this->halfEdges.reserve(3 * piece.triangles.size());
+    for (int f = 0; f < piece.NumberOfFaces(); ++f)
+      for (int k = 0; k < 3; ++k)
+        this->halfEdges[{ piece.triangles[f][k], piece.triangles[f][(k + 1) % 3] }] = f;
   }
 
   /// Arrived at b by the hole edge a -> b (face half-edge b -> a): the next hole edge found

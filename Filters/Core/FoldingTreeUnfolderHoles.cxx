@@ -441,6 +441,8 @@ int Unfolder::FillLoops(Piece& piece, RepairReport& report, bool apply)
   size_t reportOnly = 0;
   const bool nonManifoldInput = !this->Tree.inputNonManifoldEdges.empty();
   const auto loops = BoundaryLoops(piece, nonManifoldInput, reportOnly);
+  if (loops.empty())
+    return 0; // a closed piece: no edge sets to build (a hash of every edge, each pass)
   LoopFill pass(piece, report, apply, nonManifoldInput);
   int filled = 0;
   for (size_t index = 0; index < loops.size(); ++index)
