@@ -290,6 +290,8 @@ std::vector<std::vector<int>> Unfolder::BoundaryLoops(const Piece& piece,
 {
   reportOnly = std::numeric_limits<size_t>::max();
   const OpenEdges edges(piece);
+  if (edges.open.empty())
+    return {}; // a closed piece: no loop, directed or not
   std::vector<std::vector<int>> loops = DirectedLoops(piece, edges);
   if (!undirectedRest)
     return loops;

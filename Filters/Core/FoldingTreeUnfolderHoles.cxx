@@ -442,7 +442,7 @@ int Unfolder::FillLoops(Piece& piece, RepairReport& report, bool apply)
   const bool nonManifoldInput = !this->Tree.inputNonManifoldEdges.empty();
   const auto loops = BoundaryLoops(piece, nonManifoldInput, reportOnly);
   if (loops.empty())
-    return 0; // a closed piece: no edge sets to build (a hash of every edge, each pass)
+    return 0; // no loop (e.g. a closed piece): no edge sets to build (a hash of every edge)
   LoopFill pass(piece, report, apply, nonManifoldInput);
   int filled = 0;
   for (size_t index = 0; index < loops.size(); ++index)
