@@ -87,7 +87,6 @@ int Unfolder::Zip(Piece& out,
   // Hashed (the open edges are sorted below: the same order as an ordered map's); an edge
   // whose faces are all gone keeps an empty list, which every use below treats as no edge.
   FlatEdgeMap<EdgeFaceList> edgeFaces;
-  edgeFaces.reserve(3 * static_cast<size_t>(out.NumberOfFaces()) / 2);
   auto addFace = [&](int f)
   {
     const Triangle& t = out.triangles[f];
@@ -100,7 +99,19 @@ int Unfolder::Zip(Piece& out,
     for (int k = 0; k < 3; ++k)
       edgeFaces[key(t[k], t[(k + 1) % 3])].erase(f);
   };
+  // Only the faces with two candidate corners or more: an edge between two candidates (the
+  // only edges looked up below) belongs to those alone, and so do the faces a split makes (u
+  // and a candidate of the split edge) - the same lists as over every face, for a fraction
+  // of the hashing on a large piece.
+  std::vector<int> seamFaces;
   for (int f = 0; f < out.NumberOfFaces(); ++f)
+  {
+    const Triangle& t = out.triangles[f];
+    if ((isTear[t[0]] != 0) + (isTear[t[1]] != 0) + (isTear[t[2]] != 0) >= 2)
+      seamFaces.push_back(f);
+  }
+  edgeFaces.reserve(3 * seamFaces.size() / 2 + 16);
+  for (int f : seamFaces)
     addFace(f);
   int zipped = 0;
   for (int pass = 0; pass < 3; ++pass)
