@@ -110,7 +110,7 @@ int Unfolder::Zip(Piece& out,
     if ((isTear[t[0]] != 0) + (isTear[t[1]] != 0) + (isTear[t[2]] != 0) >= 2)
       seamFaces.push_back(f);
   }
-  edgeFaces.reserve(3 * seamFaces.size() / 2 + 16);
+  edgeFaces.reserve(3 * seamFaces.size()); // a seam band has 2-3 edges a face
   for (int f : seamFaces)
     addFace(f);
   int zipped = 0;
