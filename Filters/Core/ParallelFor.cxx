@@ -19,6 +19,23 @@ namespace foldingmeshes
 namespace
 {
 thread_local bool insideLoop = false;
+/// The thread runs a range of the pool's loop (not of a loop posted from inside one).
+thread_local bool inPoolRange = false;
+
+/// Sets a thread-local flag for a scope; restores the previous value however it ends.
+struct FlagScope
+{
+  bool& flag;
+  const bool outer = flag;
+  explicit FlagScope(bool& f)
+    : flag(f)
+  {
+    flag = true;
+  }
+  ~FlagScope() { flag = outer; }
+  FlagScope(const FlagScope&) = delete;
+  FlagScope& operator=(const FlagScope&) = delete;
+};
 
 /// Marks the current thread as running ranges; restores the previous state however it ends.
 struct InsideLoopScope
@@ -34,7 +51,11 @@ struct InsideLoopScope
  * Worker threads parked between loops. One loop at a time: the calling thread claims ranges
  * too, the workers asked to take part claim the rest while the loop is open, and the caller,
  * once every range is claimed, closes the loop and returns when the workers that joined are
- * done. The pool is never destroyed (its parked threads end with the process), so
+ * done. A thread that finds no range left while others still run theirs is idle: a loop
+ * started inside a range (RunNested) is posted to the idle threads, which claim its ranges
+ * beside the thread that started it (one posted loop at a time; loops inside its ranges run
+ * serially), so uneven tasks (IRLS runs of 11 and 66 iterations) do not leave a core waiting.
+ * The pool is never destroyed (its parked threads end with the process), so
  * no static destructor has to join threads during exit or a plugin's unloading.
  */
 class ThreadPool
@@ -74,6 +95,8 @@ public:
       this->Helpers = helpers;
       this->Open = true;
       this->Active = 0;
+      this->Threads = helpers + 1;
+      this->Participants = 1;
       ++this->Generation;
     }
     this->Wake.notify_all();
@@ -81,6 +104,7 @@ public:
     // Every range is claimed now: workers that have not joined yet need not (under load they
     // may wake much later); wait only for those that did.
     std::unique_lock<std::mutex> lock(this->Lock);
+    this->HelpUntilRangesEnd(lock);
     this->Open = false;
     this->Finished.wait(lock, [this]() { return this->Active == 0; });
     this->Body = nullptr;
@@ -104,11 +128,107 @@ private:
       if (index >= this->Helpers || !this->Open)
         continue;
       ++this->Active;
+      ++this->Participants;
       lock.unlock();
       this->RunRanges();
       lock.lock();
+      this->HelpUntilRangesEnd(lock);
       if (--this->Active == 0 && !this->Open)
         this->Finished.notify_one();
+    }
+  }
+
+public:
+  /**
+   * Called inside a range of the current loop (by the thread running it): runs
+   * body(begin, end) over [0, n) with the idle threads of the loop, the caller taking part,
+   * and returns true when every range is done; false, without running anything, when no
+   * thread is idle or another posted loop is under way.
+   */
+  bool RunNested(vtkIdType n, vtkIdType grain, const RangeBody& body)
+  {
+    if (this->Idle.load(std::memory_order_relaxed) == 0) // the common case: no lock taken
+      return false;
+    {
+      std::lock_guard<std::mutex> lock(this->Lock);
+      if (this->Idle == 0 || this->NestedBody)
+        return false;
+      if (grain <= 0)
+        grain = std::max<vtkIdType>(1, n / (4 * std::max(1, this->Threads)));
+      if (grain >= n)
+        return false;
+      this->NestedBody = &body;
+      this->NestedN = n;
+      this->NestedGrain = grain;
+      this->NestedNext = 0;
+      this->NestedError = nullptr;
+    }
+    this->Help.notify_all();
+    this->RunNestedRanges();
+    std::unique_lock<std::mutex> lock(this->Lock);
+    this->NestedDone.wait(lock, [this]() { return this->NestedActive == 0; });
+    this->NestedBody = nullptr;
+    std::exception_ptr error = this->NestedError;
+    this->NestedError = nullptr;
+    lock.unlock();
+    if (error)
+      std::rethrow_exception(error);
+    return true;
+  }
+
+private:
+  /// After a thread's last range (Lock held): while other threads still run ranges, helps
+  /// with the loops they post (RunNested); returns when no thread runs a range.
+  void HelpUntilRangesEnd(std::unique_lock<std::mutex>& lock)
+  {
+    if (--this->Participants == 0)
+    {
+      this->Help.notify_all();
+      return;
+    }
+    ++this->Idle;
+    for (;;)
+    {
+      this->Help.wait(lock,
+        [this]()
+        {
+          return this->Participants == 0 ||
+            (this->NestedBody && this->NestedNext.load() < this->NestedN);
+        });
+      if (this->Participants == 0)
+        break;
+      --this->Idle;
+      ++this->NestedActive;
+      lock.unlock();
+      this->RunNestedRanges();
+      lock.lock();
+      ++this->Idle;
+      if (--this->NestedActive == 0)
+        this->NestedDone.notify_all();
+    }
+    --this->Idle;
+  }
+
+  /// Claims and runs ranges of the posted loop until none is left.
+  void RunNestedRanges()
+  {
+    InsideLoopScope inside;
+    for (;;)
+    {
+      const vtkIdType begin = this->NestedNext.fetch_add(this->NestedGrain);
+      if (begin >= this->NestedN)
+        return;
+      try
+      {
+        (*this->NestedBody)(begin, std::min(this->NestedN, begin + this->NestedGrain));
+      }
+      catch (...)
+      {
+        std::lock_guard<std::mutex> lock(this->ErrorLock);
+        if (!this->NestedError)
+          this->NestedError = std::current_exception();
+        this->NestedNext = this->NestedN; // the other threads stop after their current range
+      }
     }
   }
 
@@ -116,6 +236,7 @@ private:
   void RunRanges()
   {
     InsideLoopScope inside;
+    FlagScope poolRange(inPoolRange);
     for (;;)
     {
       const vtkIdType begin = this->Next.fetch_add(this->Grain);
@@ -148,6 +269,17 @@ private:
   std::atomic<vtkIdType> Next{ 0 }; ///< first index of the next unclaimed range
   std::mutex ErrorLock;
   std::exception_ptr Error; ///< the first exception thrown by a range
+  int Threads = 1;          ///< threads that may take part in the current loop
+  int Participants = 0;     ///< threads running (or about to claim) its ranges
+  /// Threads waiting in HelpUntilRangesEnd, not helping (changed under Lock; read without
+  /// it only to skip taking Lock when it is 0).
+  std::atomic<int> Idle{ 0 };
+  std::condition_variable Help, NestedDone;
+  const RangeBody* NestedBody = nullptr; ///< the posted loop (null: none)
+  vtkIdType NestedN = 0, NestedGrain = 1;
+  std::atomic<vtkIdType> NestedNext{ 0 };
+  int NestedActive = 0; ///< idle threads that joined the posted loop and have not finished
+  std::exception_ptr NestedError;
 };
 
 std::mutex poolCreation;
@@ -190,7 +322,10 @@ void ParallelForRanges(vtkIdType n, vtkIdType grain, const RangeBody& body)
   // compress run when FaceTree::Build asked it at each of its small inner nodes.
   if (insideLoop || (grain > 0 && grain >= n))
   {
-    body(0, n);
+    // Inside a range of the pool's loop, a loop may go to threads that have run out of
+    // ranges; elsewhere (inside a posted loop, a vtkSMPTools backend's loop) it is serial.
+    if (!(inPoolRange && grain < n && pool && pool->RunNested(n, grain, body)))
+      body(0, n);
     return;
   }
   const int threads = vtkSMPTools::GetEstimatedNumberOfThreads();

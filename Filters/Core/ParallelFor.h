@@ -24,10 +24,15 @@ using RangeBody = std::function<void(vtkIdType, vtkIdType)>;
  * OpenMP) keep their own threads: the loop is a vtkSMPTools::For there; Sequential runs one
  * range.
  *
- * Loops started inside a range (nested), or while another thread's loop occupies the pool,
- * or when no worker thread can be started, run serially on the calling thread as one range.
- * Which thread runs a range is not fixed: bodies must write disjoint results per index (no
- * per-thread state) for results that do not depend on the thread count. An exception thrown
+ * A loop started inside a range of the pool's loop (nested) goes to the pool's threads that
+ * have run out of ranges, if any is waiting (ranges of `grain`, the starting thread taking
+ * part; one such loop at a time): uneven tasks do not leave a core idle. Otherwise - no idle
+ * thread, inside a range of such a nested loop, inside another backend's loop, while another
+ * thread's loop occupies the pool, or when no worker thread can be started - the loop runs
+ * serially on the calling thread as one range. Which thread runs a range, and how a loop is
+ * cut into ranges, are not fixed: bodies must write disjoint results per index (no
+ * per-thread or per-range state that reaches the results) for results that do not depend
+ * on the thread count. An exception thrown
  * by a range reaches the caller (the first one; the other threads stop after their current
  * range). A process forked outside a loop gets a pool of its own; one forked inside a range
  * must exec (or exit) without returning from it.

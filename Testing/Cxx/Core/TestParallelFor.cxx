@@ -4,8 +4,10 @@
 //   range), for the
 //   Sequential and STDThread backends and 1, 2 and 3 threads; with 2 threads and many ranges
 //   both threads take part;
-// - a loop started inside a range (nested) runs serially, as one range, on that thread;
-//   every task of RunTasksInParallel runs once, and ForRanges inside a task is one range;
+// - a loop started inside a range (nested) covers its indices once, in ranges of at most the
+//   grain or one serial range; every task of RunTasksInParallel runs once; a thread that ran
+//   out of tasks helps with the loops started inside the others' (loops inside a helped range
+//   stay serial), and an exception thrown by a helped loop's range reaches the outer caller;
 // - loops started at the same time from several threads all complete (one gets the pool, the
 //   others run serially) and cover their indices once;
 // - an exception thrown by a range reaches the caller, and the pool works afterwards;
@@ -21,6 +23,7 @@
 #include <unistd.h>
 
 #include <atomic>
+#include <chrono>
 #include <cstdio>
 #include <mutex>
 #include <set>
@@ -99,50 +102,154 @@ void CheckNesting()
 {
   vtkSMPTools::SetBackend("STDThread");
   vtkSMPTools::Initialize(2);
-  std::atomic<int> innerCalls{ 0 }, innerWhole{ 0 }, sameThread{ 0 }, outerRanges{ 0 },
-    flagged{ 0 };
+  // Inner loops cover their indices once, in ranges of at most the grain or one whole range
+  // (serial); whichever thread runs an inner range knows it is inside a loop.
+  std::atomic<int> flagged{ 0 }, outerRanges{ 0 }, innerBad{ 0 }, innerUnflagged{ 0 };
   ParallelForRanges(64,
     4,
     [&](vtkIdType, vtkIdType)
     {
       ++outerRanges;
-      const std::thread::id outer = std::this_thread::get_id();
       flagged += foldingmeshes::InsideParallelLoop();
+      std::vector<std::atomic<int>> hits(1000);
       ParallelForRanges(1000,
         16,
         [&](vtkIdType begin, vtkIdType end)
         {
-          ++innerCalls;
-          innerWhole += begin == 0 && end == 1000;
-          sameThread += std::this_thread::get_id() == outer;
+          if (end - begin > 16 && !(begin == 0 && end == 1000))
+            ++innerBad;
+          innerUnflagged += !foldingmeshes::InsideParallelLoop();
+          for (vtkIdType k = begin; k < end; ++k)
+            ++hits[static_cast<size_t>(k)];
         });
+      for (const auto& h : hits)
+        innerBad += h != 1;
     });
   EXPECT(flagged == 16, flagged << " of 16 ranges know they run inside a loop");
-  EXPECT(outerRanges == 16 && innerCalls == 16 && innerWhole == 16 && sameThread == 16,
-    "nested loops: " << innerCalls << " inner calls for " << outerRanges
-                     << " outer ranges, not one whole serial range each");
+  EXPECT(outerRanges == 16 && innerBad == 0 && innerUnflagged == 0,
+    "nested loops: " << innerBad << " indices not covered once or ranges over the grain, "
+                     << innerUnflagged << " inner ranges not flagged");
   EXPECT(!foldingmeshes::InsideParallelLoop(), "the flag stays set after a loop");
 
   std::vector<std::atomic<int>> runs(37);
-  std::atomic<int> taskInnerCalls{ 0 }, taskInnerWhole{ 0 };
+  std::atomic<int> taskInnerBad{ 0 };
   foldingmeshes::RunTasksInParallel(runs.size(),
     [&](size_t i)
     {
       ++runs[i];
+      std::vector<std::atomic<int>> hits(1000);
       foldingmeshes::ForRanges(1000,
         16,
         [&](vtkIdType begin, vtkIdType end)
         {
-          ++taskInnerCalls;
-          taskInnerWhole += begin == 0 && end == 1000;
+          for (vtkIdType k = begin; k < end; ++k)
+            ++hits[static_cast<size_t>(k)];
         });
+      for (const auto& h : hits)
+        taskInnerBad += h != 1;
     });
   bool once = true;
   for (const auto& r : runs)
     once = once && r == 1;
   EXPECT(once, "every task runs exactly once");
-  EXPECT(taskInnerCalls == 37 && taskInnerWhole == 37,
-    "loops inside a task run serially, in one range");
+  EXPECT(taskInnerBad == 0, "loops inside tasks: " << taskInnerBad << " indices not covered once");
+}
+
+/// A thread that has run out of tasks helps with the loops the others start inside theirs:
+/// task 1 starts inner loops (after task 0 is done) until one of its ranges runs on another
+/// thread. Loops inside a helped range run serially; an exception thrown by an inner range on
+/// either thread reaches the outer caller, and the pool works afterwards.
+void CheckIdleThreadsHelp()
+{
+  vtkSMPTools::SetBackend("STDThread");
+  vtkSMPTools::Initialize(2);
+  std::atomic<bool> firstDone{ false }, helped{ false };
+  std::atomic<int> badCoverage{ 0 }, deepNotWhole{ 0 }, loops{ 0 };
+  foldingmeshes::RunTasksInParallel(2,
+    [&](size_t i)
+    {
+      if (i == 0)
+      {
+        firstDone = true;
+        return;
+      }
+      while (!firstDone)
+        std::this_thread::yield();
+      const std::thread::id self = std::this_thread::get_id();
+      for (int attempt = 0; attempt < 2000 && !helped; ++attempt)
+      {
+        ++loops;
+        std::vector<std::atomic<int>> hits(64);
+        foldingmeshes::ForRanges(64,
+          1,
+          [&](vtkIdType begin, vtkIdType end)
+          {
+            for (vtkIdType k = begin; k < end; ++k)
+              ++hits[static_cast<size_t>(k)];
+            if (std::this_thread::get_id() != self)
+              helped = true;
+            foldingmeshes::ForRanges(
+              100, 1, [&](vtkIdType b, vtkIdType e) { deepNotWhole += !(b == 0 && e == 100); });
+            volatile double x = 0.0;
+            for (int j = 0; j < 2000; ++j)
+              x = x + 1e-9 * j;
+          });
+        for (const auto& h : hits)
+          badCoverage += h != 1;
+        if (!helped)
+          std::this_thread::sleep_for(std::chrono::milliseconds(1));
+      }
+    });
+  EXPECT(helped, "in " << loops << " inner loops the idle thread never helped");
+  EXPECT(badCoverage == 0 && deepNotWhole == 0,
+    "helped loops: " << badCoverage << " indices not covered once, " << deepNotWhole
+                     << " loops inside a helped range not serial");
+
+  for (const bool onStarter : { true, false })
+  {
+    bool caught = false, thrown = false;
+    try
+    {
+      std::atomic<bool> done{ false };
+      foldingmeshes::RunTasksInParallel(2,
+        [&](size_t i)
+        {
+          if (i == 0)
+          {
+            done = true;
+            return;
+          }
+          while (!done)
+            std::this_thread::yield();
+          const std::thread::id self = std::this_thread::get_id();
+          std::atomic<bool> once{ false };
+          for (int attempt = 0; attempt < 2000; ++attempt)
+          {
+            foldingmeshes::ForRanges(64,
+              1,
+              [&](vtkIdType, vtkIdType)
+              {
+                volatile double x = 0.0;
+                for (int j = 0; j < 2000; ++j)
+                  x = x + 1e-9 * j;
+                if ((std::this_thread::get_id() == self) == onStarter && !once.exchange(true))
+                  throw std::runtime_error("from an inner range");
+              });
+            std::this_thread::sleep_for(std::chrono::milliseconds(1));
+          }
+        });
+    }
+    catch (const std::runtime_error& e)
+    {
+      thrown = true;
+      caught = std::string(e.what()) == "from an inner range";
+    }
+    EXPECT(thrown && caught,
+      "an exception thrown by an inner range on the "
+        << (onStarter ? "thread that started it" : "helping thread")
+        << " does not reach the outer caller");
+    EXPECT(CoversOnce(1000, 10), "the pool does not work after an inner exception");
+  }
 }
 
 void CheckConcurrentCallers()
@@ -239,6 +346,7 @@ int main()
   }
   CheckCoverage(true);
   CheckNesting();
+  CheckIdleThreadsHelp();
   CheckConcurrentCallers();
   CheckException();
 #if !defined(__SANITIZE_THREAD__)
