@@ -296,7 +296,8 @@ int Builder::Build(WorkMesh w, int parent, int depth, double eps, int folds, uin
   }
   // A rotation node instead (FoldingTreeRotation.cxx), where no fold lies above: of the whole
   // region, or of its rotational region (child 0 of a segmentation).
-  RotationPlan rotation, second;
+  RotationPlan rotation, second, cutSecond;
+  const bool others = this->BuildingAlternatives == 0 && this->SecondOrders;
   const bool rotates = pathFolds == 0 &&
     this->PlanRotation(index,
       w,
@@ -307,7 +308,8 @@ int Builder::Build(WorkMesh w, int parent, int depth, double eps, int folds, uin
       depth,
       eps,
       rotation,
-      this->BuildingAlternatives == 0 && this->SecondOrders ? &second : nullptr);
+      others ? &second : nullptr,
+      others ? &cutSecond : nullptr);
   regionFaces.reset();
   const SymmetricChild fold = [&](int at, WorkMesh region, int atDepth)
   { this->Fold(at, std::move(region), plane, atDepth, eps, folds, pathFolds, provenSide); };
@@ -322,14 +324,14 @@ int Builder::Build(WorkMesh w, int parent, int depth, double eps, int folds, uin
   { this->Rotate(at, std::move(region), rotation, atDepth, eps, folds); };
   const std::vector<char> turned =
     rotation.region.empty() ? std::vector<char>(nf, 1) : rotation.region;
-  if (!meaningful && second.order == 0)
+  if (!meaningful && second.order == 0 && cutSecond.order == 0)
   {
     this->Segment(index, std::move(w), pm, turned, depth, eps, folds, pathFolds, turn);
     return index;
   }
-  // Both (or all three, with a second order): the subtree that stores fewer faces (ties: the
-  // fold's, the paper's; between two orders, the larger). Each is built in full, the
-  // rotations' first; the nodes from `index` on are the subtree (preorder). Within one of
+  // The fold, the order planned, a second order, the other pass's order: the subtree that
+  // stores fewest faces (ties: the fold's, the paper's; then in that order), each built in full,
+  // the rotations' first; the nodes from `index` on are the subtree (preorder). Within one of
   // them (a remaining component with its own rotation), the faces each saves at its own node
   // decide instead, so that the builds do not multiply down a chain.
   if (this->BuildingAlternatives > 0)
@@ -344,11 +346,13 @@ int Builder::Build(WorkMesh w, int parent, int depth, double eps, int folds, uin
   ++this->BuildingAlternatives;
   const FoldingNode fresh = this->Tree.nodes[index];
   const double done = this->DoneFaces;
+  const bool keptSecond = this->KeptSecondOrder;
   struct Built
   {
     int faces = std::numeric_limits<int>::max();
     std::vector<FoldingNode> nodes;
     double done = 0.0;
+    bool keptSecond = false; ///< it holds a second order (Builder::KeptSecondOrder)
   };
   // Builds one alternative at `index` and sets it aside (the node back as it was).
   auto buildAside = [&](const std::vector<char>& region, const SymmetricChild& child)
@@ -358,50 +362,47 @@ int Builder::Build(WorkMesh w, int parent, int depth, double eps, int folds, uin
     b.faces = this->SubtreeStoredFaces(index);
     b.nodes.assign(this->Tree.nodes.begin() + index, this->Tree.nodes.end());
     b.done = this->DoneFaces;
+    b.keptSecond = this->KeptSecondOrder;
     this->Tree.nodes.resize(index);
     this->Tree.nodes.push_back(fresh);
     this->DoneFaces = done;
+    this->KeptSecondOrder = keptSecond;
     return b;
   };
-  Built first = buildAside(turned, turn), other, folded;
-  if (second.order > 0)
-  {
-    const SymmetricChild turnSecond = [&](int at, WorkMesh region, int atDepth)
-    { this->Rotate(at, std::move(region), second, atDepth, eps, folds); };
-    other = buildAside(std::vector<char>(nf, 1), turnSecond);
-  }
+  Built first = buildAside(turned, turn), other, cut, folded;
+  for (const RotationPlan* p : { &second, &cutSecond })
+    if (p->order > 0)
+    {
+      const SymmetricChild turnOther = [&](int at, WorkMesh region, int atDepth)
+      { this->Rotate(at, std::move(region), *p, atDepth, eps, folds); };
+      (p == &second ? other : cut) = buildAside(std::vector<char>(nf, 1), turnOther);
+    }
   if (meaningful)
     folded = buildAside(S, fold);
   --this->BuildingAlternatives;
   Built* kept = &folded;
-  for (Built* b : { &other, &first }) // on a tie the fold, then the larger order
+  for (Built* b : { &cut, &other, &first }) // on a tie the fold, then the first pass's orders
     if (b->faces <= kept->faces && (b->faces < kept->faces || kept != &folded))
       kept = b;
   if (O.trace)
-    O.trace(FormatTrace("[rotation] node %d: the rotation's subtree (order %d) stores %d faces%s, "
-                        "the fold's %s: %s kept (node numbers above from the other ones)",
+    O.trace(FormatTrace("[rotation] node %d: order %d's subtree stores %d faces, order %d's %d, "
+                        "the other pass's order %d's %d, the fold's %d: %s kept",
       index,
       rotation.order,
       first.faces,
-      second.order > 0 ? FormatTrace(", order %d's %d", second.order, other.faces).c_str() : "",
-      meaningful ? FormatTrace("%d", folded.faces).c_str() : "none",
+      second.order,
+      other.faces,
+      cutSecond.order,
+      cut.faces,
+      folded.faces,
       kept == &folded    ? "the fold's"
-        : kept == &first ? FormatTrace("order %d's", rotation.order).c_str()
-                         : FormatTrace("order %d's", second.order).c_str()));
-  this->KeptSecondOrder = this->KeptSecondOrder || kept == &other;
+        : kept == &first ? "the first"
+                         : "another"));
+  this->KeptSecondOrder = kept->keptSecond || kept == &other || kept == &cut;
   this->Tree.nodes.resize(index);
   this->Tree.nodes.insert(this->Tree.nodes.end(), kept->nodes.begin(), kept->nodes.end());
   this->DoneFaces = kept->done;
   return index;
-}
-
-int Builder::SubtreeStoredFaces(int index) const
-{
-  int faces = 0;
-  for (int i = index; i < this->Tree.NumberOfNodes(); ++i)
-    if (this->Tree.nodes[i].kind == FoldingNodeKind::Leaf)
-      faces += this->Tree.nodes[i].mesh.NumberOfFaces();
-  return faces;
 }
 
 void Builder::Segment(int index,
@@ -458,10 +459,9 @@ namespace
 {
 bool HasRotationNode(const FoldingTree& tree)
 {
-  for (const FoldingNode& node : tree.nodes)
-    if (node.kind == FoldingNodeKind::Rotation)
-      return true;
-  return false;
+  return std::any_of(tree.nodes.begin(),
+    tree.nodes.end(),
+    [](const FoldingNode& n) { return n.kind == FoldingNodeKind::Rotation; });
 }
 
 /// Why BuildFoldingTree cannot build from these (empty: it can).

@@ -52,6 +52,9 @@ struct RotationPlan
   /// step 3b): Rotate cuts the region it gets the same way; start: the sector's first angle.
   bool cutFaces = false;
   double start = 0.0;
+  /// Planned by the second pass (PlanSector's cutUncovered): counts as a second order
+  /// (Builder::KeptSecondOrder) once a tree keeps it.
+  bool secondPass = false;
 };
 
 class Builder
@@ -83,9 +86,10 @@ public:
   void RecordInputEdges(const WorkMesh& w);
 
   bool Aborted = false;
-  /// Whether a node may also plan and build the next smaller order that passes
-  /// (PlanRotation's `second`); whether a tree kept such a sector (BuildFoldingTree retries
-  /// without them before the planes alone when that tree misses the verification).
+  /// Whether a node may also plan and build the next smaller order that passes and the first
+  /// cut one (PlanRotation's `second` and `cutSecond`); whether a tree kept such a sector
+  /// (BuildFoldingTree retries without them before the planes alone when that tree misses the
+  /// verification).
   bool SecondOrders = true;
   bool KeptSecondOrder = false;
   /// The detections of the earlier builds of this BuildFoldingTree call (null: none kept).
@@ -265,13 +269,17 @@ private:
     int depth,
     double eps,
     RotationPlan& plan,
-    RotationPlan* second = nullptr) const;
+    RotationPlan* second = nullptr,
+    RotationPlan* cutSecond = nullptr) const;
+  /// `cutUncovered`: only the orders whose whole faces do not cover the region once, their
+  /// faces cut along the half-planes (the second pass).
   bool PlanSector(const RotationResult& r,
     const WorkMesh& region,
     const std::vector<int>& orders,
     double eps,
     RotationPlan& plan,
-    std::vector<int>* covered) const;
+    std::vector<int>* covered,
+    bool cutUncovered = false) const;
   /// Turns node `index` (region w: the region PlanSector planned on) into a rotation node
   /// and builds the sector below it.
   void Rotate(int index, WorkMesh w, const RotationPlan& plan, int depth, double eps, int folds);

@@ -27,20 +27,28 @@
 //    along the two half-planes (SplitAtHalfPlanes; the pieces keep their input face; a face
 //    the axis passes through is first cut at the axis, SplitAtAxis) and step
 //    3 is tried on the cut region, whose seams lie on the half-planes, as long as k such
-//    sectors hold at most twice the region's faces (the pieces multiply with k).
-//    The first order with a sector is the candidate (surfaces of revolution: the largest k
-//    whose sector keeps the bound).
+//    sectors hold at most three times the region's faces (the pieces multiply with k); so are
+//    whole faces that pass step 3 but miss the bound in step 4 (a polygon across the axis in
+//    large faces). The first order with a sector is the candidate (surfaces of revolution:
+//    the largest k whose sector keeps the bound).
+// 3c. A second pass cuts the orders whose whole faces do not cover the region once (rings
+//    spaced unevenly, each its own count: the queen). Its first order that passes replaces the
+//    first pass's when its sector holds fewer faces (the first pass found none: always), and
+//    the other is built too where the caller compares subtrees (Builder::Build); on a part of
+//    the region (InvariantRegion), an order's whole faces are tried first, then its cut ones.
 // 4. The error: each kept point turned by j * 360/k (j = 0 .. k - 1; j = 0 measures where the
 //    seams moved it) and each removed point turned back into the sector must lie within
 //    epsilon of the region (turned kept points measured against the region, removed points
 //    against the sector), and so must the centroids and edge midpoints of the kept faces whose
-//    seam vertices moved; each kept point is charged the largest distance of its own turns and
-//    faces, and each corner of the sector face nearest a removed point turned back that
-//    point's distance, from its error budget (which must cover it). A turn is an isometry: the k
-//    copies do not compound like nested folds, so the subtree gets epsilon / 2, like a fold's half
-//    (and what its budgets hold), for any k; the builder's verification (verifyBound) proves the
-//    whole. Up to MaximumCheckedOrders orders get this check; each stops at the first turn beyond
-//    the limit.
+//    seam vertices moved and (turned back, against the sector) those of the removed faces -
+//    a removed face can span surface no copy reproduces although its corners all have
+//    partners; each kept point is charged the largest distance of its own turns and
+//    faces, and each corner of the sector face nearest a removed point (or removed face's
+//    sample) turned back that distance, from its error budget (which must cover it). A turn is an
+//    isometry: the k copies do not compound like nested folds, so the subtree gets epsilon / 2,
+//    like a fold's half (and what its budgets hold), for any k; the builder's verification
+//    (verifyBound) proves the whole. Up to MaximumCheckedOrders orders get this check; each stops
+//    at the first turn beyond the limit.
 // Seam vertices carry the tear bit of the rotation node's depth; the unfolder stitches the
 // copies' seams like segmentation seams (Unfolder::Turn).
 #include "FoldingTreeBuilderInternal.h"
@@ -80,6 +88,15 @@ std::vector<int> CandidateOrders(const RotationResult& r, int maximumOrder, bool
 
 }
 
+int Builder::SubtreeStoredFaces(int index) const
+{
+  int faces = 0;
+  for (int i = index; i < this->Tree.NumberOfNodes(); ++i)
+    if (this->Tree.nodes[i].kind == FoldingNodeKind::Leaf)
+      faces += this->Tree.nodes[i].mesh.NumberOfFaces();
+  return faces;
+}
+
 bool Builder::HasRotationAbove(int index) const
 {
   for (int a = this->Tree.nodes[index].parent; a >= 0; a = this->Tree.nodes[a].parent)
@@ -95,7 +112,8 @@ bool Builder::PlanSector(const RotationResult& r,
   const std::vector<int>& orders,
   double eps,
   RotationPlan& plan,
-  std::vector<int>* covered) const
+  std::vector<int>* covered,
+  bool cutUncovered) const
 {
   const FoldingTreeOptions& O = this->Options;
   const AxisFrame frame(r.axis);
@@ -119,10 +137,12 @@ bool Builder::PlanSector(const RotationResult& r,
     const bool coversOnce = why != NotCoveredOnce && why != NoSector && why != TooManyPieces;
     if (covered && coversOnce)
       covered->push_back(k);
-    // Whole faces cover the region once but their seams do not meet: cut the faces along the
-    // half-planes (step 3b).
+    if (cutUncovered && why != NotCoveredOnce)
+      continue; // the orders of the first pass
+    // Whole faces cover the region once but their seams do not meet (or, `cutUncovered`, they
+    // do not cover it once): cut the faces along the half-planes (step 3b).
     bool cutFaces = false;
-    if (why && coversOnce)
+    if (why && (coversOnce || cutUncovered))
     {
       const double start = cut.start;
       split = SplitAtHalfPlanes(frame, region, start, TwoPi / k, offAxis);
@@ -158,14 +178,46 @@ bool Builder::PlanSector(const RotationResult& r,
       continue;
     }
     double worst = 0.0;
-    const bool within =
-      ChargeTurns(frame, cutFaces ? split : region, toRegion, cut, limit, plan.charge, worst);
+    int stage = 0;
+    bool within = ChargeTurns(
+      frame, cutFaces ? split : region, toRegion, cut, limit, plan.charge, worst, &stage);
     if (O.trace)
       O.trace(FormatTrace("[rotation]   order %d: error %.3g of the limit %.3g%s",
         k,
         worst,
         limit,
         within ? "" : " (or a budget): rejected"));
+    if (!within && !cutFaces && stage >= 2) // not a wrong order (its kept points' turns pass)
+    {
+      // Whole faces whose copies miss the bound (faces that span much of a sector, a polygon
+      // across the axis in large triangles): the faces cut along the half-planes (step 3b)
+      // may keep it.
+      const double start = cut.start;
+      split = SplitAtHalfPlanes(frame, region, start, TwoPi / k, offAxis);
+      const char* whySplit = CutSector(frame,
+        split,
+        EdgeFaces(split.triangles),
+        k,
+        snap,
+        offAxis,
+        cut,
+        start,
+        region.NumberOfFaces());
+      if (!whySplit)
+      {
+        cutFaces = true;
+        within = ChargeTurns(frame, split, toRegion, cut, limit, plan.charge, worst);
+      }
+      if (O.trace && whySplit)
+        O.trace(FormatTrace("[rotation]   order %d cut along the half-planes: %s", k, whySplit));
+      else if (O.trace)
+        O.trace(FormatTrace("[rotation]   order %d cut along the half-planes: error %.3g of the "
+                            "limit %.3g%s",
+          k,
+          worst,
+          limit,
+          within ? "" : " (or a budget): rejected"));
+    }
     if (within)
     {
       plan.axis = r.axis;
@@ -175,6 +227,7 @@ bool Builder::PlanSector(const RotationResult& r,
       plan.keep = std::move(cut.keep);
       plan.points = std::move(cut.points);
       plan.seam = std::move(cut.seam);
+      plan.secondPass = cutUncovered;
       return true;
     }
     if (++checked == MaximumCheckedOrders)
@@ -192,12 +245,14 @@ bool Builder::PlanRotation(int index,
   int depth,
   double eps,
   RotationPlan& plan,
-  RotationPlan* second) const
+  RotationPlan* second,
+  RotationPlan* cutSecond) const
 {
   const FoldingTreeOptions& O = this->Options;
   plan = RotationPlan();
-  if (second)
-    *second = RotationPlan();
+  for (RotationPlan* other : { second, cutSecond })
+    if (other)
+      *other = RotationPlan();
   if (!O.rotationNodes || this->HasRotationAbove(index) || depth + 3 > this->MaximumDepth)
     return false;
   const auto started = std::chrono::steady_clock::now();
@@ -234,11 +289,36 @@ bool Builder::PlanRotation(int index,
     std::vector<int> covered;
     const std::vector<int> orders = CandidateOrders(r, O.maximumRotationOrder, !wholeMirror);
     planned = !pinned && this->PlanSector(r, w, orders, eps, plan, &covered);
-    if (planned && second) // the next smaller order that passes, for the caller to compare
+    const int firstPassOrder = plan.order;
+    // The first order whose whole faces do not cover the region once but whose faces cut along
+    // the half-planes pass (step 3b, second pass: rings spaced unevenly, polygons across the
+    // axis in large faces). Its sector replaces the first pass's when it holds fewer faces
+    // (not on a tie: its copies are cut, the unfolded mesh finer), and the other is handed to
+    // the caller to compare (`cutSecond`).
+    RotationPlan cut;
+    if (!pinned && this->SecondOrders && this->PlanSector(r, w, orders, eps, cut, nullptr, true))
+    {
+      auto faces = [](const RotationPlan& p)
+      { return static_cast<int>(std::count(p.keep.begin(), p.keep.end(), 1)); };
+      const bool replaces = !planned || faces(cut) < faces(plan);
+      if (O.trace)
+        O.trace(FormatTrace("[rotation]   order %d, cut along the half-planes, passes too "
+                            "(%d faces in its sector%s): %s",
+          cut.order,
+          faces(cut),
+          planned ? FormatTrace(", order %d's %d", plan.order, faces(plan)).c_str() : "",
+          replaces ? "it is the sector" : "its sector is built too"));
+      if (replaces)
+        std::swap(plan, cut);
+      if (cutSecond && cut.order > 0)
+        *cutSecond = std::move(cut);
+      planned = true;
+    }
+    if (firstPassOrder > 0 && second) // the next smaller order that passes, to compare
     {
       std::vector<int> smaller;
       for (int k : orders)
-        if (k < plan.order)
+        if (k < firstPassOrder)
           smaller.push_back(k);
       if (!this->PlanSector(r, w, smaller, eps, *second, nullptr))
         *second = RotationPlan();
@@ -285,7 +365,12 @@ bool Builder::PlanRotation(int index,
             100.0 * area / Area(w),
             strict ? "strict" : "loose"));
         const bool part = faces > 0 && faces < w.NumberOfFaces() && area >= minimumArea;
-        if (part && this->PlanSector(r, Extract(w, region), { covered[i] }, eps, plan, nullptr))
+        // Whole faces first, then (their sector not covering the part once) cut ones.
+        const WorkMesh sub = part ? Extract(w, region) : WorkMesh();
+        if (part &&
+          (this->PlanSector(r, sub, { covered[i] }, eps, plan, nullptr) ||
+            (this->SecondOrders &&
+              this->PlanSector(r, sub, { covered[i] }, eps, plan, nullptr, true))))
         {
           planned = true;
           plan.region = std::move(region);
@@ -341,6 +426,7 @@ void Builder::Rotate(int index,
     if (plan.seam[v])
       w.tear[v] |= bit;
   }
+  this->KeptSecondOrder = this->KeptSecondOrder || plan.secondPass;
   FoldingNode& node = this->Tree.nodes[index];
   node.kind = FoldingNodeKind::Rotation;
   node.axis = plan.axis;

@@ -100,14 +100,17 @@ const char* CutSector(const AxisFrame& frame,
 
 /// The error check (FoldingTreeRotation.cxx, step 4); fills the per-point charge (kept points) and
 /// returns whether every distance is within `limit` and every charge within its point's budget
-/// (`worst`: the largest distance measured).
+/// (`worst`: the largest distance measured). `failedStage` (optional): 0 passed; else what
+/// failed: 1 the kept points turned, 2 the moved faces' samples, 3 the removed points and
+/// faces turned back, 4 a budget.
 bool ChargeTurns(const AxisFrame& frame,
   const WorkMesh& w,
   const SurfaceDistanceQuery& toRegion,
   const SectorCut& cut,
   double limit,
   std::vector<double>& charge,
-  double& worst);
+  double& worst,
+  int* failedStage = nullptr);
 
 /**
  * The faces of `region` (per face of w) whose vertices and centroid, turned by every j 360/k

@@ -1,10 +1,12 @@
 // BuildFoldingTree keeps the plane detection of every region for its later builds
 // (FoldingTreeOptions::reuseDetections, FoldingTreeDetectionCache.h). On two real meshes whose
-// first tree is built again at the same epsilon - the spider (no normals; a round of pins: 2
-// open edges where the input is closed) and the queen with rotation nodes (the file's normals;
-// its rotation tree misses, the planes alone are built again) - the tree is node for node the
+// first tree is built again at the same epsilon - the spider (a round of pins: 2 open edges
+// where the input is closed) and the fandisk (a round of pins) - the tree is node for node the
 // one built with every detection run anew, and the later build took the root's detection from
-// the earlier one (the trace says so for node 0); without reuse nothing was reused.
+// the earlier one (the trace says so for node 0); without reuse nothing was reused. (Until
+// 2026-12-06 the second mesh was the queen with rotation nodes and the file's normals, whose
+// first rotation tree missed the bound; since the rotation check measures the removed faces
+// too, no shared mesh's rotation tree misses at 2%: the input ids in the key are checked below.)
 // DetectionCache itself: a region's slot is found again only for the same points, triangles,
 // epsilon and (with input normals) input ids, bit for bit (-0.0 is not 0.0), and a slot stays
 // where it is while a thousand other regions are added.
@@ -141,8 +143,8 @@ void TestCacheKeys()
 int main(int argc, char* argv[])
 {
   TestCacheKeys();
-  REQUIRE(argc > 2, "usage: TestDetectionReuse spider_vtk.ply queen_chess_quaddamage.obj");
+  REQUIRE(argc > 2, "usage: TestDetectionReuse spider_vtk.ply fandisk_alec.obj");
   Check(argv[1], false, false);
-  Check(argv[2], true, true);
+  Check(argv[2], false, false);
   return coretest::Finish("TestDetectionReuse");
 }

@@ -166,11 +166,12 @@ void Revolution()
 
 /// Fine rings (40 vertices): whole faces, seams turned onto the half-planes. Coarse rings (12
 /// vertices): turning the seams would flip faces, so the faces are cut along the half-planes.
-/// With polygon caps (no vertex on the axis: the axis passes through a diagonal of each cap),
-/// the sector of order 3 is cut at the axis too and its tree is proved within epsilon, but the
-/// unfolder leaves a hole of six edges at a cap's centre, where the copies' cap seams meet
-/// the subtree's seams: the builder falls back to the planes alone (TestRotationSector checks
-/// the cut itself); never more faces than the planes alone, and nothing open.
+/// With polygon caps (no vertex on the axis: the axis passes through a diagonal of each cap,
+/// triangulated in large faces across it), the sectors of whole faces do not cover the caps
+/// once, and the cut sectors of those orders (the second pass) are cut at the axis too: the
+/// root is a rotation node there as well (before the second pass: the planes alone). Never more
+/// faces than the planes alone, k sectors hold at most three times the input's faces, nothing
+/// open.
 void Staggered()
 {
   for (int segments : { 40, 12, -12 })
@@ -190,17 +191,16 @@ void Staggered()
     const FoldingTree tree = FoldAndCheck(name, m);
     int first = -1;
     const int rotations = CountRotationNodes(tree, first);
-    EXPECT(s.polygonCaps || (rotations == 1 && first == 0),
+    EXPECT(rotations == 1 && first == 0,
       name << ": " << rotations << " rotation nodes, the first at " << first);
     const FoldingTree planes = coretest::Fold(m, 0.02 * coretest::Diagonal(m));
-    EXPECT(s.polygonCaps ? tree.StoredFaces() <= planes.StoredFaces()
-                         : tree.StoredFaces() < planes.StoredFaces(),
+    EXPECT(tree.StoredFaces() < planes.StoredFaces(),
       name << ": " << tree.StoredFaces() << " faces stored, " << planes.StoredFaces()
            << " with planes alone");
     EXPECT(first < 0 ||
         tree.nodes[first].rotationOrder * tree.nodes[first + 1].numberOfFaces <=
-          2.0 * m.triangles.size(),
-      name << ": the sectors hold more than twice the faces");
+          3.0 * m.triangles.size(),
+      name << ": the sectors hold more than three times the faces");
   }
 }
 

@@ -13,7 +13,11 @@
 //   at the axis; a pole 1e-3 off the axis is not, and its cap's share stays exact;
 // - no piece flips; every per-point and per-face array stays in step;
 // - a cap whose faces the axis does not pierce (it has a vertex there) is cut as before;
-// - InvariantRegion keeps a region that every turn of the order maps onto itself.
+// - InvariantRegion keeps a region that every turn of the order maps onto itself;
+// - ChargeTurns rejects a sector of whole faces whose copies miss the middle of a polygon
+//   across the axis triangulated in large faces (the queen's flat collar, a strip of chords),
+//   although every corner of it has a turned partner on the sector's faces; with the polygon as
+//   a fan about its centre the same sector passes, every distance zero.
 //
 //   TestRotationSector
 #include "CoreTestUtilities.h"
@@ -280,6 +284,92 @@ void InvariantUnderEveryTurn()
     }
   }
 }
+
+/// A closed cylinder of n segments about the z axis (radius 1, height 1): its wall, its bottom
+/// a fan about its centre, its top (stripTop) a strip of chords across the axis or a fan too.
+WorkMesh Cylinder(int n, bool stripTop)
+{
+  WorkMesh w;
+  for (int ring = 0; ring < 2; ++ring)
+    for (int i = 0; i < n; ++i)
+    {
+      const double a = 2.0 * Pi * (i + 0.5) / n;
+      w.points.emplace_back(std::cos(a), std::sin(a), ring);
+    }
+  const int bottom = w.NumberOfPoints(), top = bottom + 1;
+  w.points.emplace_back(0.0, 0.0, 0.0);
+  if (!stripTop)
+    w.points.emplace_back(0.0, 0.0, 1.0);
+  for (int i = 0; i < n; ++i)
+  {
+    const int j = (i + 1) % n;
+    w.triangles.push_back({ i, j, n + j });
+    w.triangles.push_back({ i, n + j, n + i });
+    w.triangles.push_back({ bottom, j, i });
+    if (!stripTop)
+      w.triangles.push_back({ top, n + i, n + j });
+  }
+  if (stripTop) // chords between i and n - 1 - i, i = 0 .. n/2 - 1
+    for (int i = 0; i + 1 < n / 2; ++i)
+    {
+      const int a = n + i, b = n + i + 1, c = n + (n - 2 - i), d = n + (n - 1 - i);
+      w.triangles.push_back({ a, b, d });
+      w.triangles.push_back({ b, c, d });
+    }
+  const int np = w.NumberOfPoints();
+  for (int v = 0; v < np; ++v)
+    w.pointOrig.push_back(v);
+  for (int f = 0; f < w.NumberOfFaces(); ++f)
+    w.faceOrig.push_back(f);
+  w.tear.assign(np, 0);
+  w.onPlane.assign(np, 0);
+  w.projected.assign(np, 0);
+  w.mirrorFlags.assign(np, {});
+  w.budget.assign(np, 1.0);
+  return w;
+}
+
+/// The sector of order 9 of whole faces from angle 0 (faces by centroid), seams unmoved,
+/// checked by ChargeTurns against the cylinder (limit 0.05).
+bool ChargeWholeSector(const WorkMesh& w, double& worst)
+{
+  RotationAxis axis;
+  axis.origin = Vec3(0.0, 0.0, 0.0);
+  axis.direction = Vec3(0.0, 0.0, 1.0);
+  const AxisFrame frame(axis);
+  SectorCut cut;
+  cut.order = 9;
+  cut.start = frame.Angle(Vec3(1.0, -1e-9, 0.0));
+  cut.points = w.points;
+  cut.move.assign(w.points.size(), 0.0);
+  cut.seam.assign(w.points.size(), 0);
+  for (const Triangle& t : w.triangles)
+  {
+    const Vec3 c = (w.points[t[0]] + w.points[t[1]] + w.points[t[2]]) / 3.0;
+    cut.keep.push_back(
+      frame.Radius(c) > 1e-12 && Modulo(frame.Angle(c) - cut.start, TwoPi) < TwoPi / 9);
+  }
+  TriangleMesh surface;
+  surface.points = w.points;
+  surface.triangles = w.triangles;
+  const SurfaceDistanceQuery toRegion(surface);
+  std::vector<double> charge;
+  return ChargeTurns(frame, w, toRegion, cut, 0.05, charge, worst);
+}
+
+void PolygonAcrossTheAxis()
+{
+  double worst = 0.0;
+  const bool fan = ChargeWholeSector(Cylinder(18, false), worst);
+  EXPECT(fan && worst <= 1e-9,
+    "a cylinder with fans about the axis: its sector of order 9 is rejected (worst distance "
+      << worst << ")");
+  const bool strip = ChargeWholeSector(Cylinder(18, true), worst);
+  EXPECT(!strip && worst > 0.1,
+    "a cylinder whose top is a strip of chords across the axis: its sector of whole faces of "
+    "order 9 passes (worst distance "
+      << worst << "), though its copies leave the top's middle open");
+}
 }
 
 int main()
@@ -287,5 +377,6 @@ int main()
   PierceCut();
   PiercePoint();
   InvariantUnderEveryTurn();
+  PolygonAcrossTheAxis();
   return coretest::Finish("TestRotationSector");
 }
