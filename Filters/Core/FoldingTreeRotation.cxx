@@ -128,6 +128,22 @@ bool Builder::PlanSector(const RotationResult& r,
   int checked = 0;
   const double offAxis = 1e-9 * this->Tree.diagonal;
   WorkMesh split;
+  // The region's faces cut along order k's half-planes from the sector's start (step 3b): the
+  // sector of `split` in `cut`; why there is none (nullptr: there is).
+  auto cutAlongHalfPlanes = [&](int k)
+  {
+    const double start = cut.start;
+    split = SplitAtHalfPlanes(frame, region, start, TwoPi / k, offAxis);
+    return CutSector(frame,
+      split,
+      EdgeFaces(split.triangles),
+      k,
+      snap,
+      offAxis,
+      cut,
+      start,
+      region.NumberOfFaces());
+  };
   for (int k : orders)
   {
     const char* why = CutSector(frame, region, edges, k, snap, offAxis, cut);
@@ -144,17 +160,7 @@ bool Builder::PlanSector(const RotationResult& r,
     bool cutFaces = false;
     if (why && (coversOnce || cutUncovered))
     {
-      const double start = cut.start;
-      split = SplitAtHalfPlanes(frame, region, start, TwoPi / k, offAxis);
-      const char* whySplit = CutSector(frame,
-        split,
-        EdgeFaces(split.triangles),
-        k,
-        snap,
-        offAxis,
-        cut,
-        start,
-        region.NumberOfFaces());
+      const char* whySplit = cutAlongHalfPlanes(k);
       if (O.trace)
         O.trace(FormatTrace("[rotation]   order %d: %s (farthest seam vertex %.3g from its "
                             "half-plane, snap %.3g); cut along the half-planes: %s",
@@ -192,17 +198,7 @@ bool Builder::PlanSector(const RotationResult& r,
       // Whole faces whose copies miss the bound (faces that span much of a sector, a polygon
       // across the axis in large triangles): the faces cut along the half-planes (step 3b)
       // may keep it.
-      const double start = cut.start;
-      split = SplitAtHalfPlanes(frame, region, start, TwoPi / k, offAxis);
-      const char* whySplit = CutSector(frame,
-        split,
-        EdgeFaces(split.triangles),
-        k,
-        snap,
-        offAxis,
-        cut,
-        start,
-        region.NumberOfFaces());
+      const char* whySplit = cutAlongHalfPlanes(k);
       if (!whySplit)
       {
         cutFaces = true;

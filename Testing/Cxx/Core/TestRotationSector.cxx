@@ -36,6 +36,26 @@ namespace
 {
 const double Pi = 3.14159265358979323846;
 
+/// The work mesh's per-point and per-face arrays for its points and triangles: ids as input
+/// ids, no flags, budgets 1 + step * id.
+void FillPerPointArrays(WorkMesh& w, double step)
+{
+  const int np = w.NumberOfPoints();
+  w.pointOrig.resize(np);
+  w.budget.resize(np);
+  for (int v = 0; v < np; ++v)
+  {
+    w.pointOrig[v] = v;
+    w.budget[v] = 1.0 + step * v;
+  }
+  for (int f = 0; f < w.NumberOfFaces(); ++f)
+    w.faceOrig.push_back(f);
+  w.tear.assign(np, 0);
+  w.onPlane.assign(np, 0);
+  w.projected.assign(np, 0);
+  w.mirrorFlags.assign(np, {});
+}
+
 /// A regular n-gon of radius 1 in the plane z = h about the z axis, turned by `phase`,
 /// triangulated as a fan from corner 0 (no vertex on the axis), or (pole) from its centre.
 WorkMesh Cap(int n, double phase, bool pole)
@@ -55,19 +75,7 @@ WorkMesh Cap(int n, double phase, bool pole)
   else
     for (int i = 1; i + 1 < n; ++i)
       w.triangles.push_back({ 0, i, i + 1 });
-  const int np = w.NumberOfPoints();
-  w.pointOrig.resize(np);
-  for (int v = 0; v < np; ++v)
-    w.pointOrig[v] = v;
-  for (int f = 0; f < w.NumberOfFaces(); ++f)
-    w.faceOrig.push_back(f);
-  w.tear.assign(np, 0);
-  w.onPlane.assign(np, 0);
-  w.projected.assign(np, 0);
-  w.mirrorFlags.assign(np, {});
-  w.budget.resize(np);
-  for (int v = 0; v < np; ++v)
-    w.budget[v] = 1.0 + 0.01 * v;
+  FillPerPointArrays(w, 0.01);
   return w;
 }
 
@@ -316,16 +324,7 @@ WorkMesh Cylinder(int n, bool stripTop)
       w.triangles.push_back({ a, b, d });
       w.triangles.push_back({ b, c, d });
     }
-  const int np = w.NumberOfPoints();
-  for (int v = 0; v < np; ++v)
-    w.pointOrig.push_back(v);
-  for (int f = 0; f < w.NumberOfFaces(); ++f)
-    w.faceOrig.push_back(f);
-  w.tear.assign(np, 0);
-  w.onPlane.assign(np, 0);
-  w.projected.assign(np, 0);
-  w.mirrorFlags.assign(np, {});
-  w.budget.assign(np, 1.0);
+  FillPerPointArrays(w, 0.0);
   return w;
 }
 
