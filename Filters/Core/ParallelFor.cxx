@@ -213,23 +213,8 @@ private:
   void RunNestedRanges()
   {
     InsideLoopScope inside;
-    for (;;)
-    {
-      const vtkIdType begin = this->NestedNext.fetch_add(this->NestedGrain);
-      if (begin >= this->NestedN)
-        return;
-      try
-      {
-        (*this->NestedBody)(begin, std::min(this->NestedN, begin + this->NestedGrain));
-      }
-      catch (...)
-      {
-        std::lock_guard<std::mutex> lock(this->ErrorLock);
-        if (!this->NestedError)
-          this->NestedError = std::current_exception();
-        this->NestedNext = this->NestedN; // the other threads stop after their current range
-      }
-    }
+    this->ClaimRanges(
+      *this->NestedBody, this->NestedN, this->NestedGrain, this->NestedNext, this->NestedError);
   }
 
   /// Claims and runs ranges until none is left.
@@ -237,21 +222,32 @@ private:
   {
     InsideLoopScope inside;
     FlagScope poolRange(inPoolRange);
+    this->ClaimRanges(*this->Body, this->N, this->Grain, this->Next, this->Error);
+  }
+
+  /// body's ranges of `grain` from `next` on, until none is left below n; the first exception
+  /// goes to `error` and makes the other threads stop after their current range.
+  void ClaimRanges(const RangeBody& body,
+    vtkIdType n,
+    vtkIdType grain,
+    std::atomic<vtkIdType>& next,
+    std::exception_ptr& error)
+  {
     for (;;)
     {
-      const vtkIdType begin = this->Next.fetch_add(this->Grain);
-      if (begin >= this->N)
+      const vtkIdType begin = next.fetch_add(grain);
+      if (begin >= n)
         return;
       try
       {
-        (*this->Body)(begin, std::min(this->N, begin + this->Grain));
+        body(begin, std::min(n, begin + grain));
       }
       catch (...)
       {
         std::lock_guard<std::mutex> lock(this->ErrorLock);
-        if (!this->Error)
-          this->Error = std::current_exception();
-        this->Next = this->N; // the other threads stop after their current range
+        if (!error)
+          error = std::current_exception();
+        next = n;
       }
     }
   }
