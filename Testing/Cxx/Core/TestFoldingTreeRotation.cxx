@@ -11,8 +11,11 @@
 //   whose sector has whole faces (48), and the sector is folded again below it;
 // - a surface of revolution whose rings each have their own phase (no column of vertices):
 //   the builder cuts the faces along the sector's half-planes; fewer faces than planes alone;
-//   with polygon caps (the axis through a cap's diagonal), never more faces than planes alone
-//   (a tree with rotation nodes that misses is rebuilt with the planes alone);
+//   with polygon caps (the axis through a cap's diagonal) a rotation node too, whose sectors
+//   (cut) hold at most three times the input's faces;
+// - the verification's fallback, forced on that vase with a distance query that lies about the
+//   rotation tree's unfold: rebuilt without second orders, then with the planes alone, which
+//   stand, within epsilon;
 // - a vase beside a separate box: the vase is a remaining region of the root's segmentation
 //   and becomes a rotation node of its own;
 // - with rotation nodes off, or on a shape with no rotational symmetry (a lumpy vase), no
@@ -25,11 +28,15 @@
 #include "CoreTestUtilities.h"
 #include "RotationTestShapes.h"
 
+#include "ClosestFaceQuery.h"
 #include "FoldingTreeBuilder.h"
+#include "PointTriangleDistance.h"
 
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <memory>
+#include <mutex>
 #include <string>
 #include <vector>
 
@@ -279,6 +286,89 @@ void Fans()
     rotated,
     onePole);
 }
+
+/// Closest faces of a surface (a copy) by trying every face; `lie`: face 0 only, whatever is
+/// nearer (a query that proves nothing near).
+class PlainQuery : public ClosestFaceQuery
+{
+public:
+  PlainQuery(const TriangleMesh& surface, bool lie)
+    : Surface(surface)
+    , Lie(lie)
+  {
+  }
+  ClosestFaceHit Closest(const Vec3& p) const override
+  {
+    ClosestFaceHit hit;
+    const int faces = this->Lie ? 1 : static_cast<int>(this->Surface.triangles.size());
+    for (int f = 0; f < faces; ++f)
+    {
+      const Triangle& t = this->Surface.triangles[f];
+      const ClosestPointOnTriangle cp = ClosestPointTriangle(
+        p, this->Surface.points[t[0]], this->Surface.points[t[1]], this->Surface.points[t[2]]);
+      if (std::sqrt(cp.squaredDistance) < hit.distance)
+        hit = { f, std::sqrt(cp.squaredDistance), cp.point };
+    }
+    return hit;
+  }
+
+private:
+  const TriangleMesh Surface;
+  const bool Lie;
+};
+
+/// The verification's fallback (docs/builder.md, "Rotation nodes" step 8): a tree with rotation
+/// nodes that misses the bound is rebuilt without its second orders, if it kept any, then with
+/// the planes alone. No shared mesh misses since the rotation check measures the removed faces,
+/// so the miss is forced: the verification's distances go through a query that lies (face 0
+/// only) for surfaces with more than 1.2 times the input's faces - the unfold of a tree with
+/// sectors cut along their half-planes -, and tell the truth for the others (the input, the
+/// trims' parts, the planes' unfold).
+void FallbackToPlanes()
+{
+  VaseShape s;
+  s.staggered = 1.0;
+  s.polygonCaps = true;
+  const TriangleMesh m = Moved(MakeVase(s, 12, 24), Motion(89));
+  const double epsilon = 0.02 * coretest::Diagonal(m);
+  FoldingTreeOptions o;
+  o.rotationNodes = true;
+  int first = -1;
+  const FoldingTree honest = coretest::Fold(m, epsilon, o);
+  const size_t unfoldedFaces = coretest::Unfold(honest).triangles.size();
+  REQUIRE(CountRotationNodes(honest, first) == 1 && unfoldedFaces > 1.2 * m.triangles.size(),
+    "fallback: the vase's tree has no rotation node or unfolds to only " << unfoldedFaces
+                                                                         << " faces");
+  const double limit = 1.2 * m.triangles.size();
+  o.verificationQueries = [limit](const TriangleMesh& surface)
+  { return std::make_unique<PlainQuery>(surface, surface.triangles.size() > limit); };
+  std::mutex lock;
+  std::vector<std::string> lines;
+  o.trace = [&](const std::string& line)
+  {
+    std::lock_guard<std::mutex> guard(lock);
+    if (line.rfind("[verify]", 0) == 0)
+      lines.push_back(line);
+  };
+  const FoldingTree tree = coretest::Fold(m, epsilon, o);
+  bool planesAlone = false;
+  for (const std::string& line : lines)
+  {
+    planesAlone = planesAlone || line.find("rebuilt with planes alone") != std::string::npos;
+    std::printf("fallback: %s\n", line.c_str());
+  }
+  EXPECT(planesAlone,
+    "fallback: no rebuild with the planes alone (" << lines.size() << " [verify] lines)");
+  EXPECT(CountRotationNodes(tree, first) == 0 && tree.verificationRounds >= 1,
+    "fallback: the kept tree has a rotation node, or no verification round");
+  EXPECT(tree.verifiedBound >= 0.0 && tree.verifiedBound <= epsilon &&
+      coretest::Hausdorff(m, coretest::Unfold(tree)) <= epsilon,
+    "fallback: the planes' tree is not within epsilon (proved " << tree.verifiedBound << ")");
+  std::printf("fallback: %zu [verify] lines, the planes' tree stores %d faces (rotation %d)\n",
+    lines.size(),
+    tree.StoredFaces(),
+    honest.StoredFaces());
+}
 }
 
 int main()
@@ -288,6 +378,7 @@ int main()
   TwistedVases(true);
   Revolution();
   Staggered();
+  FallbackToPlanes();
   VaseBesideBox();
   NoRotation();
   return coretest::Finish("TestFoldingTreeRotation");
