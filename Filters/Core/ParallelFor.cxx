@@ -18,6 +18,7 @@ namespace foldingmeshes
 {
 namespace
 {
+/// The thread runs ranges of a parallel loop (InsideParallelLoop; nested loops see it).
 thread_local bool insideLoop = false;
 /// The thread runs a range of the pool's loop (not of a loop posted from inside one).
 thread_local bool inPoolRange = false;
@@ -35,16 +36,6 @@ struct FlagScope
   ~FlagScope() { flag = outer; }
   FlagScope(const FlagScope&) = delete;
   FlagScope& operator=(const FlagScope&) = delete;
-};
-
-/// Marks the current thread as running ranges; restores the previous state however it ends.
-struct InsideLoopScope
-{
-  const bool outer = insideLoop;
-  InsideLoopScope() { insideLoop = true; }
-  ~InsideLoopScope() { insideLoop = outer; }
-  InsideLoopScope(const InsideLoopScope&) = delete;
-  InsideLoopScope& operator=(const InsideLoopScope&) = delete;
 };
 
 /**
@@ -212,7 +203,7 @@ private:
   /// Claims and runs ranges of the posted loop until none is left.
   void RunNestedRanges()
   {
-    InsideLoopScope inside;
+    FlagScope inside(insideLoop); // the thread runs ranges
     this->ClaimRanges(
       *this->NestedBody, this->NestedN, this->NestedGrain, this->NestedNext, this->NestedError);
   }
@@ -220,7 +211,7 @@ private:
   /// Claims and runs ranges until none is left.
   void RunRanges()
   {
-    InsideLoopScope inside;
+    FlagScope inside(insideLoop); // the thread runs ranges
     FlagScope poolRange(inPoolRange);
     this->ClaimRanges(*this->Body, this->N, this->Grain, this->Next, this->Error);
   }
@@ -349,7 +340,7 @@ void ParallelForRanges(vtkIdType n, vtkIdType grain, const RangeBody& body)
     grain,
     [&](vtkIdType begin, vtkIdType end)
     {
-      InsideLoopScope inside;
+      FlagScope inside(insideLoop); // the thread runs ranges
       body(begin, end);
     });
 }
