@@ -80,6 +80,9 @@ original and stored faces, compression, tree height, folds, leaves and time.
   --rotation               rotation nodes: where no fold lies above, keep one sector of a
                            rotational symmetry of order k (a turn by 360/k) and fold on
                            within it (default off; docs/builder.md, "Rotation nodes")
+  --rotation-when-axial    --rotation only where MESH's second moments are axially symmetric
+                           (two eigenvalues within 2% of the larger): no cost elsewhere
+  --no-rotation            no rotation nodes (the default; turns compress's rule off)
   --max-rotation-order N   largest order tried with --rotation (default 64, range 2..360)
   --seed N                 seed of the candidate sampling, as for detect (default 1)
   --tight-symmetry         fold only clear symmetries (RMS mirror distance <= 0.35 epsilon);
@@ -138,8 +141,10 @@ exceeds the root epsilon (decided to 1e-7 of the diagonal). No pictures.
 compress: folds MESH (fold options) and writes STEM.fmz in --outdir: the compact folding tree,
 only what unfolding needs, the leaves coded with Draco; prints (JSON: "output", "bytes")
 its size, the stored faces and the quantisation. Unless given, compress folds with
---min-faces 400 (fewer, larger leaves: files up to 39% smaller; JSON "foldOptions": what it
-added, "" none); the other fold options keep the fold command's defaults.
+--min-faces 400 (fewer, larger leaves: files up to 39% smaller) and --rotation-when-axial;
+a tree that gets rotation nodes so is compared with the fold without them and the smaller
+file kept (JSON "foldOptions": what it added to the options given, "" none; the other fold
+options keep the fold command's defaults).
   --quantization-bits N    position bits per coordinate, 6..24, or auto (default): the fewest
                            (at least 8) whose error is at most half of the smallest error
                            budget of a stored point; the error is taken from the budgets, so
@@ -149,9 +154,10 @@ added, "" none); the other fold options keep the fold command's defaults.
   --search                 also fold with up to six other settings (the options given alone,
                            --keep fewer, --min-faces 400, --min-area-fraction 0.2 and
                            combinations, --rotation --min-faces 400, on top of the options
-                           given; settings already folded are not folded again) and keep the
-                           smallest file (JSON "foldOptions", "foldSettingsTried"); up to
-                           seven folds: about seven times the time
+                           given; settings already folded are not folded again; with
+                           --no-rotation, none with rotation nodes) and keep the smallest file
+                           (JSON "foldOptions", "foldSettingsTried"); up to eight folds: about
+                           seven times the time
 decompress: unfolds a .fmz file like unfold (same options, --original too) and writes
 STEM.vtp and STEM.png in --outdir (JSON: "output"). Not kept in a .fmz: input ids, and user
 arrays without --keep-arrays (keep the .vtm for those). unfold reads .fmz files too.

@@ -118,35 +118,33 @@ int Compress(int argc, char* argv[])
   CompressedCandidate best;
   best.builder = MakeBuilder(f, nullptr);
   // JSON "foldOptions": what compress added to the options given.
-  std::string chosen =
-    ApplyCompressFoldDefaults(best.builder, f.keep.has_value(), f.minFaces.has_value());
+  const bool rotationGiven = f.rotationNodes || f.rotationWhenAxial || f.noRotation;
+  std::string chosen = ApplyCompressFoldDefaults(
+    best.builder, f.keep.has_value(), f.minFaces.has_value(), rotationGiven);
   int code = 0;
   if (!FoldAndWrite(mesh, f, bits, keepArrays, output, best, error, code))
   {
     std::cerr << "foldingmeshes: " << error << "\n";
     return code;
   }
-  // --search: the other settings, each written beside the output; a smaller file replaces it.
-  // A variant that fails is skipped (the output holds the smallest file so far).
-  const std::string ownOptions = chosen;
   int tried = 1;
   const std::string candidatePath = output + ".candidate";
-  std::set<FoldSearchKey> folded{ FoldSettingsKey(best.builder) };
-  for (const FoldSearchVariant& v : FoldSearchVariants)
+  // Settings folded, RotationNodes WHEN_AXIAL as the first fold decided it for this mesh.
+  const bool axial = TriedRotationNodes(best.builder);
+  std::set<FoldSearchKey> folded{ DecidedKey(FoldSettingsKey(best.builder), axial) };
+  // Another fold, written beside the output: a smaller file replaces it (ties keep the
+  // output). A fold that fails is skipped (the output holds the smallest file so far); false
+  // only when the output cannot be replaced.
+  auto tryFold = [&](CompressedCandidate& c, const char* options) -> bool
   {
-    if (!search)
-      break;
-    CompressedCandidate c;
-    c.builder = MakeBuilder(f, &v);
-    if (!folded.insert(FoldSettingsKey(c.builder)).second)
-      continue;
+    if (!folded.insert(DecidedKey(FoldSettingsKey(c.builder), axial)).second)
+      return true;
     ++tried;
     if (!FoldAndWrite(mesh, f, bits, keepArrays, candidatePath, c, error, code))
     {
-      std::cerr << "foldingmeshes: --search, "
-                << (*v.options ? v.options : "the options given alone") << ": " << error
-                << " (skipped)\n";
-      continue;
+      std::cerr << "foldingmeshes: " << (*options ? options : "the options given alone") << ": "
+                << error << " (skipped)\n";
+      return true;
     }
     std::error_code renamed;
     if (c.bytes < best.bytes)
@@ -157,11 +155,38 @@ int Compress(int argc, char* argv[])
         std::cerr << "foldingmeshes: cannot replace " << output << ": " << renamed.message()
                   << "\n";
         std::filesystem::remove(candidatePath, renamed);
-        return 3;
+        return false;
       }
       best = c;
-      chosen = v.options;
+      chosen = options;
     }
+    return true;
+  };
+  // compress's rotation rule (CompressFoldDefaults): a tree that got rotation nodes is
+  // compared with the same fold without them (a rotation tree can cost more bytes than the
+  // faces it saves: mech).
+  auto* first = vtkMultiBlockDataSet::SafeDownCast(best.builder->GetOutputDataObject(0));
+  std::string withoutRotation;
+  if (!rotationGiven && TreeValue(first, "NumberOfRotations") > 0)
+  {
+    CompressedCandidate c;
+    c.builder = MakeBuilder(f, nullptr);
+    withoutRotation =
+      ApplyCompressFoldDefaults(c.builder, f.keep.has_value(), f.minFaces.has_value(), true);
+    if (!tryFold(c, withoutRotation.c_str()))
+      return 3;
+  }
+  // --search: the other settings.
+  for (const FoldSearchVariant& v : FoldSearchVariants)
+  {
+    if (!search)
+      break;
+    if (f.noRotation && v.rotationNodes)
+      continue;
+    CompressedCandidate c;
+    c.builder = MakeBuilder(f, &v);
+    if (!tryFold(c, v.options))
+      return 3;
   }
   std::error_code removed;
   std::filesystem::remove(candidatePath, removed);
@@ -200,13 +225,13 @@ int Compress(int argc, char* argv[])
       writer->GetQuantizationBitsUsed(),
       writer->GetQuantizationError(),
       epsilon);
-    if (search)
+    if (tried > 1)
       std::printf("fold settings:           %d tried, the smallest file with %s\n",
         tried,
         chosen.empty() ? "the options given alone" : chosen.c_str());
-    else if (!ownOptions.empty())
+    else if (!chosen.empty())
       std::printf(
-        "fold settings:           compress's %s on top of the options given\n", ownOptions.c_str());
+        "fold settings:           compress's %s on top of the options given\n", chosen.c_str());
     std::printf("time:                    %.3f s\n", seconds);
     std::printf("wrote:                   %s (%lld bytes)\n", output.c_str(), bytes);
   }

@@ -83,6 +83,10 @@ FoldSettings ParseFoldArguments(int argc, char* argv[])
       f.separateParts = true;
     else if (arg == "--rotation")
       f.rotationNodes = true;
+    else if (arg == "--rotation-when-axial")
+      f.rotationWhenAxial = true;
+    else if (arg == "--no-rotation")
+      f.noRotation = true;
     else if (arg == "--max-rotation-order")
       f.maxRotationOrder = ParseInteger(arg, value("--max-rotation-order"), 2, 360);
     else if (arg == "--sampled-search-above")
@@ -121,6 +125,9 @@ FoldSettings ParseFoldArguments(int argc, char* argv[])
   }
   if (f.meshPath.empty())
     throw std::runtime_error("no mesh given");
+  if (int(f.rotationNodes) + int(f.rotationWhenAxial) + int(f.noRotation) > 1)
+    throw std::runtime_error(
+      "--rotation, --rotation-when-axial and --no-rotation exclude each other");
   return f;
 }
 
@@ -189,7 +196,9 @@ void ConfigureBuilder(vtkFoldingTreeBuilder* builder, const FoldSettings& f)
     builder->VerifyBoundOff();
   if (f.separateParts)
     builder->ConnectNearbyPartsOff();
-  builder->SetRotationNodes(f.rotationNodes);
+  builder->SetRotationNodes(f.rotationNodes ? vtkFoldingTreeBuilder::ROTATION_NODES_ON
+      : f.rotationWhenAxial                 ? vtkFoldingTreeBuilder::ROTATION_NODES_WHEN_AXIAL
+                                            : vtkFoldingTreeBuilder::ROTATION_NODES_OFF);
   if (f.maxRotationOrder)
     builder->SetMaximumRotationOrder(*f.maxRotationOrder);
 }

@@ -38,6 +38,8 @@ struct FoldSettings
   bool noVerifyBound = false;                     // --no-verify-bound: VerifyBound off
   bool separateParts = false;                     // --separate-parts: ConnectNearbyParts off
   bool rotationNodes = false;                     // --rotation: RotationNodes on
+  bool rotationWhenAxial = false;                 // --rotation-when-axial: ... WHEN_AXIAL
+  bool noRotation = false;                        // --no-rotation: ... OFF (compress's rule off)
   std::optional<int> maxRotationOrder;            // --max-rotation-order
   int upAxis = -1;                                // the picture's up axis (--up; -1: auto)
   bool keepProjectedPoints = false;               // roundtrip's unfolder: RemoveProjectedPoints off

@@ -57,7 +57,9 @@ foldingmeshes::FoldingTreeOptions FoldingTreeOptionsOf(vtkFoldingTreeBuilder* se
     ? foldingmeshes::KeepSide::FewerFaces
     : foldingmeshes::KeepSide::MoreFaces;
   options.connectNearbyParts = self->GetConnectNearbyParts();
-  options.rotationNodes = self->GetRotationNodes();
+  options.rotationNodes = self->GetRotationNodes() == vtkFoldingTreeBuilder::ROTATION_NODES_ON;
+  options.rotationNodesWhenAxial =
+    self->GetRotationNodes() == vtkFoldingTreeBuilder::ROTATION_NODES_WHEN_AXIAL;
   options.maximumRotationOrder = self->GetMaximumRotationOrder();
   options.trace = foldingmeshes::DebugTrace(self);
   options.progress = [self](double p)
@@ -289,7 +291,11 @@ void vtkFoldingTreeBuilder::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "RequireTightSymmetry: " << this->RequireTightSymmetry << "\n";
   os << indent << "VerifyBound: " << this->VerifyBound << "\n";
   os << indent << "ConnectNearbyParts: " << this->ConnectNearbyParts << "\n";
-  os << indent << "RotationNodes: " << this->RotationNodes << "\n";
+  os << indent << "RotationNodes: "
+     << (this->RotationNodes == ROTATION_NODES_WHEN_AXIAL ? "WhenAxial"
+            : this->RotationNodes == ROTATION_NODES_ON    ? "On"
+                                                          : "Off")
+     << "\n";
   os << indent << "MaximumRotationOrder: " << this->MaximumRotationOrder << "\n";
   os << indent << "Method: " << (this->Method == PAPER ? "Paper" : "Robust") << "\n";
   os << indent << "SampledSearchAboveFaces: " << this->SampledSearchAboveFaces << "\n";

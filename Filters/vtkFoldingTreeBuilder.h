@@ -18,6 +18,8 @@
  *   point (the centroid of the stored points, no cell) whose field data holds OriginalFaces,
  * OriginalPoints, DroppedFaces, StoredFaces, StoredPoints, Compression (1 - stored/original),
  * TreeHeight, NumberOfNodes, NumberOfLeaves, NumberOfFolds, NumberOfRotations,
+ * RotationNodesTried (1 where rotation nodes were looked for: RotationNodes on, or
+ * WHEN_AXIAL and the input's second moments axially symmetric; 0 in a tree read from .fmz),
  * MaximumFoldsOnPath, OriginalArea,
  * BuildSeconds, RootEpsilon, Diagonal, Aborted, VerifiedBound, PinnedFaces and
  * VerificationRounds (see VerifyBound; optional on reading), RequestedEpsilon (the builder's
@@ -140,6 +142,12 @@ public:
     ROBUST = 0,
     PAPER = 1
   };
+  enum RotationNodeModes
+  {
+    ROTATION_NODES_OFF = 0,
+    ROTATION_NODES_ON = 1,
+    ROTATION_NODES_WHEN_AXIAL = 2
+  };
 
   ///@{
   /**
@@ -254,10 +262,15 @@ public:
    * FoldingAxisDirection and FoldingRotationOrder); the sector is built with epsilon / 2 and
    * may fold again (a dihedral part becomes rotation + fold). Surfaces of revolution get the
    * largest k whose sector has whole faces. The rule: docs/builder.md, "Rotation nodes".
+   * ROTATION_NODES_OFF (0, false, the default), ROTATION_NODES_ON (1, true), or
+   * ROTATION_NODES_WHEN_AXIAL (2): on only for an input whose surface's second moments are
+   * axially symmetric (two eigenvalues within 2% of the larger), as a rotational symmetry of
+   * order 3 or more of the whole surface makes them - no rotation detection cost elsewhere
+   * (of the 29 shared meshes: the bearing, mech and queen, each stored smaller).
    */
-  vtkSetMacro(RotationNodes, bool);
-  vtkGetMacro(RotationNodes, bool);
-  vtkBooleanMacro(RotationNodes, bool);
+  vtkSetClampMacro(RotationNodes, int, ROTATION_NODES_OFF, ROTATION_NODES_WHEN_AXIAL);
+  vtkGetMacro(RotationNodes, int);
+  vtkBooleanMacro(RotationNodes, int);
   vtkSetClampMacro(MaximumRotationOrder, int, 2, 360);
   vtkGetMacro(MaximumRotationOrder, int);
   ///@}
@@ -352,7 +365,7 @@ protected:
   bool RequireTightSymmetry = false;
   bool VerifyBound = true;
   bool ConnectNearbyParts = true;
-  bool RotationNodes = false;
+  int RotationNodes = ROTATION_NODES_OFF;
   int MaximumRotationOrder = 64; // the core's DefaultMaximumRotationOrder
   int Method = ROBUST;
   int SampledSearchAboveFaces = 1000;

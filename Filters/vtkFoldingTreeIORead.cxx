@@ -103,6 +103,10 @@ bool ReadTreeInfo(vtkPolyData* info, Reader& reader, FoldingTree& tree, std::str
     reader.Double(fd, "BuildSeconds", "Tree", &tree.buildSeconds);
   if (fd->GetAbstractArray("Aborted") && reader.Int(fd, "Aborted", "Tree", aborted))
     tree.aborted = aborted != 0;
+  long long tried = 0; // optional: files written before 2026-12-06
+  if (fd->GetAbstractArray("RotationNodesTried") &&
+    reader.Int(fd, "RotationNodesTried", "Tree", tried))
+    tree.rotationNodesTried = tried != 0;
   // Optional (files written before the builder verified its bound): not verified.
   if (fd->GetAbstractArray("VerifiedBound"))
     reader.Double(fd, "VerifiedBound", "Tree", &tree.verifiedBound);

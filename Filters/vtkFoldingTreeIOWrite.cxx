@@ -569,6 +569,7 @@ bool FoldingTreeToMultiBlock(const FoldingTree& tree,
   AddInt(fd, "NumberOfLeaves", tree.NumberOfLeaves());
   AddInt(fd, "NumberOfFolds", tree.NumberOfFolds());
   AddInt(fd, "NumberOfRotations", tree.NumberOfRotations());
+  AddInt(fd, "RotationNodesTried", tree.rotationNodesTried ? 1 : 0);
   AddInt(fd, "MaximumFoldsOnPath", tree.MaximumFoldsOnPath());
   AddDouble(fd, "OriginalArea", &tree.originalArea);
   AddDouble(fd, "BuildSeconds", &tree.buildSeconds);

@@ -107,24 +107,33 @@ bool SurfacePrincipalPlanes(const PreparedMesh& mesh, std::array<Plane, 3>& plan
   return SurfacePrincipalPlanes(mesh, std::vector<char>(mesh.NumberOfFaces(), 1), planes);
 }
 
-bool SurfacePrincipalPlanes(const PreparedMesh& mesh,
-  const std::vector<char>& faceMask,
-  std::array<Plane, 3>& planes)
+namespace
 {
-  const Vec3 center = 0.5 * (mesh.boundsMin + mesh.boundsMax);
+/// The area-weighted mean (about `center`) and covariance of the surface of the triangles
+/// `use` accepts, each of area `areaOf(f)`, by exact triangle integrals about `center` (about
+/// the world origin, far-away meshes would lose the covariance to cancellation). False
+/// without area.
+template <class Use, class AreaOf>
+bool SurfaceCovariance(const std::vector<Vec3>& points,
+  const std::vector<Triangle>& triangles,
+  const Vec3& center,
+  Use use,
+  AreaOf areaOf,
+  Vec3& mean,
+  Eigen::Matrix3d& covariance)
+{
   double area = 0.0;
   Vec3 first = Vec3::Zero();
   Eigen::Matrix3d second = Eigen::Matrix3d::Zero();
-  for (int f = 0; f < mesh.NumberOfFaces(); ++f)
+  for (size_t f = 0; f < triangles.size(); ++f)
   {
-    const double a = mesh.faceAreas[f];
-    if (!(a > 0.0) || !faceMask[f])
+    if (!use(f))
       continue;
-    // Moments about the box centre: about the world origin, far-away meshes would lose
-    // the covariance to cancellation.
-    const Triangle& t = mesh.triangles[f];
-    const Vec3 p = mesh.points[t[0]] - center, q = mesh.points[t[1]] - center,
-               r = mesh.points[t[2]] - center;
+    const double a = areaOf(f);
+    if (!(a > 0.0))
+      continue;
+    const Triangle& t = triangles[f];
+    const Vec3 p = points[t[0]] - center, q = points[t[1]] - center, r = points[t[2]] - center;
     const Vec3 s = p + q + r;
     area += a;
     first += a * s / 3.0;
@@ -134,11 +143,59 @@ bool SurfacePrincipalPlanes(const PreparedMesh& mesh,
   }
   if (!(area > 0.0))
     return false;
-  const Vec3 m = first / area + center;
-  const Vec3 mc = first / area;
-  const Eigen::Matrix3d c = second / area - mc * mc.transpose();
-  PlanesOfCovariance(m, c, planes);
+  mean = first / area;
+  covariance = second / area - mean * mean.transpose();
   return true;
+}
+}
+
+bool SurfacePrincipalPlanes(const PreparedMesh& mesh,
+  const std::vector<char>& faceMask,
+  std::array<Plane, 3>& planes)
+{
+  const Vec3 center = 0.5 * (mesh.boundsMin + mesh.boundsMax);
+  Vec3 mc;
+  Eigen::Matrix3d c;
+  if (!SurfaceCovariance(
+        mesh.points,
+        mesh.triangles,
+        center,
+        [&](size_t f) { return faceMask[f] != 0; },
+        [&](size_t f) { return mesh.faceAreas[f]; },
+        mc,
+        c))
+    return false;
+  PlanesOfCovariance(mc + center, c, planes);
+  return true;
+}
+
+bool AxiallySymmetricSecondMoments(const TriangleMesh& mesh, double relativeGap)
+{
+  if (mesh.points.empty())
+    return false;
+  Vec3 lo = mesh.points[0], hi = mesh.points[0];
+  for (const Vec3& p : mesh.points)
+  {
+    lo = lo.cwiseMin(p);
+    hi = hi.cwiseMax(p);
+  }
+  Vec3 mean;
+  Eigen::Matrix3d c;
+  const auto area = [&](size_t f)
+  {
+    const Triangle& t = mesh.triangles[f];
+    const Vec3& a = mesh.points[t[0]];
+    return 0.5 * (mesh.points[t[1]] - a).cross(mesh.points[t[2]] - a).norm();
+  };
+  if (!SurfaceCovariance(
+        mesh.points, mesh.triangles, 0.5 * (lo + hi), [](size_t) { return true; }, area, mean, c))
+    return false;
+  const Eigen::Vector3d e = Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(c).eigenvalues();
+  if (!(e[2] > 0.0))
+    return false;
+  // Each pair against the larger of the two (against the largest of all, the two small
+  // eigenvalues of any long, thin shape would agree).
+  return (e[1] > 0.0 && e[1] - e[0] <= relativeGap * e[1]) || e[2] - e[1] <= relativeGap * e[2];
 }
 
 namespace

@@ -47,6 +47,15 @@ bool SurfacePrincipalPlanes(const PreparedMesh& mesh,
   std::array<Plane, 3>& planes);
 
 /**
+ * Whether two eigenvalues of the surface's second moments (about its area centroid, exact
+ * triangle integrals) agree within `relativeGap` times the larger of the two: a necessary condition for
+ * a rotational symmetry of order 3 or more of the whole surface about any axis (such a turn
+ * maps the moment tensor onto itself, so it is axially symmetric about that axis), cheap to
+ * test. False without area.
+ */
+bool AxiallySymmetricSecondMoments(const TriangleMesh& mesh, double relativeGap);
+
+/**
  * Planes voted for by random vertex pairs (p, q) whose normals are mirror images of each
  * other across their bisector plane (within 25 degrees): the bisector planes are clustered
  * (normals within 4 degrees, offsets within epsilon, votes weighted by vertex area) and

@@ -179,6 +179,9 @@ struct FoldingTree
   double rootEpsilon = 0.0;
   double buildSeconds = 0.0;
   bool aborted = false;
+  /// Whether the builder looked for rotation nodes (FoldingTreeOptions::rotationNodes, or
+  /// rotationNodesWhenAxial and the input's moments axially symmetric).
+  bool rotationNodesTried = false;
   /// The proved bound on the Hausdorff distance between unfold(tree) (default UnfoldOptions)
   /// and the input, when the builder verified it (FoldingTreeOptions::verifyBound); -1: not
   /// verified (the option off, an abort, or a tree read from a file written without it).

@@ -15,10 +15,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <cstdio>
-#include <cstdlib>
 #include <limits>
-#include <map>
 #include <memory>
 #include <numeric>
 
@@ -199,10 +196,8 @@ void MarkTears(WorkMesh& w, const std::vector<char>& S, const std::vector<int>& 
 }
 }
 
-// The recursion of the paper's section 4 (see FoldingTreeBuilderInternal.h). (Over 100 lines
-// because it is that sequence - leaf tests, detection, the choice of S, the fold, the
-// segmentation of what remains - whose steps are named helpers; what is left is their order
-// and the node bookkeeping between them.)
+// The recursion of the paper's section 4 (FoldingTreeBuilderInternal.h): leaf tests, detection,
+// the choice of S, the fold, the segmentation of the rest - named helpers, in their order.
 int Builder::Build(WorkMesh w, int parent, int depth, double eps, int folds, uint64_t pathFolds)
 {
   const std::vector<int> dropped = WeldAndDropCollapsed(w);
@@ -475,7 +470,7 @@ std::string CheckBuildInput(const TriangleMesh& input,
     return "minimumAreaFraction must be within [0, 1]";
   if (!(options.planeSnapFraction >= 0.0 && options.planeSnapFraction < 1.0))
     return "planeSnapFraction must be within [0, 1)";
-  if (options.rotationNodes &&
+  if ((options.rotationNodes || options.rotationNodesWhenAxial) &&
     (options.maximumRotationOrder < 2 || options.maximumRotationOrder > MaximumRotationNodeOrder))
     return "maximumRotationOrder must be within [2, 360]";
   if (input.points.empty() || input.triangles.empty())
@@ -505,6 +500,9 @@ bool BuildFoldingTree(const TriangleMesh& input,
   error = CheckBuildInput(input, inputNormals, options);
   if (!error.empty())
     return false;
+  if (options.rotationNodesWhenAxial && !options.rotationNodes)
+    return BuildFoldingTree(
+      input, inputNormals, treebuilder::RotationNodesDecided(input, options), tree, error);
   const int np = static_cast<int>(input.points.size());
 
   // Distances to the input (the core's face tree), for every build and the verification.
@@ -692,6 +690,7 @@ bool BuildFoldingTree(const TriangleMesh& input,
         break; // not expected: every face pinned is the input itself
     }
   }
+  tree.rotationNodesTried = options.rotationNodes;
   tree.buildSeconds =
     std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return true;

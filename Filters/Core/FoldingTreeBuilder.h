@@ -63,6 +63,10 @@ constexpr int MaximumClosingRounds = 2;
 constexpr double MaximumClosingShare = 0.1;
 constexpr int MaximumClosingFaces = 250;
 
+/// FoldingTreeOptions::rotationNodesWhenAxial: the largest gap between two eigenvalues of the
+/// surface's second moments, as a share of the larger, that still counts as axially symmetric.
+constexpr double AxialMomentsGap = 0.02;
+
 struct FoldingTreeOptions
 {
   /// Root tolerance as an absolute length (required, > 0). The paper's default is 2% of the
@@ -205,6 +209,12 @@ struct FoldingTreeOptions
    * 70% longer, 16.7 -> 28.5 s, and the Table 1 chair and eagle more than 1 s).
    */
   bool rotationNodes = false;
+  /// With rotationNodes false: rotation nodes on for an input whose surface's second moments
+  /// are axially symmetric (AxiallySymmetricSecondMoments within AxialMomentsGap), which a
+  /// rotational symmetry of order 3 or more of the whole surface implies; off for the others,
+  /// at no cost. On the 29 shared meshes it turns them on for the bearing, mech and queen only
+  /// (gaps 0.0000-0.0052; the next, 0.178), whose trees it makes smaller (docs/builder.md).
+  bool rotationNodesWhenAxial = false;
   int maximumRotationOrder = DefaultMaximumRotationOrder;
 
   /// With verifyBound, the plane detection of every region is kept for the call: a region

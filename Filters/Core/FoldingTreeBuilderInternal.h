@@ -57,6 +57,11 @@ struct RotationPlan
   bool secondPass = false;
 };
 
+/// `options` with rotationNodesWhenAxial decided for `input`: rotationNodes on where its
+/// surface's second moments are axially symmetric (FoldingTreeOptions::rotationNodesWhenAxial).
+FoldingTreeOptions RotationNodesDecided(const TriangleMesh& input,
+  const FoldingTreeOptions& options);
+
 class Builder
 {
 public:

@@ -52,6 +52,8 @@
 // Seam vertices carry the tear bit of the rotation node's depth; the unfolder stitches the
 // copies' seams like segmentation seams (Unfolder::Turn).
 #include "FoldingTreeBuilderInternal.h"
+
+#include "CandidatePlanes.h"
 #include "FoldingTreeRotationSector.h"
 
 #include <algorithm>
@@ -398,6 +400,21 @@ bool Builder::PlanRotation(int index,
         ? FormatTrace("a sector of order %d", plan.order).c_str()
         : FormatTrace("a sector of order %d of %d faces", plan.order, plan.regionFaces).c_str()));
   return planned;
+}
+
+FoldingTreeOptions RotationNodesDecided(const TriangleMesh& input,
+  const FoldingTreeOptions& options)
+{
+  FoldingTreeOptions decided = options;
+  decided.rotationNodesWhenAxial = false;
+  decided.rotationNodes =
+    options.rotationNodes || AxiallySymmetricSecondMoments(input, AxialMomentsGap);
+  if (options.trace)
+    options.trace(FormatTrace("[rotation] rotation nodes %s: the surface's second moments are "
+                              "%saxially symmetric",
+      decided.rotationNodes ? "on" : "off",
+      decided.rotationNodes ? "" : "not "));
+  return decided;
 }
 
 void Builder::Rotate(int index,

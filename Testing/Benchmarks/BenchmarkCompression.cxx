@@ -5,15 +5,16 @@
 //                        [--min-faces N] DIR_OR_MESH...
 // The fold as `foldingmeshes compress` folds: its own defaults for --keep and --min-faces
 // (CompressionSearch.h; --fold-defaults: the fold command's instead; --min-faces N: that
-// MinimumFaces instead of compress's, as `compress --min-faces N`). --rotation: the
-// builder's RotationNodes on, issue 22. --search: as `foldingmeshes compress --search`, the
-// fold settings of CompressionSearch.h are tried too and the smallest file is kept; the last
-// column names the settings that made it, t_c counts every fold.
-// Columns: faces; binary PLY; zlib'd VTP (inline binary); Draco at draco_encoder's defaults
-// (11 position bits, -cl 7); Draco at the tree's bits; the .fmz; the ratio .fmz / Draco at the
-// same bits; the .fmz's quantisation bits; proved Hausdorff of the decompressed mesh to the
-// input over the diagonal (root epsilon: 0.02); compress (fold + encode) and decompress
-// (decode + unfold) seconds.
+// MinimumFaces instead of compress's, as `compress --min-faces N`; compress's rotation rule,
+// --rotation-when-axial and a tree with rotation nodes also folded without, unless
+// --fold-defaults or --rotation).
+// --rotation: the builder's RotationNodes on, issue 22. --search: as `foldingmeshes compress
+// --search`, the fold settings of CompressionSearch.h are tried too and the smallest file is kept;
+// the last column names the settings that made it, t_c counts every fold. Columns: faces; binary
+// PLY; zlib'd VTP (inline binary); Draco at draco_encoder's defaults (11 position bits, -cl 7);
+// Draco at the tree's bits; the .fmz; the ratio .fmz / Draco at the same bits; the .fmz's
+// quantisation bits; proved Hausdorff of the decompressed mesh to the input over the diagonal (root
+// epsilon: 0.02); compress (fold + encode) and decompress (decode + unfold) seconds.
 #include "CompressionSearch.h"
 #include "MeshIO.h"
 #include "ProcessMemory.h"
@@ -29,6 +30,7 @@
 #include <vtkCellArrayIterator.h>
 #include <vtkDataArray.h>
 #include <vtkFieldData.h>
+#include <vtkMultiBlockDataSet.h>
 #include <vtkNew.h>
 #include <vtkPLYWriter.h>
 #include <vtkPoints.h>
@@ -142,6 +144,14 @@ const std::map<std::string, std::string> Table1 = { { "dino_cgal", "Dino" },
   { "triceratops_cgal", "Triceratops" },
   { "eagle_psb258", "Eagle" },
   { "queen_chess_quaddamage", "Queen" } };
+
+/// Whether the folding tree has a rotation node (its NumberOfRotations).
+bool HasRotationNode(vtkMultiBlockDataSet* tree)
+{
+  auto* info = vtkPolyData::SafeDownCast(tree->GetBlock(1));
+  vtkDataArray* a = info ? info->GetFieldData()->GetArray("NumberOfRotations") : nullptr;
+  return a && a->GetNumberOfTuples() > 0 && a->GetTuple1(0) > 0;
+}
 }
 
 int main(int argc, char* argv[])
@@ -215,39 +225,26 @@ int main(int argc, char* argv[])
     const std::string stem = std::filesystem::path(path).stem().string();
 
     auto start = Clock::now();
-    // compress's own settings (or --fold-defaults), then (--search) the variants whose
-    // settings were not folded yet; the smallest file wins, the earlier on ties.
+    // compress's own settings (or --fold-defaults), a tree that got rotation nodes by
+    // compress's rotation rule also without them, then (--search) the variants whose settings
+    // were not folded yet; the smallest file wins, the earlier on ties.
     std::string bytes, chosen;
     int q = 0;
-    std::set<foldingmeshes::FoldSearchKey> folded;
-    for (int k = -1;
-         k < (search ? static_cast<int>(std::size(foldingmeshes::FoldSearchVariants)) : 0);
-         ++k)
+    std::set<foldingmeshes::FoldSearchKey> folded; // RotationNodes WHEN_AXIAL as decided
+    bool axial = false;                            // ... by the first fold
+    // Folds and encodes with `builder` (unless its settings were folded); false: skipped.
+    auto fold = [&](vtkFoldingTreeBuilder* builder, const std::string& label)
     {
-      vtkNew<vtkFoldingTreeBuilder> builder;
-      builder->SetInputData(mesh);
-      builder->SetRotationNodes(rotation);
-      std::string label; // the settings added to the fold command's defaults
-      if (k >= 0)
-      {
-        foldingmeshes::ApplyFoldSearchVariant(builder, foldingmeshes::FoldSearchVariants[k]);
-        label = foldingmeshes::FoldSearchVariants[k].options;
-      }
-      else if (minimumFaces > 0)
-      {
-        builder->SetUseMinimumFaces(true);
-        builder->SetMinimumFaces(minimumFaces);
-        label = "--min-faces " + std::to_string(minimumFaces);
-      }
-      else if (!foldDefaults)
-        label = foldingmeshes::ApplyCompressFoldDefaults(builder, false, false);
-      if (!folded.insert(foldingmeshes::FoldSettingsKey(builder)).second)
-        continue;
+      if (folded.count(foldingmeshes::DecidedKey(foldingmeshes::FoldSettingsKey(builder), axial)))
+        return false;
       vtkNew<vtkFoldingTreeCompactWriter> writer;
       writer->SetInputConnection(builder->GetOutputPort(0));
       writer->WriteToOutputStringOn();
       writer->SetQuantizationBits(bits);
       writer->Write();
+      if (folded.empty())
+        axial = foldingmeshes::TriedRotationNodes(builder);
+      folded.insert(foldingmeshes::DecidedKey(foldingmeshes::FoldSettingsKey(builder), axial));
       const std::string candidate = writer->GetOutputString();
       if (!candidate.empty() && (bytes.empty() || candidate.size() < bytes.size()))
       {
@@ -255,6 +252,42 @@ int main(int argc, char* argv[])
         q = writer->GetQuantizationBitsUsed();
         chosen = label;
       }
+      return true;
+    };
+    // The user's settings: the fold command's defaults and --rotation / --min-faces, then
+    // compress's own (`rotationRule`: its --rotation-when-axial) unless --fold-defaults.
+    auto ownSettings = [&](vtkFoldingTreeBuilder* builder, bool rotationRule)
+    {
+      builder->SetInputData(mesh);
+      builder->SetRotationNodes(rotation);
+      std::string label;
+      if (minimumFaces > 0)
+      {
+        builder->SetUseMinimumFaces(true);
+        builder->SetMinimumFaces(minimumFaces);
+        label = "--min-faces " + std::to_string(minimumFaces);
+      }
+      const std::string added = foldDefaults
+        ? std::string()
+        : foldingmeshes::ApplyCompressFoldDefaults(
+            builder, false, minimumFaces > 0, rotation || !rotationRule);
+      return label + (label.empty() || added.empty() ? "" : " ") + added;
+    };
+    vtkNew<vtkFoldingTreeBuilder> first;
+    fold(first, ownSettings(first, true));
+    auto* tree = vtkMultiBlockDataSet::SafeDownCast(first->GetOutputDataObject(0));
+    if (!rotation && tree && HasRotationNode(tree))
+    {
+      vtkNew<vtkFoldingTreeBuilder> without;
+      fold(without, ownSettings(without, false));
+    }
+    for (size_t k = 0; search && k < std::size(foldingmeshes::FoldSearchVariants); ++k)
+    {
+      vtkNew<vtkFoldingTreeBuilder> builder;
+      builder->SetInputData(mesh);
+      builder->SetRotationNodes(rotation);
+      foldingmeshes::ApplyFoldSearchVariant(builder, foldingmeshes::FoldSearchVariants[k]);
+      fold(builder, foldingmeshes::FoldSearchVariants[k].options);
     }
     const double compressSeconds = Since(start);
     if (bytes.empty())

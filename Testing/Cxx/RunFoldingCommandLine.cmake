@@ -17,11 +17,13 @@
 # 4f. compress writes STEM.fmz (JSON output and bytes, smaller than the .vtm tree), decompress
 #     --original gives the mesh back within the root epsilon (proved), unfold reads a .fmz,
 #     decompress refuses a .vtm and a 3-byte file (exit 2);
-# 4f'. compress folds with its own --min-faces 400 unless given (JSON foldOptions names what
-#     it added: none with --min-faces given), and that file is smaller than the one folded
-#     with the fold command's defaults (the dino: 3,574 against 4,015 bytes); compress
-#     --search tries six fold settings and keeps the smallest file (no larger than
-#     compress's own), which decompresses within the root epsilon;
+# 4f'. compress folds with its own --min-faces 400 and --rotation-when-axial unless given
+#     (JSON foldOptions names what it added), and that file is smaller than the one folded
+#     with the fold command's --min-faces (the dino: 3,574 against 4,015 bytes); on AXIAL_MESH
+#     (the queen) the rotation rule folds twice, keeps the rotation tree's smaller file (than
+#     --no-rotation's) and it decompresses within the root epsilon; compress --search tries
+#     six more fold settings and keeps the smallest file (no larger than compress's own),
+#     which decompresses within the root epsilon;
 # 4g. roundtrip measures its distances through vtkStaticCellLocator by default (JSON
 #     distanceLocator "static"); --distance-locator facetree gives the same Hausdorff values;
 #     another value, and the option on fold, exit 1 and name it;
@@ -268,10 +270,11 @@ if (CMAKE_VERSION VERSION_GREATER_EQUAL 3.19)
   endif ()
 endif ()
 
-# 4f'. compress's own fold default: --min-faces 400 unless the user gives --min-faces.
+# 4f'. compress's own fold defaults: --min-faces 400 unless the user gives --min-faces, and
+# --rotation-when-axial unless the user gives a rotation option.
 string(JSON ownOptions ERROR_VARIABLE jsonError GET "${cout}" foldOptions)
-if (jsonError OR NOT ownOptions STREQUAL "--min-faces 400")
-  message(FATAL_ERROR "compress JSON foldOptions '${ownOptions}' ${jsonError} (expected '--min-faces 400')")
+if (jsonError OR NOT ownOptions STREQUAL "--min-faces 400 --rotation-when-axial")
+  message(FATAL_ERROR "compress JSON foldOptions '${ownOptions}' ${jsonError} (expected '--min-faces 400 --rotation-when-axial')")
 endif ()
 foreach (given IN ITEMS "--keep;more" "--min-faces;50")
   execute_process(COMMAND "${FOLDINGMESHES}" compress "${MESH}" ${given} --outdir "${WORK_DIR}/given"
@@ -279,9 +282,9 @@ foreach (given IN ITEMS "--keep;more" "--min-faces;50")
   string(JSON givenOptions ERROR_VARIABLE jsonError GET "${gout}" foldOptions)
   string(JSON givenBytes ERROR_VARIABLE jsonError2 GET "${gout}" bytes)
   if (given STREQUAL "--keep;more")
-    set(expected "--min-faces 400")
+    set(expected "--min-faces 400 --rotation-when-axial")
   else ()
-    set(expected "")
+    set(expected "--rotation-when-axial")
     set(foldDefaultBytes "${givenBytes}")
   endif ()
   if (NOT rc EQUAL 0 OR jsonError OR jsonError2 OR NOT givenOptions STREQUAL expected)
@@ -291,6 +294,38 @@ endforeach ()
 message("compress: ${fmzBytes} bytes with its own fold default, ${foldDefaultBytes} with the fold command's")
 if (NOT fmzBytes LESS foldDefaultBytes)
   message(FATAL_ERROR "compress's own fold default made ${fmzBytes} bytes, the fold command's ${foldDefaultBytes}")
+endif ()
+
+# compress's rotation rule on the queen (its second moments axially symmetric): rotation nodes,
+# compared with the fold without them (two folds), the smaller file kept - the rotation tree's,
+# smaller than --no-rotation's - and it decompresses within the root epsilon (proved).
+if (DEFINED AXIAL_MESH AND EXISTS "${AXIAL_MESH}")
+  get_filename_component(axialStem "${AXIAL_MESH}" NAME_WE)
+  foreach (rotation IN ITEMS "" "--no-rotation")
+    execute_process(COMMAND "${FOLDINGMESHES}" compress "${AXIAL_MESH}" ${rotation}
+      --outdir "${WORK_DIR}/axial${rotation}" --json --quiet
+      RESULT_VARIABLE rc OUTPUT_VARIABLE aout ERROR_VARIABLE err)
+    string(JSON axialBytes${rotation} ERROR_VARIABLE jsonError GET "${aout}" bytes)
+    string(JSON axialTried${rotation} ERROR_VARIABLE jsonError2 GET "${aout}" foldSettingsTried)
+    string(JSON axialOptions${rotation} ERROR_VARIABLE jsonError3 GET "${aout}" foldOptions)
+    if (NOT rc EQUAL 0 OR jsonError OR jsonError2 OR jsonError3)
+      message(FATAL_ERROR "compress ${AXIAL_MESH} ${rotation}: exit ${rc} ${aout} ${err}")
+    endif ()
+  endforeach ()
+  message("compress ${axialStem}: ${axialBytes} bytes ('${axialOptions}', ${axialTried} folds), "
+    "${axialBytes--no-rotation} with --no-rotation ('${axialOptions--no-rotation}')")
+  if (NOT axialTried EQUAL 2 OR NOT axialOptions STREQUAL "--min-faces 400 --rotation-when-axial"
+      OR NOT axialBytes LESS axialBytes--no-rotation OR NOT axialTried--no-rotation EQUAL 1
+      OR NOT axialOptions--no-rotation STREQUAL "--min-faces 400")
+    message(FATAL_ERROR "compress's rotation rule on ${axialStem}: see the numbers above")
+  endif ()
+  execute_process(COMMAND "${FOLDINGMESHES}" decompress "${WORK_DIR}/axial/${axialStem}.fmz"
+    --original "${AXIAL_MESH}" --outdir "${WORK_DIR}/axial" --json --quiet
+    RESULT_VARIABLE rc OUTPUT_VARIABLE dout3 ERROR_VARIABLE err)
+  string(JSON axialBound ERROR_VARIABLE jsonError GET "${dout3}" hausdorffToOriginalBoundRelative)
+  if (NOT rc EQUAL 0 OR jsonError OR axialBound LESS 0 OR axialBound GREATER epsilonFraction)
+    message(FATAL_ERROR "decompress of ${axialStem}.fmz: exit ${rc}, bound ${axialBound} ${err}")
+  endif ()
 endif ()
 
 # compress --search: seven fold settings tried, a file no larger than compress's own, and

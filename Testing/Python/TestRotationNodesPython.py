@@ -8,7 +8,9 @@ with RotationNodes on:
   FoldingRotationOrder 6, and draws the axis as a line; the tree stores about a sixth;
 - the tree saved as .vtm (inline binary) and as .fmz reads back and unfolds within the root
   epsilon of the vase (vtkFoldingTreeUnfolder's proved HausdorffToOriginalBound), closed;
-- RotationNodes off (the default) gives no rotation node;
+- RotationNodes off (the default) gives no rotation node (RotationNodesTried 0); WHEN_AXIAL
+  gives the tree of on for the vase and, for the vase stretched along x (its second moments no
+  longer axially symmetric), the tree of off, RotationNodesTried 0;
 - a malformed rotation node (order 1; no FoldingAxisDirection) is rejected with an error that
   names it.
 
@@ -22,6 +24,7 @@ import sys
 
 from vtkmodules.util.misc import calldata_type
 from vtkmodules.vtkCommonCore import VTK_STRING
+from vtkmodules.vtkCommonDataModel import vtkPolyData
 from vtkmodules.vtkFiltersCore import vtkFeatureEdges
 from vtkmodules.vtkIOXML import vtkXMLMultiBlockDataWriter
 
@@ -114,10 +117,49 @@ def main(temp_dir):
     off = axis_block(builder.GetOutputDataObject(0))
     check(off is None or field(off, "FoldingNodeKind") != 3, "RotationNodes off: no rotation root")
 
+    check(field(builder.GetOutputDataObject(0).GetBlock(1), "RotationNodesTried") == 0,
+          "RotationNodes off: RotationNodesTried 0")
+    off_stored = builder.GetStoredFaces()
+
+    # WHEN_AXIAL: on for the vase (6-fold: its second moments are axially symmetric) ...
+    builder.SetRotationNodes(vtkFoldingTreeBuilder.ROTATION_NODES_WHEN_AXIAL)
+    builder.Update()
+    when_axial = builder.GetOutputDataObject(0)
+    when_stored = builder.GetStoredFaces()
+    block = axis_block(when_axial)
+    check(block is not None and field(block, "FoldingRotationOrder") == ORDER and
+          field(when_axial.GetBlock(1), "RotationNodesTried") == 1,
+          "RotationNodes WHEN_AXIAL on the vase: a rotation root of order %s, tried" %
+          field(block, "FoldingRotationOrder"))
+    # ... off for the vase stretched along x (no longer rotationally symmetric): as off.
+    stretched = vtkPolyData()
+    stretched.DeepCopy(vase)
+    points = stretched.GetPoints()
+    for i in range(points.GetNumberOfPoints()):
+        x, y, z = points.GetPoint(i)
+        points.SetPoint(i, 1.3 * x, y, z)
+    stretched_builder = vtkFoldingTreeBuilder()
+    stretched_builder.SetInputData(stretched)
+    stretched_builder.SetRotationNodes(vtkFoldingTreeBuilder.ROTATION_NODES_WHEN_AXIAL)
+    stretched_builder.Update()
+    stretched_info = stretched_builder.GetOutputDataObject(0).GetBlock(1)
+    stretched_tried = field(stretched_info, "RotationNodesTried")
+    stretched_rotations = field(stretched_info, "NumberOfRotations")
+    stretched_faces = stretched_builder.GetStoredFaces()
+    stretched_builder.SetRotationNodes(0)  # the builder refills its output: read above
+    stretched_builder.Update()
+    check(stretched_tried == 0 and stretched_rotations == 0 and
+          stretched_faces == stretched_builder.GetStoredFaces(),
+          "RotationNodes WHEN_AXIAL on the stretched vase: not tried, the tree of off (%d faces)" %
+          stretched_faces)
+
     builder.RotationNodesOn()
     builder.Update()
     tree = builder.GetOutputDataObject(0)
     info = tree.GetBlock(1)
+    check(builder.GetStoredFaces() == when_stored and when_stored < off_stored,
+          "RotationNodes on stores what WHEN_AXIAL stored (%d faces; off: %d)" %
+          (when_stored, off_stored))
     epsilon = field(info, "RootEpsilon")
     block = axis_block(tree)
     check(block is not None and field(block, "FoldingNodeKind") == 3,
