@@ -157,7 +157,7 @@ options keep the fold command's defaults).
                            given; settings already folded are not folded again; with
                            --no-rotation, none with rotation nodes) and keep the smallest file
                            (JSON "foldOptions", "foldSettingsTried"); up to eight folds: about
-                           seven times the time
+                           eight times the time
 decompress: unfolds a .fmz file like unfold (same options, --original too) and writes
 STEM.vtp and STEM.png in --outdir (JSON: "output"). Not kept in a .fmz: input ids, and user
 arrays without --keep-arrays (keep the .vtm for those). unfold reads .fmz files too.

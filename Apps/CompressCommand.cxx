@@ -1,7 +1,7 @@
 // foldingmeshes compress: a mesh folded and written as a compact folding tree (.fmz), with
-// compress's own defaults for --keep and --min-faces (CompressionSearch.h). Its counterpart,
-// decompress, is the unfold command on a .fmz file (FoldCommands.cxx). With --search, a few
-// other fold settings are tried as well and the smallest file is kept.
+// compress's own defaults for --keep, --min-faces and the rotation rule (CompressionSearch.h). Its
+// counterpart, decompress, is the unfold command on a .fmz file (FoldCommands.cxx). With --search,
+// a few other fold settings are tried as well and the smallest file is kept.
 #include "CompressionSearch.h"
 #include "FoldCommandSupport.h"
 #include "MeshIO.h"
@@ -131,7 +131,12 @@ int Compress(int argc, char* argv[])
   const std::string candidatePath = output + ".candidate";
   // Settings folded, RotationNodes WHEN_AXIAL as the first fold decided it for this mesh.
   const bool axial = TriedRotationNodes(best.builder);
+  auto* first = vtkMultiBlockDataSet::SafeDownCast(best.builder->GetOutputDataObject(0));
+  const bool rotationTree = TreeValue(first, "NumberOfRotations") > 0;
   std::set<FoldSearchKey> folded{ DecidedKey(FoldSettingsKey(best.builder), axial) };
+  // A tree that looked for rotation nodes and kept none is the fold without them too.
+  if (!rotationTree)
+    folded.insert(DecidedKey(FoldSettingsKey(best.builder), false));
   // Another fold, written beside the output: a smaller file replaces it (ties keep the
   // output). A fold that fails is skipped (the output holds the smallest file so far); false
   // only when the output cannot be replaced.
@@ -165,9 +170,8 @@ int Compress(int argc, char* argv[])
   // compress's rotation rule (CompressFoldDefaults): a tree that got rotation nodes is
   // compared with the same fold without them (a rotation tree can cost more bytes than the
   // faces it saves: mech).
-  auto* first = vtkMultiBlockDataSet::SafeDownCast(best.builder->GetOutputDataObject(0));
   std::string withoutRotation;
-  if (!rotationGiven && TreeValue(first, "NumberOfRotations") > 0)
+  if (!rotationGiven && rotationTree)
   {
     CompressedCandidate c;
     c.builder = MakeBuilder(f, nullptr);

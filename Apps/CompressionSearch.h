@@ -49,8 +49,9 @@ static_assert(
   "ApplyCompressFoldDefaults sets --keep, --min-faces and --rotation-when-axial only");
 
 /// compress's defaults on a builder configured with the user's settings, each unless the user
-/// gave it (`keepGiven`: --keep, `minFacesGiven`: --min-faces, `rotationGiven`: --rotation or
-/// --rotation-when-axial). Returns the options it added, as the command line spells them ("" none).
+/// gave it (`keepGiven`: --keep, `minFacesGiven`: --min-faces, `rotationGiven`: --rotation,
+/// --rotation-when-axial or --no-rotation). Returns the options it added, as the command line
+/// spells them ("" none).
 inline std::string ApplyCompressFoldDefaults(vtkFoldingTreeBuilder* builder,
   bool keepGiven,
   bool minFacesGiven,

@@ -276,7 +276,10 @@ int main(int argc, char* argv[])
     vtkNew<vtkFoldingTreeBuilder> first;
     fold(first, ownSettings(first, true));
     auto* tree = vtkMultiBlockDataSet::SafeDownCast(first->GetOutputDataObject(0));
-    if (!rotation && tree && HasRotationNode(tree))
+    const bool rotationTree = tree && HasRotationNode(tree);
+    if (!rotationTree) // looked for rotation nodes and kept none: the fold without them too
+      folded.insert(foldingmeshes::DecidedKey(foldingmeshes::FoldSettingsKey(first), false));
+    if (!rotation && rotationTree)
     {
       vtkNew<vtkFoldingTreeBuilder> without;
       fold(without, ownSettings(without, false));
@@ -286,6 +289,11 @@ int main(int argc, char* argv[])
       vtkNew<vtkFoldingTreeBuilder> builder;
       builder->SetInputData(mesh);
       builder->SetRotationNodes(rotation);
+      if (minimumFaces > 0) // as compress: the variants on top of the options given
+      {
+        builder->SetUseMinimumFaces(true);
+        builder->SetMinimumFaces(minimumFaces);
+      }
       foldingmeshes::ApplyFoldSearchVariant(builder, foldingmeshes::FoldSearchVariants[k]);
       fold(builder, foldingmeshes::FoldSearchVariants[k].options);
     }

@@ -131,7 +131,8 @@ def main(temp_dir):
           field(when_axial.GetBlock(1), "RotationNodesTried") == 1,
           "RotationNodes WHEN_AXIAL on the vase: a rotation root of order %s, tried" %
           field(block, "FoldingRotationOrder"))
-    # ... off for the vase stretched along x (no longer rotationally symmetric): as off.
+    # ... off for the vase stretched along x (its second moments no longer axial; only 2-fold
+    # left, which RotationNodes on would use): as off.
     stretched = vtkPolyData()
     stretched.DeepCopy(vase)
     points = stretched.GetPoints()
