@@ -131,8 +131,7 @@ int Compress(int argc, char* argv[])
   const std::string candidatePath = output + ".candidate";
   // Settings folded, RotationNodes WHEN_AXIAL as the first fold decided it for this mesh.
   const bool axial = TriedRotationNodes(best.builder);
-  auto* first = vtkMultiBlockDataSet::SafeDownCast(best.builder->GetOutputDataObject(0));
-  const bool rotationTree = TreeValue(first, "NumberOfRotations") > 0;
+  const bool rotationTree = KeptRotationNodes(best.builder);
   std::set<FoldSearchKey> folded{ DecidedKey(FoldSettingsKey(best.builder), axial) };
   // A tree that looked for rotation nodes and kept none is the fold without them too.
   if (!rotationTree)

@@ -107,14 +107,25 @@ inline FoldSearchKey FoldSettingsKey(vtkFoldingTreeBuilder* b)
     b->GetRotationNodes() };
 }
 
-/// Whether a builder that has folded looked for rotation nodes (its tree's RotationNodesTried;
-/// false without a tree).
-inline bool TriedRotationNodes(vtkFoldingTreeBuilder* b)
+/// A value of the "Tree" block's field data of a builder that has folded (0 without it).
+inline double FoldedTreeValue(vtkFoldingTreeBuilder* b, const char* name)
 {
   auto* tree = vtkMultiBlockDataSet::SafeDownCast(b->GetOutputDataObject(0));
   auto* info = tree ? vtkPolyData::SafeDownCast(tree->GetBlock(1)) : nullptr;
-  vtkDataArray* tried = info ? info->GetFieldData()->GetArray("RotationNodesTried") : nullptr;
-  return tried && tried->GetNumberOfTuples() > 0 && tried->GetTuple1(0) != 0;
+  vtkDataArray* a = info ? info->GetFieldData()->GetArray(name) : nullptr;
+  return a && a->GetNumberOfTuples() > 0 ? a->GetTuple1(0) : 0.0;
+}
+
+/// Whether a builder that has folded looked for rotation nodes (RotationNodesTried) ...
+inline bool TriedRotationNodes(vtkFoldingTreeBuilder* b)
+{
+  return FoldedTreeValue(b, "RotationNodesTried") != 0.0;
+}
+
+/// ... and whether its tree kept any (NumberOfRotations).
+inline bool KeptRotationNodes(vtkFoldingTreeBuilder* b)
+{
+  return FoldedTreeValue(b, "NumberOfRotations") > 0.0;
 }
 
 /// `key` with RotationNodes WHEN_AXIAL counted as what it decides for the mesh (`axial`: the

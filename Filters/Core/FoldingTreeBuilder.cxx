@@ -452,13 +452,6 @@ using treebuilder::WorkMesh;
 
 namespace
 {
-bool HasRotationNode(const FoldingTree& tree)
-{
-  return std::any_of(tree.nodes.begin(),
-    tree.nodes.end(),
-    [](const FoldingNode& n) { return n.kind == FoldingNodeKind::Rotation; });
-}
-
 /// Why BuildFoldingTree cannot build from these (empty: it can).
 std::string CheckBuildInput(const TriangleMesh& input,
   const std::vector<Vec3>& inputNormals,
@@ -608,7 +601,7 @@ bool BuildFoldingTree(const TriangleMesh& input,
       // closed): without the second orders it kept, if any, then the planes alone, at epsilon,
       // no pins (their seams are the ones the unfolder closes best); should that tree miss
       // too, the rounds below go on from it.
-      if (round == firstRound && again.rotationNodes && HasRotationNode(tree))
+      if (round == firstRound && again.rotationNodes && tree.NumberOfRotations() > 0)
       {
         const bool withoutSecond = keptSecondOrder && secondOrders;
         if (withoutSecond)

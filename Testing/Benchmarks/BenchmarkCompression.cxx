@@ -30,7 +30,6 @@
 #include <vtkCellArrayIterator.h>
 #include <vtkDataArray.h>
 #include <vtkFieldData.h>
-#include <vtkMultiBlockDataSet.h>
 #include <vtkNew.h>
 #include <vtkPLYWriter.h>
 #include <vtkPoints.h>
@@ -144,14 +143,6 @@ const std::map<std::string, std::string> Table1 = { { "dino_cgal", "Dino" },
   { "triceratops_cgal", "Triceratops" },
   { "eagle_psb258", "Eagle" },
   { "queen_chess_quaddamage", "Queen" } };
-
-/// Whether the folding tree has a rotation node (its NumberOfRotations).
-bool HasRotationNode(vtkMultiBlockDataSet* tree)
-{
-  auto* info = vtkPolyData::SafeDownCast(tree->GetBlock(1));
-  vtkDataArray* a = info ? info->GetFieldData()->GetArray("NumberOfRotations") : nullptr;
-  return a && a->GetNumberOfTuples() > 0 && a->GetTuple1(0) > 0;
-}
 }
 
 int main(int argc, char* argv[])
@@ -275,8 +266,7 @@ int main(int argc, char* argv[])
     };
     vtkNew<vtkFoldingTreeBuilder> first;
     fold(first, ownSettings(first, true));
-    auto* tree = vtkMultiBlockDataSet::SafeDownCast(first->GetOutputDataObject(0));
-    const bool rotationTree = tree && HasRotationNode(tree);
+    const bool rotationTree = foldingmeshes::KeptRotationNodes(first);
     if (!rotationTree) // looked for rotation nodes and kept none: the fold without them too
       folded.insert(foldingmeshes::DecidedKey(foldingmeshes::FoldSettingsKey(first), false));
     if (!rotation && rotationTree)
