@@ -30,6 +30,7 @@ struct RoundtripResult
   int removedProjected = 0, thinned = 0, original = 0, stored = 0, height = 0, gaps = 0;
   double compression = 0.0, foldSeconds = 0.0, unfoldSeconds = 0.0, measureSeconds = 0.0;
   double areaRatio = 0.0; ///< unfolded surface area / the input's (the unfolder's AreaRatio)
+  double filledAreaRatio = 0.0; ///< of that, in faces added to close gaps (FilledAreaRatio)
   DistanceLocator locator = DistanceLocator::StaticCellLocator;
   double Scale() const { return this->diagonal > 0 ? 1.0 / this->diagonal : 0.0; }
 };
@@ -62,6 +63,7 @@ RoundtripResult MeasureRoundtrip(vtkPolyData* input,
   r.thinned = static_cast<int>(FieldValue(unfolded, "ThinnedCopyPoints"));
   r.gaps = static_cast<int>(FieldValue(unfolded, "OpenGapCount"));
   r.areaRatio = FieldValue(unfolded, "AreaRatio");
+  r.filledAreaRatio = FieldValue(unfolded, "FilledAreaRatio");
   r.original = static_cast<int>(TreeValue(tree, "OriginalFaces"));
   r.stored = static_cast<int>(TreeValue(tree, "StoredFaces"));
   r.compression = TreeValue(tree, "Compression");
@@ -83,6 +85,7 @@ void PrintRoundtripJson(const RoundtripResult& r)
               "  \"meanDistanceFraction\": %.9g,\n"
               "  \"withinBound\": %s,\n  \"openEdgesBefore\": %lld,\n"
               "  \"openEdgesAfter\": %lld,\n  \"openGapCount\": %d,\n  \"areaRatio\": %.6f,\n"
+              "  \"filledAreaRatio\": %.6f,\n"
               "  \"foldSeconds\": %.3f,\n  \"unfoldSeconds\": %.3f,\n"
               "  \"distanceLocator\": \"%s\",\n  \"measureSeconds\": %.3f,\n"
               "  \"outputs\": {\"tree\": %s, \"unfolded\": %s}\n}\n",
@@ -108,6 +111,7 @@ void PrintRoundtripJson(const RoundtripResult& r)
     static_cast<long long>(r.after.open),
     r.gaps,
     r.areaRatio,
+    r.filledAreaRatio,
     r.foldSeconds,
     r.unfoldSeconds,
     ToString(r.locator),
@@ -149,8 +153,10 @@ void PrintRoundtripText(const RoundtripResult& r, const FoldSettings& f)
     static_cast<long long>(r.before.open),
     static_cast<long long>(r.after.open),
     r.gaps);
-  std::printf(
-    "surface area:            %.4f of the input's (above 1: surface laid twice)\n", r.areaRatio);
+  std::printf("surface area:            %.4f of the input's (above 1: surface laid twice), "
+              "%.4f in faces added to close seam gaps and holes\n",
+    r.areaRatio,
+    r.filledAreaRatio);
   std::printf("time:                    fold %.3f s, unfold %.3f s, distances %.3f s (%s)\n",
     r.foldSeconds,
     r.unfoldSeconds,

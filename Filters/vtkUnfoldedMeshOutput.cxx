@@ -308,14 +308,23 @@ void AddUnfoldingSummary(const UnfoldedMesh& mesh, const FoldingTree& tree, vtkF
   // The surface area against the input's (the tree's OriginalArea): above 1 where the
   // unfolding laid surface twice (overlapping copies, fills over existing faces), below where
   // it left gaps - what the Hausdorff distance cannot see.
-  double area = 0.0;
-  for (const auto& t : mesh.triangles)
-    area += 0.5 *
+  // FilledAreaRatio: the share of it in faces the unfolder added to close seam gaps and holes
+  // (FoldingFilled), over the input's area - on the shared meshes most of the excess.
+  double area = 0.0, filledArea = 0.0;
+  for (size_t f = 0; f < mesh.triangles.size(); ++f)
+  {
+    const auto& t = mesh.triangles[f];
+    const double a = 0.5 *
       (mesh.points[t[1]] - mesh.points[t[0]]).cross(mesh.points[t[2]] - mesh.points[t[0]]).norm();
+    area += a;
+    if (f < mesh.faceFilled.size() && mesh.faceFilled[f])
+      filledArea += a;
+  }
+  const double nan = std::numeric_limits<double>::quiet_NaN();
   AddFieldValue(fd, "UnfoldedArea", area);
-  AddFieldValue(fd,
-    "AreaRatio",
-    tree.originalArea > 0.0 ? area / tree.originalArea : std::numeric_limits<double>::quiet_NaN());
+  AddFieldValue(fd, "AreaRatio", tree.originalArea > 0.0 ? area / tree.originalArea : nan);
+  AddFieldValue(
+    fd, "FilledAreaRatio", tree.originalArea > 0.0 ? filledArea / tree.originalArea : nan);
   AddFieldValue(fd, "NumberOfCopies", static_cast<double>(mesh.copies.size()));
   AddFieldValue(fd, "PlaneMergedVertices", mesh.planeMergedVertices);
   AddFieldValue(fd, "RemovedProjectedPoints", mesh.removedProjectedPoints);

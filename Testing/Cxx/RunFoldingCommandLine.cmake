@@ -1,7 +1,8 @@
 # Drives the foldingmeshes command line (TestFoldingCommandLine):
 #   cmake -DFOLDINGMESHES=<exe> -DMESH=<mesh> -DWORK_DIR=<dir> -P RunFoldingCommandLine.cmake
 # 1. `foldingmeshes roundtrip MESH --outdir WORK_DIR --json --quiet` exits 0 (Hausdorff distance
-#    within the root epsilon), writes the .vtm tree and prints JSON with a hausdorff value;
+#    within the root epsilon), writes the .vtm tree and prints JSON with a hausdorff value and
+#    a filledAreaRatio within [0, areaRatio];
 # 2. `foldingmeshes fold` on a missing file exits 2 (unreadable input);
 # 3. `foldingmeshes fold` without a mesh exits 1 (bad command line);
 # 4. `foldingmeshes unfold` on a file that is not a .vtm tree exits 2 and says so;
@@ -60,6 +61,15 @@ if (CMAKE_VERSION VERSION_GREATER_EQUAL 3.19)
     message(FATAL_ERROR "roundtrip output is not valid JSON: ${jsonError} ${jsonError2}")
   endif ()
   message("hausdorff / diagonal = ${hausdorff} (root epsilon / diagonal = ${epsilon})")
+  # The area of the faces added to close gaps is a share of the unfolded area.
+  string(JSON area ERROR_VARIABLE jsonError GET "${out}" areaRatio)
+  string(JSON filled ERROR_VARIABLE jsonError2 GET "${out}" filledAreaRatio)
+  if (jsonError OR jsonError2)
+    message(FATAL_ERROR "roundtrip JSON has no areaRatio / filledAreaRatio: ${jsonError} ${jsonError2}")
+  endif ()
+  if (filled LESS 0 OR filled GREATER area)
+    message(FATAL_ERROR "roundtrip: filledAreaRatio ${filled} outside [0, areaRatio ${area}]")
+  endif ()
 endif ()
 
 # unfold --original: the filter's distance to the original equals the roundtrip's measure.

@@ -195,6 +195,21 @@ vtkSmartPointer<vtkPolyData> RoundTrip(const std::string& name,
     Field(out, "OpenLoops"),
     openLoopEdges,
     Field(out, "OpenLoopLength") / diagonal);
+  // FilledAreaRatio: the area of the faces added to close gaps (FoldingFilled) over M's, a
+  // share of AreaRatio's (measured here over the unfolded area, whatever M's polygons; to the
+  // rounding of the output's float points, about 1e-7).
+  const double filledShare = FilledArea(out) / TotalArea(out);
+  std::printf("%-24s area %.4f of M's, %.4f of it in filled faces\n",
+    "",
+    Field(out, "AreaRatio"),
+    Field(out, "FilledAreaRatio"));
+  EXPECT(std::abs(Field(out, "FilledAreaRatio") / Field(out, "AreaRatio") - filledShare) <=
+        1e-5 * filledShare + 1e-9 &&
+      Field(out, "FilledAreaRatio") >= 0.0,
+    name << ": FilledAreaRatio " << Field(out, "FilledAreaRatio") << " of AreaRatio "
+         << Field(out, "AreaRatio") << ", measured share " << filledShare);
+  if (exact)
+    EXPECT(Field(out, "FilledAreaRatio") == 0.0, name << ": exact case, faces filled");
   EXPECT(edges.open == Field(out, "OpenEdges") &&
       edges.nonManifold == Field(out, "NonManifoldEdges") &&
       edges.misoriented == Field(out, "MisorientedEdges"),

@@ -2,6 +2,8 @@
 #include "UnfoldingAccuracyMeshes.h"
 
 #include <vtkCellArray.h>
+#include <vtkCellData.h>
+#include <vtkDataArray.h>
 #include <vtkNew.h>
 #include <vtkPoints.h>
 #include <vtkTriangle.h>
@@ -16,20 +18,37 @@ namespace foldingmeshes
 {
 namespace testing
 {
-double TotalArea(vtkPolyData* pd)
+namespace
+{
+/// Summed area of the triangles of pd whose entry of `only` (a cell array; null: every
+/// triangle) is nonzero; polygons in cell order after any vertices and lines.
+double TriangleArea(vtkPolyData* pd, vtkDataArray* only)
 {
   double area = 0.0, p[3][3];
   vtkIdType n = 0;
   const vtkIdType* ids = nullptr;
   vtkCellArray* polys = pd->GetPolys();
-  for (polys->InitTraversal(); polys->GetNextCell(n, ids);)
-    if (n == 3)
+  vtkIdType cell = pd->GetNumberOfVerts() + pd->GetNumberOfLines();
+  for (polys->InitTraversal(); polys->GetNextCell(n, ids); ++cell)
+    if (n == 3 && (!only || only->GetTuple1(cell) != 0.0))
     {
       for (int k = 0; k < 3; ++k)
         pd->GetPoint(ids[k], p[k]);
       area += vtkTriangle::TriangleArea(p[0], p[1], p[2]);
     }
   return area;
+}
+}
+
+double TotalArea(vtkPolyData* pd)
+{
+  return TriangleArea(pd, nullptr);
+}
+
+double FilledArea(vtkPolyData* pd)
+{
+  vtkDataArray* filled = pd->GetCellData()->GetArray("FoldingFilled");
+  return filled ? TriangleArea(pd, filled) : 0.0;
 }
 
 vtkSmartPointer<vtkPolyData> Cube(int n, double h)

@@ -16,6 +16,10 @@ namespace testing
 /// Summed area of the triangles of pd.
 double TotalArea(vtkPolyData* pd);
 
+/// Summed area of the triangles of an unfolded mesh that the unfolder added to close seam gaps
+/// and holes (cell array FoldingFilled nonzero; 0 without the array).
+double FilledArea(vtkPolyData* pd);
+
 /// The surface of [-h, h]^3, n x n squares of 4 triangles (around a centre point) per face,
 /// outward: symmetric about x, y, z = 0 and the diagonal planes, as a triangle set.
 vtkSmartPointer<vtkPolyData> Cube(int n, double h);
