@@ -33,9 +33,11 @@
  *   copies of that leaf ordered by mirror mask: 0 = the stored leaf itself),
  *   "FoldingMirrorMask" (vtkTypeUInt64Array, bit d set when the copy was reflected by the
  *   folding node at depth d), "FoldingMirrored" (1 for an odd number of reflections),
- *   "FoldingFilled" (1: a triangle added to fill a seam gap; its ids and copy are those of a
- *   neighbouring face).
- * - field data: "UnfoldedFaces", "UnfoldedPoints", "NumberOfCopies", "PlaneMergedVertices",
+ *   "FoldingFilled" (1: a triangle added to fill a seam gap or a hole; its ids and copy are
+ *   those of a neighbouring face).
+ * - field data: "UnfoldedFaces", "UnfoldedPoints", "UnfoldedArea", "AreaRatio" (over the
+ *   input's area: above 1 where surface lies twice), "FilledAreaRatio" (the area of the
+ *   FoldingFilled faces over the input's), "NumberOfCopies", "PlaneMergedVertices",
  *   "RemovedProjectedPoints" and "ProjectedPoints" (RemoveProjectedPoints: removed, left),
  *   "ThinnedCopyPoints" and "FoldExcessFaces" (MatchDiscardedDensity: vertices removed from
  *   mirrored copies, and the faces the folding nodes' results still have above the face
