@@ -29,7 +29,7 @@ struct RoundtripResult
   long long unfoldedFaces = 0;
   int removedProjected = 0, thinned = 0, original = 0, stored = 0, height = 0, gaps = 0;
   double compression = 0.0, foldSeconds = 0.0, unfoldSeconds = 0.0, measureSeconds = 0.0;
-  double areaRatio = 0.0; ///< unfolded surface area / the input's (the unfolder's AreaRatio)
+  double areaRatio = 0.0;       ///< unfolded surface area / the input's (the unfolder's AreaRatio)
   double filledAreaRatio = 0.0; ///< of that, in faces added to close gaps (FilledAreaRatio)
   DistanceLocator locator = DistanceLocator::StaticCellLocator;
   double Scale() const { return this->diagonal > 0 ? 1.0 / this->diagonal : 0.0; }

@@ -35,7 +35,8 @@
 //   with its area (within 3%; 1.10 before the sectors' seams were stitched within a tenth of
 //   the stitch tolerance), closed, within the bound;
 // - a fold's mirror image never lies on faces outside its region (a moved octagonal prism,
-//   face stop off: the cap came back twice) - area kept, AreaRatio reported;
+//   face stop off: the cap came back twice) - area kept, AreaRatio reported; FilledAreaRatio is
+//   the FoldingFilled faces' share, and a holed sphere's fill its ring's (UnfoldingFilledArea.h);
 // - folds down to single faces (UseMinimumFaces off, and no stop criterion at all): a
 //   square, a single triangle and a flat hexagonal fan keep their area, stay within the root
 //   epsilon, and the build ends (a fold removing no face is not made).
@@ -45,6 +46,7 @@
 #include "ProceduralMeshes.h"
 #include "TestExpect.h"
 #include "UnfoldingAccuracyMeshes.h"
+#include "UnfoldingFilledArea.h"
 #include "vtkFoldingTreeBuilder.h"
 #include "vtkFoldingTreeUnfolder.h"
 
@@ -185,7 +187,7 @@ vtkSmartPointer<vtkPolyData> RoundTrip(const std::string& name,
   // border, or a gap that could not be closed: count and length).
   const double borderEdges = Field(out, "BorderEdges"), openLoopEdges = Field(out, "OpenLoopEdges");
   std::printf("%-24s repair: dropped %g flipped %g filled %g loops; border %g loops %g edges; "
-              "open %g loops %g edges (length/diag %.4f)\n",
+              "open %g loops %g edges (length/diag %.4f); area %.4f of M's, %.4f filled\n",
     "",
     Field(out, "RepairDroppedFaces"),
     Field(out, "RepairFlippedFaces"),
@@ -194,15 +196,11 @@ vtkSmartPointer<vtkPolyData> RoundTrip(const std::string& name,
     borderEdges,
     Field(out, "OpenLoops"),
     openLoopEdges,
-    Field(out, "OpenLoopLength") / diagonal);
-  // FilledAreaRatio: the area of the faces added to close gaps (FoldingFilled) over M's, a
-  // share of AreaRatio's (measured here over the unfolded area, whatever M's polygons; to the
-  // rounding of the output's float points, about 1e-7).
-  const double filledShare = FilledArea(out) / TotalArea(out);
-  std::printf("%-24s area %.4f of M's, %.4f of it in filled faces\n",
-    "",
+    Field(out, "OpenLoopLength") / diagonal,
     Field(out, "AreaRatio"),
     Field(out, "FilledAreaRatio"));
+  // FilledAreaRatio as a share of AreaRatio's, to the float points' rounding (about 1e-7).
+  const double filledShare = FilledArea(out) / TotalArea(out);
   EXPECT(std::abs(Field(out, "FilledAreaRatio") / Field(out, "AreaRatio") - filledShare) <=
         1e-5 * filledShare + 1e-9 &&
       Field(out, "FilledAreaRatio") >= 0.0,
@@ -644,6 +642,7 @@ int main(int argc, char* argv[])
 {
   namespace pm = foldingmeshes::testing;
   KnownDistances();
+  Failures += CheckFilledArea();
   NonManifoldInputs();
   FoldsDownToSingleFaces();
   SmallFoldsOfAClosedBox();
