@@ -1,6 +1,7 @@
 // FilledAreaRatio against a hole of known area (see UnfoldingFilledArea.h).
 #include "UnfoldingFilledArea.h"
 
+#include "Core/CoreTestUtilities.h"
 #include "FoldingTree.h"
 #include "TestExpect.h"
 #include "vtkFoldingTreeIO.h"
@@ -52,8 +53,8 @@ int CheckFilledArea()
   for (int v = 1; v < static_cast<int>(full.points.size()); ++v)
     if (full.points[v].z() > full.points[pole].z())
       pole = v;
-  FoldingLeafMesh leafMesh;
-  leafMesh.points = full.points;
+  TriangleMesh holed;
+  holed.points = full.points;
   double fullArea = 0.0, ringArea = 0.0;
   for (const Triangle& t : full.triangles)
   {
@@ -61,7 +62,7 @@ int CheckFilledArea()
     const double area = 0.5 * (b - a).cross(c - a).norm();
     fullArea += area;
     if (std::find(t.begin(), t.end(), pole) == t.end())
-      leafMesh.triangles.push_back(t);
+      holed.triangles.push_back(t);
     else
     {
       // The removed face's edge opposite the pole, projected on the ring's plane, is a side
@@ -75,27 +76,8 @@ int CheckFilledArea()
       ringArea += 0.5 * std::abs(p.x() * q.y() - p.y() * q.x());
     }
   }
-  const int np = static_cast<int>(full.points.size());
-  for (int v = 0; v < np; ++v)
-    leafMesh.originalPointIds.push_back(v);
-  for (int f = 0; f < static_cast<int>(leafMesh.triangles.size()); ++f)
-    leafMesh.originalFaceIds.push_back(f);
-  leafMesh.tearMask.assign(np, 0);
-  leafMesh.planeMask.assign(np, 0);
-  leafMesh.projected.assign(np, 0);
-  leafMesh.inputBoundary.assign(np, 0); // not the input's border: a hole to fill
-  FoldingTree tree;
-  FoldingNode leaf;
-  leaf.kind = FoldingNodeKind::Leaf;
-  leaf.leafReason = LeafReason::MinimumFaces;
-  leaf.epsilon = 0.2;
-  leaf.numberOfFaces = static_cast<int>(leafMesh.triangles.size());
-  leaf.mesh = leafMesh;
-  tree.nodes.push_back(leaf);
-  tree.numberOfOriginalFaces = leaf.numberOfFaces;
-  tree.numberOfOriginalPoints = np;
-  tree.diagonal = 2.0 * std::sqrt(3.0);
-  tree.rootEpsilon = 0.2;
+  // One leaf, no flags: the ring is not on the input's border (a hole to fill).
+  FoldingTree tree = coretest::LeafTree(holed, 0.2, 2.0 * std::sqrt(3.0));
   tree.originalArea = fullArea;
   vtkNew<vtkMultiBlockDataSet> blocks;
   std::string error;
