@@ -77,7 +77,7 @@ int CheckFilledArea()
     }
   }
   // One leaf, no flags: the ring is not on the input's border (a hole to fill).
-  FoldingTree tree = coretest::LeafTree(holed, 0.2, 2.0 * std::sqrt(3.0));
+  FoldingTree tree = coretest::LeafTree(holed, 0.2, coretest::Diagonal(full));
   tree.originalArea = fullArea;
   vtkNew<vtkMultiBlockDataSet> blocks;
   std::string error;
