@@ -7,7 +7,6 @@
 #include "vtkFoldingTreeIO.h"
 #include "vtkFoldingTreeUnfolder.h"
 
-#include <vtkCellArray.h>
 #include <vtkDataArray.h>
 #include <vtkFieldData.h>
 #include <vtkMultiBlockDataSet.h>
@@ -33,21 +32,7 @@ int CheckFilledArea()
   source->SetPhiResolution(12);
   source->SetOutputPointsPrecision(vtkAlgorithm::DOUBLE_PRECISION);
   source->Update();
-  vtkPolyData* sphere = source->GetOutput();
-  TriangleMesh full;
-  for (vtkIdType v = 0; v < sphere->GetNumberOfPoints(); ++v)
-  {
-    double x[3];
-    sphere->GetPoint(v, x);
-    full.points.emplace_back(x[0], x[1], x[2]);
-  }
-  const vtkIdType* ids = nullptr;
-  vtkIdType n = 0;
-  vtkCellArray* polys = sphere->GetPolys();
-  for (polys->InitTraversal(); polys->GetNextCell(n, ids);)
-    if (n == 3)
-      full.triangles.push_back(
-        { static_cast<int>(ids[0]), static_cast<int>(ids[1]), static_cast<int>(ids[2]) });
+  const TriangleMesh full = coretest::ToTriangleMesh(source->GetOutput());
   // The north pole (largest z) and the ring of its neighbours, all at one height.
   int pole = 0;
   for (int v = 1; v < static_cast<int>(full.points.size()); ++v)
