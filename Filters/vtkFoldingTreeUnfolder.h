@@ -192,7 +192,9 @@ public:
    * bounded by the point's error budget; the kept half, seams and fold lines stay as they
    * are (UnfoldOptions::matchDiscardedDensity). A folding root's copy is thinned once more
    * after the final repair (CloseHoles), where seam gaps it closed had kept points of the copy
-   * on open edges, never below the input's point count. Reported in the field data
+   * on open edges, never below the input's point count. A rotation node's k - 1 turned copies
+   * are thinned the same way towards its region's face count (a sector cut along its
+   * half-planes holds more faces than its share). Reported in the field data
    * ("ThinnedCopyPoints", and "FoldExcessFaces": faces the folds' results still have above
    * their regions' counts).
    */

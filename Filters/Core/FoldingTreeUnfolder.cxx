@@ -255,6 +255,7 @@ void Unfolder::Turn(int index, Piece& piece)
     }
   }
   const Piece sector = piece;
+  const size_t firstTurnedCopy = this->Result.copies.size();
   std::vector<int> sectorOf(piece.points.size(), 0);
   for (int j = 1; j < k; ++j)
   {
@@ -297,6 +298,16 @@ void Unfolder::Turn(int index, Piece& piece)
   this->Result.seams.push_back(seam);
   if (this->Options.stitch && this->Options.removeProjectedPoints)
     this->Result.removedProjectedPoints += this->RemoveProjectedPoints(&node, piece, nullptr);
+  // A cut sector holds more faces than its share of the region (the pieces of the faces its
+  // half-planes cut): the turned copies are thinned towards the region's face count, as a
+  // fold's mirrored copy is (within the same error budgets; the sector itself keeps its faces).
+  if (this->Options.matchDiscardedDensity)
+  {
+    std::vector<char> turned(this->Result.copies.size(), 0);
+    std::fill(turned.begin() + static_cast<std::ptrdiff_t>(firstTurnedCopy), turned.end(), 1);
+    this->Result.thinnedCopyPoints +=
+      this->MatchDiscardedDensity(node, piece, nullptr, -1, &turned);
+  }
 }
 
 void Unfolder::CountTears(const FoldingNode& node, Piece& piece, SeamReport& seam)
@@ -404,8 +415,9 @@ void StoreResult(Piece& piece, UnfoldedMesh& result)
  *    (Stitch -> StitchVertices: proposals, clusters, placement within the error budgets,
  *    merge, zipper, gap filling, constrained Laplacian smoothing), then removes the projected
  *    points whose rings the seams closed. A rotation node (issue 22) turns its child's result
- *    k - 1 times by 360/k degrees about its axis (Turn; orientation kept) and stitches the seams
- *    between neighbouring sectors the same way (the sectors play the children).
+ *    k - 1 times by 360/k degrees about its axis (Turn; orientation kept), stitches the seams
+ *    between neighbouring sectors the same way (the sectors play the children) and thins the
+ *    turned copies towards the region's face count, as a fold's mirrored copy.
  * 2. The weld (WeldBoundaries): open edges between copies of different subtrees meet only at
  *    the root, so the last stitch runs over the whole mesh, within the budgets left.
  * 3. The repair (Repair: degenerate and non-manifold faces dropped, orientation made

@@ -104,7 +104,9 @@ struct UnfoldOptions
    * where points of the copy on seam gaps that only the repair closed were on open edges at
    * the fold (a blob whose halves are tessellated 1.3 times apart: +9.6% points -> +0.7%);
    * that pass stops before the points used by faces drop below the input's point count, and
-   * where a budget is unknown it only re-triangulates planar stars. See
+   * where a budget is unknown it only re-triangulates planar stars. A rotation node's k - 1
+   * turned copies are thinned the same way, after its seams are stitched, towards its region's
+   * face count (a sector cut along its half-planes holds more faces than its share). See
    * UnfoldedMesh::thinnedCopyPoints and foldExcessFaces.
    */
   bool matchDiscardedDensity = true;
@@ -237,8 +239,9 @@ struct UnfoldedMesh
   std::vector<int> faceLeaf; ///< node index of the leaf the face comes from
   std::vector<int> faceCopy; ///< index into copies
   std::vector<char> faceMirrored;
-  /// 1: a triangle added to fill a seam gap (not a copy of a leaf triangle; its ids and copy
-  /// are those of a neighbouring face, for attributes).
+  /// 1: a triangle added to fill a seam gap or a hole (not a copy of a leaf triangle; its ids
+  /// and copy are those of a neighbouring face, for attributes); a triangle re-triangulated
+  /// after a point removal only where every face of the removed star was.
   std::vector<char> faceFilled;
 
   std::vector<UnfoldCopy> copies;
@@ -305,6 +308,10 @@ struct UnfoldedMesh
  *   (fillSeamGaps); the seam is smoothed. Tear vertices
  *   left unmatched and the boundary edges between tear vertices are reported per node
  *   (SeamReport) and in total - never hidden.
+ * - rotation node: the child's result turned k - 1 times by 360/k degrees about the axis
+ *   (orientation kept), the seams between neighbouring sectors stitched like a segmentation's
+ *   (the sectors play the children), the turned copies thinned towards the node's region face
+ *   count (matchDiscardedDensity; the sector itself is kept as it is).
  * - finally (weldBoundaries) the open boundaries of different copies are stitched once more
  *   (UnfoldedMesh::weld), and (closeHoles) the mesh is repaired: non-manifold faces dropped,
  *   components oriented, holes that are not the input's border filled (UnfoldedMesh::repair).

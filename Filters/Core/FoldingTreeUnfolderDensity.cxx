@@ -59,12 +59,14 @@ struct ThinningScope
     const FoldingNode& node,
     const std::vector<UnfoldCopy>& copies,
     const Piece& piece,
-    double planeTolerance)
+    double planeTolerance,
+    const std::vector<char>* thinnedCopies)
     : tolerance(planeTolerance * tree.diagonal)
   {
     const uint64_t bit = uint64_t(1) << node.depth;
-    for (const UnfoldCopy& copy : copies)
-      this->mirrored.push_back((copy.mirrorMask & bit) != 0);
+    for (size_t c = 0; c < copies.size(); ++c)
+      this->mirrored.push_back(thinnedCopies ? c < thinnedCopies->size() && (*thinnedCopies)[c] != 0
+                                             : (copies[c].mirrorMask & bit) != 0);
     const int n = piece.NumberOfPoints();
     this->fixed.assign(n, 1);
     for (int v = 0; v < n; ++v)
@@ -143,7 +145,8 @@ int Unfolder::FoldExcessFaces(const FoldingNode& node, const Piece& piece)
 int Unfolder::MatchDiscardedDensity(const FoldingNode& node,
   Piece& piece,
   std::vector<char>* added,
-  int pointFloor)
+  int pointFloor,
+  const std::vector<char>* thinnedCopies)
 {
   // The pass after the final repair (pointFloor >= 0): no projected point is removed later,
   // so those left count as pending only where they are kept on purpose (removeProjectedPoints
@@ -156,8 +159,9 @@ int Unfolder::MatchDiscardedDensity(const FoldingNode& node,
   const TraceSink& trace = this->Options.trace;
   std::string line;
   if (trace)
-    line = FormatTrace("[density] fold at depth %d: S %d faces (%d discarded), result %d faces, %d "
+    line = FormatTrace("[density] %s at depth %d: S %d faces (%d discarded), result %d faces, %d "
                        "above S (pending projected points apart)",
+      node.kind == FoldingNodeKind::Rotation ? "rotation" : "fold",
       node.depth,
       node.numberOfFaces,
       node.discardedFaces,
@@ -171,7 +175,7 @@ int Unfolder::MatchDiscardedDensity(const FoldingNode& node,
   }
   const int n = piece.NumberOfPoints();
   const ThinningScope scope(
-    this->Tree, node, this->Result.copies, piece, this->Options.planeTolerance);
+    this->Tree, node, this->Result.copies, piece, this->Options.planeTolerance, thinnedCopies);
   const std::vector<char>& fixed = scope.fixed;
   const double tolerance = scope.tolerance;
   auto mirroredHere = [&](int copy) { return scope.MirroredHere(copy); };

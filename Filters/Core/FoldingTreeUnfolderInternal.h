@@ -318,17 +318,19 @@ public:
   int RemoveProjectedPoints(const FoldingNode* node, Piece& piece, std::vector<char>* added);
 
   // FoldingTreeUnfolderDensity.cxx
-  /// Thins the mirrored copy made at `node` (UnfoldOptions::matchDiscardedDensity) towards
-  /// the face count of the node's region; returns the number of points removed.
-  /// Thins the copy mirrored at `node` towards the node's face count (the comment in
-  /// FoldingTreeUnfolderDensity.cxx). The final pass (after the repair; `pointFloor` >= 0)
+  /// Thins the copy mirrored at `node` (UnfoldOptions::matchDiscardedDensity) towards the face
+  /// count of the node's region (the comment in FoldingTreeUnfolderDensity.cxx); returns the
+  /// number of points removed. The final pass (after the repair; `pointFloor` >= 0)
   /// counts no projected point as pending (unless removeProjectedPoints is off), stops before the
   /// points used by faces drop below `pointFloor`, grants no budget where it is unknown and leaves
-  /// the points flagged in `added` (kept in step with the points) alone.
+  /// the points flagged in `added` (kept in step with the points) alone. `thinnedCopies` (per
+  /// copy, nonzero: thinned) replaces the copies mirrored at `node`: a rotation node's turned
+  /// copies (Turn).
   int MatchDiscardedDensity(const FoldingNode& node,
     Piece& piece,
     std::vector<char>* added = nullptr,
-    int pointFloor = -1);
+    int pointFloor = -1,
+    const std::vector<char>* thinnedCopies = nullptr);
   /// The faces of the result of `node` (after its reflection) above its region's count,
   /// less two per projected point still to be removed later (UnfoldedMesh::foldExcessFaces).
   static int FoldExcessFaces(const FoldingNode& node, const Piece& piece);

@@ -612,6 +612,12 @@ void VertexRemover::Apply(const RingRemoval& removal)
     const int i = OverlappingStarFace(piece.points, removal.vertex, removal.ring, candidate, t);
     likes.push_back(i >= 0 ? removal.ringFace[i] : first);
   }
+  // A new face is a fill (UnfoldedMesh::faceFilled) only where the whole old star was: one
+  // that also covers surface of the copy is not added surface, however it overlaps a small
+  // fill of the star (a thinned cut sector's seam fills would flag a twentieth of its area).
+  bool starFilled = true;
+  for (int f : removal.ringFace)
+    starFilled = starFilled && piece.faceFilled[f] != 0;
   for (int f : removal.ringFace)
     this->FaceAlive[f] = 0;
   for (size_t k = 0; k < removal.created.size(); ++k)
@@ -622,7 +628,7 @@ void VertexRemover::Apply(const RingRemoval& removal)
     piece.triangles.push_back(t);
     piece.faceOrig.push_back(piece.faceOrig[like]);
     piece.faceCopy.push_back(piece.faceCopy[like]);
-    piece.faceFilled.push_back(piece.faceFilled[like]);
+    piece.faceFilled.push_back(starFilled ? piece.faceFilled[like] : 0);
     this->FaceAlive.push_back(1);
     for (int a : t)
       this->VertexFaces[a].push_back(f);

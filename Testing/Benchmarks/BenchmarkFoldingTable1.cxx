@@ -10,7 +10,7 @@
 // mirrored copies (thin, MatchDiscardedDensity), the unfolded surface's area over the input's
 // (area: above 1 where surface lies twice) and the share of it in the faces the unfolder
 // added to close seam gaps and holes (fill: the unfolder's FilledAreaRatio; over the shared
-// meshes 57% of what area has above 1), and - for the Table 1 models, matched by file name -
+// meshes 55% of what area has above 1), and - for the Table 1 models, matched by file name -
 // the paper's row. Default builder and unfolder options (root epsilon 2% of the diagonal, keep the
 // half with more faces, 5% area stop). Not a test: numbers for humans and closing notes.
 //

@@ -208,6 +208,22 @@ void Staggered()
         tree.nodes[first].rotationOrder * tree.nodes[first + 1].numberOfFaces <=
           3.0 * m.triangles.size(),
       name << ": the sectors hold more than three times the faces");
+    // The turned copies of a cut sector (more faces than its share of the input: the 12-segment
+    // vases') are thinned towards the region's face count, as a fold's mirrored copy is
+    // (Unfolder::Turn); FoldAndCheck proved the bound with them.
+    UnfoldOptions unthinned;
+    unthinned.matchDiscardedDensity = false;
+    const size_t thick = coretest::Unfold(tree, unthinned).triangles.size();
+    const UnfoldedMesh u = coretest::Unfold(tree);
+    EXPECT(thick <= m.triangles.size() ? u.triangles.size() == thick
+                                       : u.thinnedCopyPoints > 0 && u.triangles.size() < thick,
+      name << ": " << u.triangles.size() << " unfolded faces, " << thick << " unthinned, "
+           << u.thinnedCopyPoints << " points thinned");
+    std::printf("%-28s unfolded %zu faces (unthinned %zu) for %zu\n",
+      name,
+      u.triangles.size(),
+      thick,
+      m.triangles.size());
   }
 }
 
