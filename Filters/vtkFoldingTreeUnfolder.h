@@ -34,14 +34,15 @@
  *   "FoldingMirrorMask" (vtkTypeUInt64Array, bit d set when the copy was reflected by the
  *   folding node at depth d), "FoldingMirrored" (1 for an odd number of reflections),
  *   "FoldingFilled" (1: a triangle added to fill a seam gap or a hole; its ids and copy are
- *   those of a neighbouring face).
+ *   those of a neighbouring face; a triangle re-triangulated after a point removal only where
+ *   every face of the removed star was one).
  * - field data: "UnfoldedFaces", "UnfoldedPoints", "UnfoldedArea", "AreaRatio" (over the
  *   input's area: above 1 where surface lies twice), "FilledAreaRatio" (the area of the
  *   FoldingFilled faces over the input's), "NumberOfCopies", "PlaneMergedVertices",
  *   "RemovedProjectedPoints" and "ProjectedPoints" (RemoveProjectedPoints: removed, left),
  *   "ThinnedCopyPoints" and "FoldExcessFaces" (MatchDiscardedDensity: vertices removed from
- *   mirrored copies, and the faces the folding nodes' results still have above the face
- *   counts of their regions, summed over the folding nodes),
+ *   mirrored copies and rotation nodes' turned copies, and the faces the folding and rotation
+ *   nodes' results still have above the face counts of their regions, summed over them),
  *   "StitchedVertices", "UnmatchedTearVertices", "OpenGapCount" (boundary edges left between
  *   tear vertices by stitching, before the final repair), "OpenGapLength", "FilledFaces",
  *   "OpenEdges", "NonManifoldEdges", "MisorientedEdges" (edges whose two faces traverse them
@@ -194,9 +195,10 @@ public:
    * after the final repair (CloseHoles), where seam gaps it closed had kept points of the copy
    * on open edges, never below the input's point count. A rotation node's k - 1 turned copies
    * are thinned the same way towards its region's face count (a sector cut along its
-   * half-planes holds more faces than its share). Reported in the field data
-   * ("ThinnedCopyPoints", and "FoldExcessFaces": faces the folds' results still have above
-   * their regions' counts).
+   * half-planes holds more faces than its share; the sector and its two seams stay, the seams
+   * between turned copies are thinned with them). Reported in the field data
+   * ("ThinnedCopyPoints", and "FoldExcessFaces": faces the folds' and rotations' results still
+   * have above their regions' counts).
    */
   vtkSetMacro(MatchDiscardedDensity, bool);
   vtkGetMacro(MatchDiscardedDensity, bool);

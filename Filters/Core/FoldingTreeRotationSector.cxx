@@ -375,8 +375,9 @@ const char* CutSector(const AxisFrame& frame,
   if (kept == 0 || kept == nf)
     return NoSector;
   // Faces cut along the half-planes multiply: k sectors may hold at most three times as many
-  // faces as the region had (the bearing's unfolded mesh has 4.4 times its input's faces;
-  // twice until 2026-12-06 kept the queen's order 15 out, 549 stored faces against 812).
+  // faces as the region had (the bearing's sector: 4.4 times its input's faces in its k copies,
+  // which the unfolder thins back to 1.0 times; twice until 2026-12-06 kept the queen's order
+  // 15 out, 549 stored faces against 812).
   if (k * static_cast<double>(kept) > MaximumFaceGrowth * (regionFaces < 0 ? nf : regionFaces))
     return TooManyPieces;
   // k sectors cover the region once: their area within a quarter sector of the region's (a

@@ -300,7 +300,9 @@ void Unfolder::Turn(int index, Piece& piece)
     this->Result.removedProjectedPoints += this->RemoveProjectedPoints(&node, piece, nullptr);
   // A cut sector holds more faces than its share of the region (the pieces of the faces its
   // half-planes cut): the turned copies are thinned towards the region's face count, as a
-  // fold's mirrored copy is (within the same error budgets; the sector itself keeps its faces).
+  // fold's mirrored copy is, within the same error budgets. The sector itself keeps its faces,
+  // and so do its two seams (their merged points are the sector's); the seams between two
+  // turned copies, interior since the stitch, are thinned with them.
   if (this->Options.matchDiscardedDensity)
   {
     std::vector<char> turned(this->Result.copies.size(), 0);
@@ -308,6 +310,7 @@ void Unfolder::Turn(int index, Piece& piece)
     this->Result.thinnedCopyPoints +=
       this->MatchDiscardedDensity(node, piece, nullptr, -1, &turned);
   }
+  this->Result.foldExcessFaces += std::max(0, FoldExcessFaces(node, piece));
 }
 
 void Unfolder::CountTears(const FoldingNode& node, Piece& piece, SeamReport& seam)

@@ -106,7 +106,8 @@ struct UnfoldOptions
    * that pass stops before the points used by faces drop below the input's point count, and
    * where a budget is unknown it only re-triangulates planar stars. A rotation node's k - 1
    * turned copies are thinned the same way, after its seams are stitched, towards its region's
-   * face count (a sector cut along its half-planes holds more faces than its share). See
+   * face count (a sector cut along its half-planes holds more faces than its share; the
+   * sector and its two seams stay, the seams between turned copies are thinned with them). See
    * UnfoldedMesh::thinnedCopyPoints and foldExcessFaces.
    */
   bool matchDiscardedDensity = true;
@@ -254,12 +255,12 @@ struct UnfoldedMesh
   /// left in the result (not removable, or the option off).
   int removedProjectedPoints = 0;
   int projectedPoints = 0;
-  /// Vertices removed from mirrored copies (UnfoldOptions::matchDiscardedDensity), and the
-  /// faces the folding nodes' results still had above their regions' face counts after it
-  /// (less two per projected point still to be removed; summed over the folding nodes, as
-  /// left by the thinning in the traversal: a folding root's second pass after the repair is
-  /// counted in thinnedCopyPoints only; with the thinning off, the excess it would have
-  /// removed).
+  /// Vertices removed from mirrored copies and from rotation nodes' turned copies
+  /// (UnfoldOptions::matchDiscardedDensity), and the faces the folding and rotation nodes'
+  /// results still had above their regions' face counts after it (less two per projected point
+  /// still to be removed; summed over those nodes, as left by the thinning in the traversal: a
+  /// folding root's second pass after the repair is counted in thinnedCopyPoints only; with the
+  /// thinning off, the excess it would have removed).
   int thinnedCopyPoints = 0;
   int foldExcessFaces = 0;
   std::vector<SeamReport> seams; ///< one per segmentation node (postorder)
@@ -311,7 +312,7 @@ struct UnfoldedMesh
  * - rotation node: the child's result turned k - 1 times by 360/k degrees about the axis
  *   (orientation kept), the seams between neighbouring sectors stitched like a segmentation's
  *   (the sectors play the children), the turned copies thinned towards the node's region face
- *   count (matchDiscardedDensity; the sector itself is kept as it is).
+ *   count (matchDiscardedDensity; the sector itself and its two seams are kept as they are).
  * - finally (weldBoundaries) the open boundaries of different copies are stitched once more
  *   (UnfoldedMesh::weld), and (closeHoles) the mesh is repaired: non-manifold faces dropped,
  *   components oriented, holes that are not the input's border filled (UnfoldedMesh::repair).

@@ -1,7 +1,9 @@
 // Unfolder: thinning of the mirrored copy made at a folding node, so that the node's result
 // has about the face count of its region S: an approximate fold whose two halves were
 // tessellated differently keeps the half with more faces (the paper's rule), and its mirror
-// image would double that half's density. See UnfoldOptions::matchDiscardedDensity.
+// image would double that half's density. A rotation node's turned copies likewise (a sector
+// cut along its half-planes holds more faces than its share of the region). See
+// UnfoldOptions::matchDiscardedDensity.
 #include "FoldingTreeUnfolderInternal.h"
 #include "FoldingTreeUnfolderVertexRemoval.h"
 #include "Trace.h"
@@ -45,7 +47,9 @@ double StarArea(const Piece& piece, const VertexRemover& remover, int v)
 /**
  * What the thinning at a folding node may touch: the points of the copy mirrored there that
  * no later step needs as they are. Every other point is fixed (the kept half, the fold
- * line), and no new edge joins two fixed points, so the fold line keeps its edges.
+ * line), and no new edge joins two fixed points, so the fold line keeps its edges. At a
+ * rotation node (`thinnedCopies`): the points of its turned copies, the sector's fixed (with
+ * the two seams whose merged points are the sector's).
  */
 struct ThinningScope
 {
@@ -159,12 +163,14 @@ int Unfolder::MatchDiscardedDensity(const FoldingNode& node,
   const TraceSink& trace = this->Options.trace;
   std::string line;
   if (trace)
-    line = FormatTrace("[density] %s at depth %d: S %d faces (%d discarded), result %d faces, %d "
-                       "above S (pending projected points apart)",
+    line = FormatTrace("[density] %s at depth %d: %s %d faces (%d %s discarded), result %d "
+                       "faces, %d above it (pending projected points apart)",
       node.kind == FoldingNodeKind::Rotation ? "rotation" : "fold",
       node.depth,
+      node.kind == FoldingNodeKind::Rotation ? "region" : "S",
       node.numberOfFaces,
       node.discardedFaces,
+      node.kind == FoldingNodeKind::Rotation ? "pieces" : "faces",
       piece.NumberOfFaces(),
       excess);
   if (excess < 2)

@@ -7,12 +7,13 @@
 // misoriented edges before/after (nm, mis), vertices before/after (pts, distinct positions)
 // and the change, the unfolded faces and their change, the projected points the unfolder
 // removed (rmvd) and the copies of projected points left (proj), the vertices it removed from
-// mirrored copies (thin, MatchDiscardedDensity), the unfolded surface's area over the input's
-// (area: above 1 where surface lies twice) and the share of it in the faces the unfolder
-// added to close seam gaps and holes (fill: the unfolder's FilledAreaRatio; over the shared
-// meshes 55% of what area has above 1), and - for the Table 1 models, matched by file name -
-// the paper's row. Default builder and unfolder options (root epsilon 2% of the diagonal, keep the
-// half with more faces, 5% area stop). Not a test: numbers for humans and closing notes.
+// mirrored copies and rotation nodes' turned copies (thin, MatchDiscardedDensity), the unfolded
+// surface's area over the input's (area: above 1 where surface lies twice) and the share of it in
+// the faces the unfolder added to close seam gaps and holes (fill: the unfolder's FilledAreaRatio;
+// over the shared meshes 55% of what area has above 1), and - for the Table 1 models, matched by
+// file name - the paper's row. Default builder and unfolder options (root epsilon 2% of the
+// diagonal, keep the half with more faces, 5% area stop). Not a test: numbers for humans and
+// closing notes.
 //
 //   BenchmarkFoldingTable1 [--threads N] [--keep fewer] [--tree] [--no-unfold]
 //                          [--no-close-holes] [--hole-tolerance F] [--keep-projected-points]

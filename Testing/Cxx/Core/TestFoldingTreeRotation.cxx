@@ -210,20 +210,43 @@ void Staggered()
       name << ": the sectors hold more than three times the faces");
     // The turned copies of a cut sector (more faces than its share of the input: the 12-segment
     // vases') are thinned towards the region's face count, as a fold's mirrored copy is
-    // (Unfolder::Turn); FoldAndCheck proved the bound with them.
+    // (Unfolder::Turn; FoldAndCheck proved the bound with them): the rotation node's own line
+    // of the thinning's trace says how many faces its result had above the region's count and
+    // how many points it removed - some wherever there were at least two faces above it (a
+    // sector of whole faces, the 40-segment vase's: none above, none removed).
+    UnfoldOptions traced;
+    int above = -1, removed = -1;
+    traced.trace = [&](const std::string& line)
+    {
+      if (line.rfind("[density] rotation at depth 0", 0) != 0)
+        return;
+      const size_t result = line.find("result ");
+      const size_t points = line.find("removed ");
+      int faces = 0;
+      if (result == std::string::npos ||
+        std::sscanf(line.c_str() + result, "result %d faces, %d above", &faces, &above) != 2)
+        above = -2;
+      removed = 0;
+      if (points != std::string::npos)
+        std::sscanf(line.c_str() + points, "removed %d points", &removed);
+    };
+    const UnfoldedMesh u = coretest::Unfold(tree, traced);
     UnfoldOptions unthinned;
     unthinned.matchDiscardedDensity = false;
     const size_t thick = coretest::Unfold(tree, unthinned).triangles.size();
-    const UnfoldedMesh u = coretest::Unfold(tree);
-    EXPECT(thick <= m.triangles.size() ? u.triangles.size() == thick
-                                       : u.thinnedCopyPoints > 0 && u.triangles.size() < thick,
-      name << ": " << u.triangles.size() << " unfolded faces, " << thick << " unthinned, "
-           << u.thinnedCopyPoints << " points thinned");
-    std::printf("%-28s unfolded %zu faces (unthinned %zu) for %zu\n",
+    EXPECT(first != 0 || (above >= 0 && (above < 2 ? removed == 0 : removed > 0)),
+      name << ": the rotation node's thinning: " << above << " faces above its region's, "
+           << removed << " points removed");
+    EXPECT(removed <= 0 || u.triangles.size() < thick,
+      name << ": " << u.triangles.size() << " unfolded faces, " << thick << " unthinned");
+    std::printf("%-28s unfolded %zu faces (unthinned %zu) for %zu; the rotation's result %d "
+                "faces above its region's, %d points removed\n",
       name,
       u.triangles.size(),
       thick,
-      m.triangles.size());
+      m.triangles.size(),
+      above,
+      removed);
   }
 }
 
@@ -339,7 +362,9 @@ private:
 /// so the miss is forced: the verification's distances go through a query that lies (face 0
 /// only) for surfaces with more than 1.2 times the input's faces - the unfold of a tree with
 /// sectors cut along their half-planes -, and tell the truth for the others (the input, the
-/// trims' parts, the planes' unfold).
+/// trims' parts, the planes' unfold). (The unfolder thins the turned copies since 2026-12-06,
+/// fifteenth session; this vase's budgets are spent and its unfold keeps 3.3 times the input's
+/// faces, so the test still tells them apart - the REQUIRE below says when it no longer does.)
 void FallbackToPlanes()
 {
   VaseShape s;
