@@ -123,7 +123,7 @@ projected points removed and left, points removed from mirrored copies, and stit
                            thinned to the face count of the fold's region where the error
                            budget allows: a fold whose halves were tessellated differently
                            keeps the denser half, whose mirror image would double it; and a
-                           rotation node's turned copies towards its region's face count)
+                           rotation node's copies of its sector towards its region's face count)
   --original MESH          also measure the distance to MESH (the folded input): Hausdorff
                            and mean distance, also as fractions of its diagonal (-1 without)
   --up auto|x|y|z          the picture's up axis, as for fold

@@ -41,8 +41,9 @@
  *   FoldingFilled faces over the input's), "NumberOfCopies", "PlaneMergedVertices",
  *   "RemovedProjectedPoints" and "ProjectedPoints" (RemoveProjectedPoints: removed, left),
  *   "ThinnedCopyPoints" and "FoldExcessFaces" (MatchDiscardedDensity: vertices removed from
- *   mirrored copies and rotation nodes' turned copies, and the faces the folding and rotation
- *   nodes' results still have above the face counts of their regions, summed over them),
+ *   mirrored copies and rotation nodes' copies of their sectors, and the faces the folding and
+ *   rotation nodes' results still have above the face counts of their regions, summed over
+ *   them),
  *   "StitchedVertices", "UnmatchedTearVertices", "OpenGapCount" (boundary edges left between
  *   tear vertices by stitching, before the final repair), "OpenGapLength", "FilledFaces",
  *   "OpenEdges", "NonManifoldEdges", "MisorientedEdges" (edges whose two faces traverse them
@@ -193,12 +194,12 @@ public:
    * bounded by the point's error budget; the kept half, seams and fold lines stay as they
    * are (UnfoldOptions::matchDiscardedDensity). A folding root's copy is thinned once more
    * after the final repair (CloseHoles), where seam gaps it closed had kept points of the copy
-   * on open edges, never below the input's point count. A rotation node's k - 1 turned copies
-   * are thinned the same way towards its region's face count (a sector cut along its
-   * half-planes holds more faces than its share; the sector and its two seams stay, the seams
-   * between turned copies are thinned with them). Reported in the field data
-   * ("ThinnedCopyPoints", and "FoldExcessFaces": faces the folds' and rotations' results still
-   * have above their regions' counts).
+   * on open edges, never below the input's point count. A rotation node's k copies of its
+   * sector are thinned the same way towards its region's face count (a sector cut along its
+   * half-planes holds more faces than its share), after its seams are stitched (they are
+   * thinned with the copies, interior by then). Reported in the field data ("ThinnedCopyPoints",
+   * and "FoldExcessFaces": faces the folds' and rotations' results still have above their regions'
+   * counts).
    */
   vtkSetMacro(MatchDiscardedDensity, bool);
   vtkGetMacro(MatchDiscardedDensity, bool);

@@ -255,7 +255,6 @@ void Unfolder::Turn(int index, Piece& piece)
     }
   }
   const Piece sector = piece;
-  const size_t firstTurnedCopy = this->Result.copies.size();
   std::vector<int> sectorOf(piece.points.size(), 0);
   for (int j = 1; j < k; ++j)
   {
@@ -299,16 +298,15 @@ void Unfolder::Turn(int index, Piece& piece)
   if (this->Options.stitch && this->Options.removeProjectedPoints)
     this->Result.removedProjectedPoints += this->RemoveProjectedPoints(&node, piece, nullptr);
   // A cut sector holds more faces than its share of the region (the pieces of the faces its
-  // half-planes cut): the turned copies are thinned towards the region's face count, as a
-  // fold's mirrored copy is, within the same error budgets. The sector itself keeps its faces,
-  // and so do its two seams (their merged points are the sector's); the seams between two
-  // turned copies, interior since the stitch, are thinned with them.
+  // half-planes cut), and so does each of its k copies: all of them are thinned towards the
+  // region's face count, within the same error budgets as a fold's mirrored copy (each copy's
+  // points carry the sector's budgets, charged for the turns; the seams, interior since the
+  // stitch, with them).
   if (this->Options.matchDiscardedDensity)
   {
-    std::vector<char> turned(this->Result.copies.size(), 0);
-    std::fill(turned.begin() + static_cast<std::ptrdiff_t>(firstTurnedCopy), turned.end(), 1);
+    const std::vector<char> everyCopy(this->Result.copies.size(), 1);
     this->Result.thinnedCopyPoints +=
-      this->MatchDiscardedDensity(node, piece, nullptr, -1, &turned);
+      this->MatchDiscardedDensity(node, piece, nullptr, -1, &everyCopy);
   }
   this->Result.foldExcessFaces += std::max(0, FoldExcessFaces(node, piece));
 }
@@ -420,7 +418,7 @@ void StoreResult(Piece& piece, UnfoldedMesh& result)
  *    points whose rings the seams closed. A rotation node (issue 22) turns its child's result
  *    k - 1 times by 360/k degrees about its axis (Turn; orientation kept), stitches the seams
  *    between neighbouring sectors the same way (the sectors play the children) and thins the
- *    turned copies towards the region's face count, as a fold's mirrored copy.
+ *    k copies towards the region's face count, as a fold's mirrored copy.
  * 2. The weld (WeldBoundaries): open edges between copies of different subtrees meet only at
  *    the root, so the last stitch runs over the whole mesh, within the budgets left.
  * 3. The repair (Repair: degenerate and non-manifold faces dropped, orientation made

@@ -104,10 +104,10 @@ struct UnfoldOptions
    * where points of the copy on seam gaps that only the repair closed were on open edges at
    * the fold (a blob whose halves are tessellated 1.3 times apart: +9.6% points -> +0.7%);
    * that pass stops before the points used by faces drop below the input's point count, and
-   * where a budget is unknown it only re-triangulates planar stars. A rotation node's k - 1
-   * turned copies are thinned the same way, after its seams are stitched, towards its region's
-   * face count (a sector cut along its half-planes holds more faces than its share; the
-   * sector and its two seams stay, the seams between turned copies are thinned with them). See
+   * where a budget is unknown it only re-triangulates planar stars. A rotation node's k copies
+   * of its sector are thinned the same way, after its seams are stitched (they are thinned
+   * with the copies, interior by then), towards its region's face count (a sector cut along its
+   * half-planes holds more faces than its share). See
    * UnfoldedMesh::thinnedCopyPoints and foldExcessFaces.
    */
   bool matchDiscardedDensity = true;
@@ -255,7 +255,7 @@ struct UnfoldedMesh
   /// left in the result (not removable, or the option off).
   int removedProjectedPoints = 0;
   int projectedPoints = 0;
-  /// Vertices removed from mirrored copies and from rotation nodes' turned copies
+  /// Vertices removed from mirrored copies and from rotation nodes' copies of their sectors
   /// (UnfoldOptions::matchDiscardedDensity), and the faces the folding and rotation nodes'
   /// results still had above their regions' face counts after it (less two per projected point
   /// still to be removed; summed over those nodes, as left by the thinning in the traversal: a
@@ -311,8 +311,8 @@ struct UnfoldedMesh
  *   (SeamReport) and in total - never hidden.
  * - rotation node: the child's result turned k - 1 times by 360/k degrees about the axis
  *   (orientation kept), the seams between neighbouring sectors stitched like a segmentation's
- *   (the sectors play the children), the turned copies thinned towards the node's region face
- *   count (matchDiscardedDensity; the sector itself and its two seams are kept as they are).
+ *   (the sectors play the children), the k copies thinned towards the node's region face count
+ *   (matchDiscardedDensity).
  * - finally (weldBoundaries) the open boundaries of different copies are stitched once more
  *   (UnfoldedMesh::weld), and (closeHoles) the mesh is repaired: non-manifold faces dropped,
  *   components oriented, holes that are not the input's border filled (UnfoldedMesh::repair).

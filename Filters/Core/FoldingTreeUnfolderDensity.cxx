@@ -1,8 +1,8 @@
 // Unfolder: thinning of the mirrored copy made at a folding node, so that the node's result
 // has about the face count of its region S: an approximate fold whose two halves were
 // tessellated differently keeps the half with more faces (the paper's rule), and its mirror
-// image would double that half's density. A rotation node's turned copies likewise (a sector
-// cut along its half-planes holds more faces than its share of the region). See
+// image would double that half's density. A rotation node's k copies of its sector likewise (a
+// sector cut along its half-planes holds more faces than its share of the region). See
 // UnfoldOptions::matchDiscardedDensity.
 #include "FoldingTreeUnfolderInternal.h"
 #include "FoldingTreeUnfolderVertexRemoval.h"
@@ -48,12 +48,12 @@ double StarArea(const Piece& piece, const VertexRemover& remover, int v)
  * What the thinning at a folding node may touch: the points of the copy mirrored there that
  * no later step needs as they are. Every other point is fixed (the kept half, the fold
  * line), and no new edge joins two fixed points, so the fold line keeps its edges. At a
- * rotation node (`thinnedCopies`): the points of its turned copies, the sector's fixed (with
- * the two seams whose merged points are the sector's).
+ * rotation node (`thinnedCopies`): the points of all k copies of its sector, none fixed (its
+ * seams are interior once stitched).
  */
 struct ThinningScope
 {
-  std::vector<char> mirrored; ///< per copy: mirrored at this node
+  std::vector<char> mirrored; ///< per copy: mirrored at this node (or thinned: thinnedCopies)
   std::vector<char> fixed;    ///< per point: not the copy's
   std::vector<char> open;     ///< per point: on an open edge
   std::vector<const Plane*> planesAbove;

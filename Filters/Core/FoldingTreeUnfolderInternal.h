@@ -324,8 +324,8 @@ public:
   /// counts no projected point as pending (unless removeProjectedPoints is off), stops before the
   /// points used by faces drop below `pointFloor`, grants no budget where it is unknown and leaves
   /// the points flagged in `added` (kept in step with the points) alone. `thinnedCopies` (per
-  /// copy, nonzero: thinned) replaces the copies mirrored at `node`: a rotation node's turned
-  /// copies (Turn).
+  /// copy, nonzero: thinned) replaces the copies mirrored at `node`: a rotation node's copies of
+  /// its sector (Turn).
   int MatchDiscardedDensity(const FoldingNode& node,
     Piece& piece,
     std::vector<char>* added = nullptr,

@@ -7,7 +7,7 @@
 // misoriented edges before/after (nm, mis), vertices before/after (pts, distinct positions)
 // and the change, the unfolded faces and their change, the projected points the unfolder
 // removed (rmvd) and the copies of projected points left (proj), the vertices it removed from
-// mirrored copies and rotation nodes' turned copies (thin, MatchDiscardedDensity), the unfolded
+// mirrored copies and rotation nodes' sector copies (thin, MatchDiscardedDensity), the unfolded
 // surface's area over the input's (area: above 1 where surface lies twice) and the share of it in
 // the faces the unfolder added to close seam gaps and holes (fill: the unfolder's FilledAreaRatio;
 // over the shared meshes 55% of what area has above 1), and - for the Table 1 models, matched by

@@ -208,12 +208,12 @@ void Staggered()
         tree.nodes[first].rotationOrder * tree.nodes[first + 1].numberOfFaces <=
           3.0 * m.triangles.size(),
       name << ": the sectors hold more than three times the faces");
-    // The turned copies of a cut sector (more faces than its share of the input: the 12-segment
-    // vases') are thinned towards the region's face count, as a fold's mirrored copy is
-    // (Unfolder::Turn; FoldAndCheck proved the bound with them): the rotation node's own line
-    // of the thinning's trace says how many faces its result had above the region's count and
-    // how many points it removed - some wherever there were at least two faces above it (a
-    // sector of whole faces, the 40-segment vase's: none above, none removed).
+    // The k copies of a cut sector (the sector included) (more faces than its share of the input:
+    // the 12-segment vases') are thinned towards the region's face count, as a fold's mirrored copy
+    // is (Unfolder::Turn; FoldAndCheck proved the bound with them): the rotation node's own line of
+    // the thinning's trace says how many faces its result had above the region's count and how many
+    // points it removed - some wherever there were at least two faces above it (a sector of whole
+    // faces, the 40-segment vase's: none above, none removed).
     UnfoldOptions traced;
     int above = -1, removed = -1;
     traced.trace = [&](const std::string& line)
@@ -362,8 +362,8 @@ private:
 /// so the miss is forced: the verification's distances go through a query that lies (face 0
 /// only) for surfaces with more than 1.2 times the input's faces - the unfold of a tree with
 /// sectors cut along their half-planes -, and tell the truth for the others (the input, the
-/// trims' parts, the planes' unfold). (The unfolder thins the turned copies since 2026-12-06,
-/// fifteenth session; this vase's budgets are spent and its unfold keeps 3.3 times the input's
+/// trims' parts, the planes' unfold). (The unfolder thins the sector's copies since 2026-12-06,
+/// fifteenth session; this vase's budgets are spent and its unfold keeps 3.2 times the input's
 /// faces, so the test still tells them apart - the REQUIRE below says when it no longer does.)
 void FallbackToPlanes()
 {
