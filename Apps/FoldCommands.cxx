@@ -313,8 +313,8 @@ void PrintUnfoldText(const UnfoldSummary& r)
     r.removedProjected,
     r.projectedLeft,
     r.removeProjected ? "" : " (--keep-projected-points)");
-  std::printf("mirrored copies thinned: %d points removed, %d faces above the folds' regions "
-              "left%s\n",
+  std::printf("copies thinned:          %d points removed (mirrored and turned copies), %d "
+              "faces above the folds' and rotations' regions left%s\n",
     r.thinned,
     r.foldExcess,
     r.matchDensity ? "" : " (--keep-copy-density)");

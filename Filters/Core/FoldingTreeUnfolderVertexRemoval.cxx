@@ -614,7 +614,7 @@ void VertexRemover::Apply(const RingRemoval& removal)
   }
   // A new face is a fill (UnfoldedMesh::faceFilled) only where the whole old star was: one
   // that also covers surface of the copy is not added surface, however it overlaps a small
-  // fill of the star (a thinned cut sector's seam fills would flag a twentieth of its area).
+  // fill of the star (the bearing's thinned sector copies would flag 2% of its area as fill).
   bool starFilled = true;
   for (int f : removal.ringFace)
     starFilled = starFilled && piece.faceFilled[f] != 0;
