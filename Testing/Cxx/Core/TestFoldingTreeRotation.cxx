@@ -208,12 +208,12 @@ void Staggered()
         tree.nodes[first].rotationOrder * tree.nodes[first + 1].numberOfFaces <=
           3.0 * m.triangles.size(),
       name << ": the sectors hold more than three times the faces");
-    // The k copies of a cut sector (the sector included) (more faces than its share of the input:
-    // the 12-segment vases') are thinned towards the region's face count, as a fold's mirrored copy
-    // is (Unfolder::Turn; FoldAndCheck proved the bound with them): the rotation node's own line of
-    // the thinning's trace says how many faces its result had above the region's count and how many
-    // points it removed - some wherever there were at least two faces above it (a sector of whole
-    // faces, the 40-segment vase's: none above, none removed).
+    // A cut sector holds more faces than its share of the input (the 12-segment vases'): its k
+    // copies, the sector included, are thinned towards the region's face count, as a fold's
+    // mirrored copy is (Unfolder::Turn; FoldAndCheck proved the bound with them): the rotation
+    // node's own line of the thinning's trace says how many faces its result had above the region's
+    // count and how many points it removed - some wherever there were at least two faces above it
+    // (a sector of whole faces, the 40-segment vase's: none above, none removed).
     UnfoldOptions traced;
     int above = -1, removed = -1;
     traced.trace = [&](const std::string& line)
