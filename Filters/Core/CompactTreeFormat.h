@@ -28,7 +28,10 @@
 // Positions are quantised on a grid over the stored points' bounding box; the largest move a
 // point can get from it (QuantizationError) is subtracted from every point's error budget
 // before the budget is stored, so the unfolder's proved bound (root epsilon) still holds:
-// quantisation is counted inside the bound, not on top of it.
+// quantisation is counted inside the bound, not on top of it. A leaf stores its points'
+// smallest budget; a point of a leaf below a rotation node may also carry a budget level in
+// its palette entry (2 bits of the entry's flags byte: at least level / 4 of the root epsilon;
+// CompactTreeSection.h, BudgetLevels), which files written before levels leave 0.
 //
 // Not stored (the unfolder does not need them): the input ids of stored points and faces (the
 // decoder numbers the stored points and faces 0..n-1), the input's border / non-manifold edge

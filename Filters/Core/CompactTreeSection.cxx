@@ -26,9 +26,28 @@ uint16_t LeafBudgetCode(const FoldingLeafMesh& m, double rootEpsilon, double qua
   return static_cast<uint16_t>(std::min(BudgetCodes, std::floor(left / rootEpsilon * BudgetCodes)));
 }
 
+/// Whether a node lies below a rotation node.
+bool BelowRotation(const FoldingTree& tree, const FoldingNode& node)
+{
+  for (int a = node.parent; a >= 0; a = tree.nodes[a].parent)
+    if (tree.nodes[a].kind == FoldingNodeKind::Rotation)
+      return true;
+  return false;
 }
 
-Palette MakePalette(const FoldingTree& tree)
+/// The budget level of a point's budget less the quantisation error (rounded down), or 0
+/// where that level gives no more than the leaf's budget.
+uint8_t BudgetLevel(double budget, double leafBudget, double rootEpsilon)
+{
+  const double level = std::floor(budget / rootEpsilon * BudgetLevels);
+  if (!(level >= 1.0))
+    return 0;
+  const int l = static_cast<int>(std::min<double>(BudgetLevels - 1, level));
+  return l * rootEpsilon / BudgetLevels > leafBudget ? static_cast<uint8_t>(l) : 0;
+}
+} // namespace
+
+Palette MakePalette(const FoldingTree& tree, double quantizationError)
 {
   std::map<PointData, std::pair<size_t, size_t>> seen; // data -> (count, first occurrence)
   std::vector<std::vector<const PointData*>> keys;
@@ -38,6 +57,9 @@ Palette MakePalette(const FoldingTree& tree)
     if (node.kind != FoldingNodeKind::Leaf)
       continue;
     const FoldingLeafMesh& m = node.mesh;
+    const bool levels = !m.errorBudget.empty() && BelowRotation(tree, node);
+    const double leafBudget =
+      LeafBudgetCode(m, tree.rootEpsilon, quantizationError) * tree.rootEpsilon / BudgetCodes;
     std::vector<PointData> data(m.points.size());
     for (size_t v = 0; v < data.size(); ++v)
     {
@@ -45,6 +67,9 @@ Palette MakePalette(const FoldingTree& tree)
       data[v].plane = m.planeMask[v];
       data[v].projected = static_cast<uint8_t>(m.projected[v] & 3);
       data[v].boundary = !m.inputBoundary.empty() && m.inputBoundary[v] ? 1 : 0;
+      if (levels)
+        data[v].budgetLevel =
+          BudgetLevel(m.errorBudget[v] - quantizationError, leafBudget, tree.rootEpsilon);
     }
     for (const MirroredFlag& f : m.mirroredFlags)
       data[f.point].mirrored.emplace_back(f.level, static_cast<int>(f.flag), f.mirrorMask);
@@ -180,7 +205,8 @@ void WriteTreeSection(const FoldingTree& tree,
   {
     p[PaletteTears].VarUInt(d.tear);
     p[PalettePlanes].VarUInt(d.plane);
-    p[PaletteFlags].U8(static_cast<uint8_t>(d.projected | (d.boundary << 2)));
+    p[PaletteFlags].U8(
+      static_cast<uint8_t>(d.projected | (d.boundary << 2) | (d.budgetLevel << 3)));
     p[PaletteRecordCounts].VarUInt(d.mirrored.size());
     for (const auto& record : d.mirrored)
     {
@@ -206,6 +232,7 @@ static void ReadPalette(ByteReader& r, bool columns, std::vector<PointData>& pal
     const uint8_t flags = c[PaletteFlags].U8();
     d.projected = flags & 3;
     d.boundary = (flags >> 2) & 1;
+    d.budgetLevel = (flags >> 3) & (BudgetLevels - 1); // 0 in files written before levels
     const size_t records =
       c[PaletteRecordCounts].Count(2 * MaximumFoldingTreeLevels, "mirrored-flag records");
     for (size_t k = 0; k < records; ++k)
@@ -354,6 +381,9 @@ void AttachLeaves(FoldingTree& tree,
     m.planeMask.resize(np);
     m.projected.resize(np);
     m.inputBoundary.resize(np);
+    const bool hasBudget = (leaves[l].flags & LeafHasBudget) != 0;
+    if (hasBudget)
+      m.errorBudget.assign(np, leaves[l].budget);
     for (size_t v = 0; v < np; ++v)
     {
       if (leaf.symbols[v] >= palette.size())
@@ -363,6 +393,9 @@ void AttachLeaves(FoldingTree& tree,
       m.planeMask[v] = d.plane;
       m.projected[v] = static_cast<char>(d.projected);
       m.inputBoundary[v] = static_cast<char>(d.boundary);
+      if (hasBudget)
+        m.errorBudget[v] =
+          std::max(m.errorBudget[v], d.budgetLevel * tree.rootEpsilon / BudgetLevels);
       for (const auto& record : d.mirrored)
       {
         MirroredFlag f;
@@ -375,8 +408,6 @@ void AttachLeaves(FoldingTree& tree,
     }
     if (!(leaves[l].flags & LeafHasInputBoundary))
       m.inputBoundary.clear();
-    if (leaves[l].flags & LeafHasBudget)
-      m.errorBudget.assign(np, leaves[l].budget);
     m.originalPointIds.resize(np);
     for (int& id : m.originalPointIds)
       id = pointId++;

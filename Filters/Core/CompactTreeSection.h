@@ -21,17 +21,24 @@ constexpr uint64_t MaximumCount = uint64_t(1) << 31;
 /// A leaf's error budget is stored in units of root epsilon / BudgetCodes (16 bits).
 constexpr double BudgetCodes = 65535.0;
 
-/// Everything a point carries besides its position and budget; the tree section lists the
-/// distinct ones (the palette), the geometry section gives each point its entry's index.
+/// A point of a leaf below a rotation node may carry a budget level: its error budget is at
+/// least level / BudgetLevels of the root epsilon (level 0: its leaf's budget alone). A sector's
+/// points differ in what the turns charged them, and the unfolder thins the sector's k copies
+/// within these budgets: with the leaf's smallest alone the queen came back with 9,545 faces.
+constexpr int BudgetLevels = 4;
+
+/// Everything a point carries besides its position; the tree section lists the distinct ones
+/// (the palette), the geometry section gives each point its entry's index.
 struct PointData
 {
   uint64_t tear = 0, plane = 0;
   uint8_t projected = 0, boundary = 0;
+  uint8_t budgetLevel = 0;                              ///< 0..BudgetLevels - 1 (see BudgetLevels)
   std::vector<std::tuple<int, int, uint64_t>> mirrored; ///< (level, flag, mask) records
   bool operator<(const PointData& o) const
   {
-    return std::tie(tear, plane, projected, boundary, mirrored) <
-      std::tie(o.tear, o.plane, o.projected, o.boundary, o.mirrored);
+    return std::tie(tear, plane, projected, boundary, budgetLevel, mirrored) <
+      std::tie(o.tear, o.plane, o.projected, o.boundary, o.budgetLevel, o.mirrored);
   }
 };
 
@@ -71,7 +78,7 @@ enum PaletteColumn
 {
   PaletteTears,        ///< varint per entry
   PalettePlanes,       ///< varint per entry
-  PaletteFlags,        ///< u8 per entry: projected | boundary << 2
+  PaletteFlags,        ///< u8 per entry: projected | boundary << 2 | budget level << 3
   PaletteRecordCounts, ///< varint per entry: its mirrored-flag records
   PaletteRecords,      ///< 2 u8 per record: level, flag
   PaletteMasks,        ///< varint per record
@@ -87,8 +94,10 @@ struct LeafHeader
   double budget = 0.0; ///< the leaf's error budget (if flags & LeafHasBudget)
 };
 
-/// The palette of `tree`'s point data, the most frequent first.
-Palette MakePalette(const FoldingTree& tree);
+/// The palette of `tree`'s point data, the most frequent first; budget levels (less
+/// `quantizationError`) for the points of leaves below a rotation node where they add to the
+/// leaf's budget.
+Palette MakePalette(const FoldingTree& tree, double quantizationError);
 
 /// Writes the tree section: counts, nodes, leaf headers (with each leaf's stored error budget,
 /// less `quantizationError`) and the palette; the nodes and the palette record by record, or

@@ -16,17 +16,6 @@ namespace unfolder_detail
 {
 namespace
 {
-/// A rotation node's seams are stitched within this share of the stitch tolerance (Turn). The
-/// builder made them meet - paired seam vertices agree exactly, the others lie on the sector's
-/// half-planes - so the pairs need no more; and near the axis the node's full tolerance
-/// (StitchToleranceScale times its epsilon) reaches the next half-plane (2 r sin(180/k) away
-/// at radius r), where chains of pairs across the sectors moved the seams' vertices over their
-/// neighbours: the bearing's 19 sectors, cut along their half-planes, came back with 1.10
-/// times its area at the full tolerance, 1.044 at a quarter, 1.014 at a tenth (docs/unfolder.md).
-/// Above order 31 the share is sin(180/k) instead: beyond the seam vertices Turn moves onto the
-/// axis (half of StitchToleranceScale times epsilon from it) two half-planes are then farther
-/// apart than the tolerance for any k.
-constexpr double RotationStitchShare = 0.1;
 /// A rotation node's points within this share of the diagonal of its axis are on it (Turn;
 /// the builder's sector cut moves its poles onto the axis, 1e-6 of the diagonal around it).
 constexpr double PoleOfDiagonal = 1e-9;
@@ -221,7 +210,7 @@ void Unfolder::Reflect(const FoldingNode& node, Piece& piece)
 
 /// The sector turned k - 1 times by 360/k degrees about the axis (copies keep their
 /// orientation), then the seams between the sectors stitched like a segmentation's, within
-/// RotationStitchShare of its tolerance: the builder flagged the seam vertices with the node's
+/// RotationStitchShare(k) of its tolerance: the builder flagged the seam vertices with the node's
 /// tear bit and made them meet.
 void Unfolder::Turn(int index, Piece& piece)
 {
@@ -287,11 +276,7 @@ void Unfolder::Turn(int index, Piece& piece)
   seam.node = index;
   seam.depth = node.depth;
   if (this->Options.stitch)
-    this->Stitch(node,
-      piece,
-      sectorOf,
-      seam,
-      std::min(RotationStitchShare, std::sin(static_cast<double>(EIGEN_PI) / k)));
+    this->Stitch(node, piece, sectorOf, seam, RotationStitchShare(k));
   else
     this->CountTears(node, piece, seam);
   this->Result.seams.push_back(seam);

@@ -21,7 +21,7 @@ struct UnfoldOptions
   bool stitch = true;
   /// Tear vertices of different children closer than stitchToleranceScale * (the
   /// segmentation node's epsilon) may be merged; between a rotation node's sectors, a tenth of
-  /// that, sin(180/k) of it above order 31 (RotationStitchShare in FoldingTreeUnfolder.cxx).
+  /// that, sin(180/k) of it above order 31 (RotationStitchShare in RotationAxis.h).
   double stitchToleranceScale = 1.0;
   /// After vertex pairing, insert each tear vertex still without a partner into the nearest
   /// open seam edge of another child within the tolerance (splitting that triangle), which

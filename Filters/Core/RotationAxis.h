@@ -6,6 +6,9 @@
 
 #include <Eigen/Core>
 
+#include <algorithm>
+#include <cmath>
+
 namespace foldingmeshes
 {
 /// A line in space: the axis of a rotation.
@@ -19,6 +22,25 @@ struct RotationAxis
   /// A direction turned the same way.
   Vec3 RotateDirection(const Vec3& v, double angle) const;
 };
+
+/**
+ * The share of the unfolder's stitch tolerance within which a rotation node of order k has its
+ * seams stitched (Unfolder::Turn): a tenth, and sin(180/k) above order 31. The builder made
+ * the seams meet - paired seam vertices agree closely, the others lie on the sector's
+ * half-planes - so the pairs need no more; and near the axis the node's full tolerance
+ * (StitchToleranceScale times its epsilon) reaches the next half-plane (2 r sin(180/k) away at
+ * radius r), where chains of pairs across the sectors moved the seams' vertices over their
+ * neighbours: the bearing's 19 sectors, cut along their half-planes, came back with 1.10 times
+ * its area at the full tolerance, 1.044 at a quarter, 1.014 at a tenth (docs/unfolder.md).
+ * Above order 31, beyond the seam vertices Turn moves onto the axis (half of
+ * StitchToleranceScale times epsilon from it), two half-planes are then farther apart than the
+ * tolerance for any k. A compact file quantises a rotation tree finely enough for this
+ * (CompactTreeFormat.cxx, ChooseBits).
+ */
+inline double RotationStitchShare(int order)
+{
+  return std::min(0.1, std::sin(static_cast<double>(EIGEN_PI) / std::max(order, 2)));
+}
 
 /// A turn by a fixed angle about an axis, its matrix computed once (RotationAxis::Rotate
 /// computes it on every call): for loops that turn many points by the same turn.
