@@ -148,7 +148,8 @@ file kept (JSON "foldOptions": what it added to the options given, "" none; the 
 options keep the fold command's defaults).
   --quantization-bits N    position bits per coordinate, 6..24, or auto (default): the fewest
                            (at least 8) whose error is at most half of the smallest error
-                           budget of a stored point; the error is taken from the budgets, so
+                           budget of a stored point (and, with rotation nodes, at most their
+                           seams' stitch tolerance); the error is taken from the budgets, so
                            the unfolded mesh stays within the root epsilon
   --keep-arrays            also store the mesh's point and cell arrays (lossless; a larger
                            file: the geometry is then coded in the leaves' order)

@@ -30,7 +30,9 @@ constexpr size_t HeaderBytes = 16;
 /// RotationStitchShare): quantisation parts the seams of a sector, which the unfolder stitches
 /// within that tolerance - the bearing's 64 sectors at 8 bits came back with 10,981 faces for
 /// its 3,322 (535 bytes; 6,592 seam edges left open), at the 10 bits of this rule with 3,322
-/// (659 bytes; none open).
+/// (659 bytes; none open). A measured choice, not a guarantee (partners are quantised apart by
+/// up to twice the error; at 11 bits the bearing left 448 seam edges to the repair):
+/// docs/compression.md.
 int ChooseBits(const FoldingTree& tree, LeafGeometryCoding coding, int requested)
 {
   if (requested > 0)

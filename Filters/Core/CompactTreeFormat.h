@@ -53,7 +53,8 @@ struct CompactTreeOptions
   /// Position quantisation bits per coordinate on the grid over the stored points' bounding
   /// box (6..24), or 0: automatic - the fewest bits (at least 8) whose quantisation error is at
   /// most half of the smallest error budget of a stored point (1% of the root epsilon when the
-  /// tree has no budgets), at most 24.
+  /// tree has no budgets) and at most the seam stitch tolerance of every rotation node
+  /// (RotationStitchShare(k) times its epsilon), at most 24.
   int quantizationBits = 0;
   /// Draco's speed settings to try (0 = slowest ... 10 = fastest; 3 is draco_encoder's -cl 7,
   /// 0 its -cl 10); the smallest result is kept (neither is smallest on every tree).

@@ -34,8 +34,8 @@ struct RotationAxis
  * its area at the full tolerance, 1.044 at a quarter, 1.014 at a tenth (docs/unfolder.md).
  * Above order 31, beyond the seam vertices Turn moves onto the axis (half of
  * StitchToleranceScale times epsilon from it), two half-planes are then farther apart than the
- * tolerance for any k. A compact file quantises a rotation tree finely enough for this
- * (CompactTreeFormat.cxx, ChooseBits).
+ * tolerance for any k. A compact file's automatic quantisation error is at most this
+ * tolerance (CompactTreeFormat.cxx, ChooseBits).
  */
 inline double RotationStitchShare(int order)
 {

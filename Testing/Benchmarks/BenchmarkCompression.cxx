@@ -305,8 +305,8 @@ int main(int argc, char* argv[])
     const double decompressSeconds = Since(start);
     // The decompressed mesh's faces for the input's (a rotation tree's sector cut along its
     // half-planes comes back with more where the budgets do not let the unfolder thin it).
-    const double facesBack =
-      double(unfolder->GetOutput()->GetNumberOfCells()) / double(mesh->GetNumberOfCells());
+    const double facesBack = double(unfolder->GetOutput()->GetNumberOfCells()) /
+      double(std::max<vtkIdType>(1, mesh->GetNumberOfCells()));
     unfolder->SetOriginalData(mesh); // the proved bound, outside the timing
     unfolder->Update();
     const double bound = Field(unfolder->GetOutput(), "HausdorffToOriginalBoundRelative");
