@@ -6,28 +6,32 @@
 // (the plane moves with it), and with an asymmetric deformation of the parts on one side and in
 // the middle (about 60% of the area), which no plane folds within 2% of the diagonal.
 //
-//   GenerateArtistMeshes OUTDIR
+//   GenerateArtistMeshes OUTDIR [--large]
 //
 // writes OUTDIR/<name>_<variant>.ply (binary) and prints name, faces, parts, open edges and the
-// plane (origin, normal) of each. Not a test: the input of BenchmarkFoldingTable1 and
-// BenchmarkSymmetryDetection, e.g.
+// plane (origin, normal) of each; --large also the procedural bilateral blobs of 100k and 1M
+// faces that `BenchmarkArtistMeshes --large` times (blob_100000.ply, blob_1000000.ply: the same
+// meshes, under the same rigid motion), to profile them with the command-line program. Not a test:
+// the input of BenchmarkFoldingTable1 and BenchmarkSymmetryDetection, e.g.
 //   build/bin/GenerateArtistMeshes /tmp/artist && build/bin/BenchmarkFoldingTable1 --threads 2
 //   /tmp/artist
 #include "ArtistMeshes.h"
 #include "EdgeTable.h"
+#include "ProceduralMeshes.h"
 
 #include <vtkNew.h>
 #include <vtkPLYWriter.h>
+#include <vtkPolyData.h>
 
 #include <cstdio>
 #include <string>
 
 namespace
 {
-bool Write(const foldingmeshes::TriangleMesh& a, const std::string& path)
+bool Write(vtkPolyData* mesh, const std::string& path)
 {
   vtkNew<vtkPLYWriter> writer;
-  writer->SetInputData(foldingmeshes::artist::ToPolyData(a));
+  writer->SetInputData(mesh);
   writer->SetFileName(path.c_str());
   writer->SetFileTypeToBinary();
   return writer->Write() == 1;
@@ -36,16 +40,17 @@ bool Write(const foldingmeshes::TriangleMesh& a, const std::string& path)
 
 int main(int argc, char* argv[])
 {
-  if (argc != 2)
+  const bool large = argc == 3 && std::string(argv[2]) == "--large";
+  if (argc != 2 && !large)
   {
-    std::fprintf(stderr, "usage: %s OUTDIR\n", argv[0]);
+    std::fprintf(stderr, "usage: %s OUTDIR [--large]\n", argv[0]);
     return 2;
   }
   const std::string dir = argv[1];
   std::printf("%-22s %7s %6s %6s  plane origin / normal\n", "mesh", "faces", "parts", "open");
   for (const foldingmeshes::artist::ArtistMesh& m : foldingmeshes::artist::MakeArtistCorpus())
   {
-    if (!Write(m.mesh, dir + "/" + m.name + ".ply"))
+    if (!Write(foldingmeshes::artist::ToPolyData(m.mesh), dir + "/" + m.name + ".ply"))
     {
       std::fprintf(stderr, "cannot write %s/%s.ply\n", dir.c_str(), m.name.c_str());
       return 1;
@@ -62,6 +67,31 @@ int main(int argc, char* argv[])
       m.normal.y(),
       m.normal.z(),
       m.deformed ? " (one side deformed)" : "");
+  }
+  for (int faces : { 100000, 1000000 }) // as BenchmarkArtistMeshes --large makes them
+  {
+    if (!large)
+      break;
+    auto blob = foldingmeshes::testing::MakeBilateralBlob(faces, 7);
+    foldingmeshes::testing::ApplyRigidMotion(blob, foldingmeshes::testing::RandomRigidMotion(11));
+    const std::string name = "blob_" + std::to_string(faces);
+    if (!Write(blob.mesh, dir + "/" + name + ".ply"))
+    {
+      std::fprintf(stderr, "cannot write %s/%s.ply\n", dir.c_str(), name.c_str());
+      return 1;
+    }
+    const foldingmeshes::testing::KnownPlane& p = blob.planes.at(0);
+    std::printf("%-22s %7lld %6d %6s  (%.4f %.4f %.4f) / (%.4f %.4f %.4f)\n",
+      name.c_str(),
+      static_cast<long long>(blob.mesh->GetNumberOfCells()),
+      1,
+      "-",
+      p.origin.x(),
+      p.origin.y(),
+      p.origin.z(),
+      p.normal.x(),
+      p.normal.y(),
+      p.normal.z());
   }
   return 0;
 }
