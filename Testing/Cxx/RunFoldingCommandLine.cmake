@@ -22,7 +22,8 @@
 #     (JSON foldOptions names what it added), and that file is smaller than the one folded
 #     with the fold command's --min-faces (the dino: 3,574 against 4,015 bytes); on AXIAL_MESH
 #     (the queen) the rotation rule folds twice, keeps the rotation tree's smaller file (than
-#     --no-rotation's) and it decompresses within the root epsilon; compress --search tries
+#     --no-rotation's) and it decompresses within the root epsilon, to at most 1.1 times the
+#     input's faces (the sector's budget levels); compress --search tries
 #     six more fold settings and keeps the smallest file (no larger than compress's own),
 #     which decompresses within the root epsilon;
 # 4g. roundtrip measures its distances through vtkStaticCellLocator by default (JSON
@@ -335,6 +336,22 @@ if (DEFINED AXIAL_MESH AND EXISTS "${AXIAL_MESH}")
   string(JSON axialBound ERROR_VARIABLE jsonError GET "${dout3}" hausdorffToOriginalBoundRelative)
   if (NOT rc EQUAL 0 OR jsonError OR axialBound LESS 0 OR axialBound GREATER epsilonFraction)
     message(FATAL_ERROR "decompress of ${axialStem}.fmz: exit ${rc}, bound ${axialBound} ${err}")
+  endif ()
+  # The rotation tree's sector, cut along its half-planes, comes back with about the input's
+  # faces: its points' budget levels let the unfolder thin the k copies as in memory (the
+  # queen: 3,191 faces for 3,275; 9,545 with one budget per leaf).
+  string(JSON axialFaces ERROR_VARIABLE jsonError GET "${dout3}" faces)
+  execute_process(COMMAND "${FOLDINGMESHES}" detect "${AXIAL_MESH}" --outdir "${WORK_DIR}/axial"
+    --json --quiet OUTPUT_VARIABLE detectOut ERROR_VARIABLE err)
+  string(JSON axialInputFaces ERROR_VARIABLE jsonError4 GET "${detectOut}" faces)
+  if (jsonError OR jsonError4)
+    message(FATAL_ERROR "decompress / detect of ${axialStem}: no face count: ${dout3} ${detectOut}")
+  endif ()
+  math(EXPR axialFaceLimit "${axialInputFaces} * 11 / 10")
+  message("decompress ${axialStem}.fmz: ${axialFaces} faces for the input's ${axialInputFaces}")
+  if (axialFaces GREATER axialFaceLimit)
+    message(FATAL_ERROR "decompress of ${axialStem}.fmz: ${axialFaces} faces, more than 1.1 "
+      "times the input's ${axialInputFaces}")
   endif ()
 endif ()
 
