@@ -20,8 +20,8 @@
 #     decompress refuses a .vtm and a 3-byte file (exit 2);
 # 4f'. compress folds with its own --min-faces 400 and --rotation-when-axial unless given
 #     (JSON foldOptions names what it added), and that file is smaller than the one folded
-#     with the fold command's --min-faces (the dino: 3,574 against 4,015 bytes); on AXIAL_MESH
-#     (the queen) the rotation rule folds twice, keeps the rotation tree's smaller file (than
+#     with the fold command's --min-faces (the dino: 3,574 against 4,015 bytes); on AXIAL_MESHES
+#     (the queen, the bearing) the rotation rule folds twice, keeps the rotation tree's smaller file (than
 #     --no-rotation's) and it decompresses within the root epsilon, to at most 1.1 times the
 #     input's faces (the sector's budget levels); compress --search tries
 #     six more fold settings and keeps the smallest file (no larger than compress's own),
@@ -307,14 +307,20 @@ if (NOT fmzBytes LESS foldDefaultBytes)
   message(FATAL_ERROR "compress's own fold default made ${fmzBytes} bytes, the fold command's ${foldDefaultBytes}")
 endif ()
 
-# compress's rotation rule on the queen (its second moments axially symmetric): rotation nodes,
-# compared with the fold without them (two folds), the smaller file kept - the rotation tree's,
-# smaller than --no-rotation's - and it decompresses within the root epsilon (proved).
-if (DEFINED AXIAL_MESH AND EXISTS "${AXIAL_MESH}")
+# compress's rotation rule on AXIAL_MESHES ('|'-separated: the queen and the bearing, their second
+# moments axially symmetric): rotation nodes, compared with the fold without them (two folds),
+# the smaller file kept - the rotation tree's, smaller than --no-rotation's - and it decompresses
+# within the root epsilon (proved) to at most 1.1 times the input's faces.
+string(REPLACE "|" ";" axialMeshes "${AXIAL_MESHES}")
+foreach (AXIAL_MESH IN LISTS axialMeshes)
+  if (NOT EXISTS "${AXIAL_MESH}")
+    message("no ${AXIAL_MESH}: its compress checks skipped")
+    continue()
+  endif ()
   get_filename_component(axialStem "${AXIAL_MESH}" NAME_WE)
   foreach (rotation IN ITEMS "" "--no-rotation")
     execute_process(COMMAND "${FOLDINGMESHES}" compress "${AXIAL_MESH}" ${rotation}
-      --outdir "${WORK_DIR}/axial${rotation}" --json --quiet
+      --outdir "${WORK_DIR}/${axialStem}${rotation}" --json --quiet
       RESULT_VARIABLE rc OUTPUT_VARIABLE aout ERROR_VARIABLE err)
     string(JSON axialBytes${rotation} ERROR_VARIABLE jsonError GET "${aout}" bytes)
     string(JSON axialTried${rotation} ERROR_VARIABLE jsonError2 GET "${aout}" foldSettingsTried)
@@ -330,18 +336,19 @@ if (DEFINED AXIAL_MESH AND EXISTS "${AXIAL_MESH}")
       OR NOT axialOptions--no-rotation STREQUAL "--min-faces 400")
     message(FATAL_ERROR "compress's rotation rule on ${axialStem}: see the numbers above")
   endif ()
-  execute_process(COMMAND "${FOLDINGMESHES}" decompress "${WORK_DIR}/axial/${axialStem}.fmz"
-    --original "${AXIAL_MESH}" --outdir "${WORK_DIR}/axial" --json --quiet
+  execute_process(COMMAND "${FOLDINGMESHES}" decompress "${WORK_DIR}/${axialStem}/${axialStem}.fmz"
+    --original "${AXIAL_MESH}" --outdir "${WORK_DIR}/${axialStem}" --json --quiet
     RESULT_VARIABLE rc OUTPUT_VARIABLE dout3 ERROR_VARIABLE err)
   string(JSON axialBound ERROR_VARIABLE jsonError GET "${dout3}" hausdorffToOriginalBoundRelative)
   if (NOT rc EQUAL 0 OR jsonError OR axialBound LESS 0 OR axialBound GREATER epsilonFraction)
     message(FATAL_ERROR "decompress of ${axialStem}.fmz: exit ${rc}, bound ${axialBound} ${err}")
   endif ()
   # The rotation tree's sector, cut along its half-planes, comes back with about the input's
-  # faces: its points' budget levels let the unfolder thin the k copies as in memory (the
-  # queen: 3,191 faces for 3,275; 9,545 with one budget per leaf).
+  # faces: its points' budget levels and the bits for its seams let the unfolder thin the k
+  # copies as in memory (the queen: 3,191 faces for 3,275, 9,545 with one budget per leaf; the
+  # bearing 3,322 for 3,322, 10,981 at the 8 bits of the budgets alone).
   string(JSON axialFaces ERROR_VARIABLE jsonError GET "${dout3}" faces)
-  execute_process(COMMAND "${FOLDINGMESHES}" detect "${AXIAL_MESH}" --outdir "${WORK_DIR}/axial"
+  execute_process(COMMAND "${FOLDINGMESHES}" detect "${AXIAL_MESH}" --outdir "${WORK_DIR}/${axialStem}"
     --json --quiet OUTPUT_VARIABLE detectOut ERROR_VARIABLE err)
   string(JSON axialInputFaces ERROR_VARIABLE jsonError4 GET "${detectOut}" faces)
   if (jsonError OR jsonError4)
@@ -353,7 +360,7 @@ if (DEFINED AXIAL_MESH AND EXISTS "${AXIAL_MESH}")
     message(FATAL_ERROR "decompress of ${axialStem}.fmz: ${axialFaces} faces, more than 1.1 "
       "times the input's ${axialInputFaces}")
   endif ()
-endif ()
+endforeach ()
 
 # compress --search: seven fold settings tried, a file no larger than compress's own, and
 # it decompresses within the root epsilon (proved).
