@@ -1,5 +1,6 @@
-"""Fuzz harness: build a small mesh, fold, unfold, check. Usage: fuzz_case.py '<json case>' -> prints RESULT {json}."""
-import sys, json, math
+"""Fuzz harness: build a small mesh, fold, unfold (optionally through a compact file: "compact": BITS,
+0 automatic), check. Usage: fuzz_case.py '<json case>' -> prints RESULT {json}."""
+import sys, json, math, os, tempfile
 import numpy as np
 from vtkmodules.vtkCommonCore import vtkPoints, vtkObject
 from vtkmodules.vtkCommonDataModel import vtkPolyData, vtkCellArray
@@ -7,7 +8,8 @@ from vtkmodules.vtkFiltersSources import vtkSphereSource, vtkCylinderSource, vtk
 from vtkmodules.vtkFiltersCore import vtkTriangleFilter
 from vtkmodules.vtkIOGeometry import vtkOBJReader
 from vtkmodules.vtkIOPLY import vtkPLYReader
-from foldingmeshes import vtkFoldingTreeBuilder, vtkFoldingTreeUnfolder, vtkOFFReader
+from foldingmeshes import (vtkFoldingTreeBuilder, vtkFoldingTreeCompactReader, vtkFoldingTreeCompactWriter,
+                           vtkFoldingTreeUnfolder, vtkOFFReader)
 
 vtkObject.GlobalWarningDisplayOff()
 
@@ -227,7 +229,24 @@ def run(case):
     b.Update()
     tree = b.GetOutputDataObject(0)
     u = vtkFoldingTreeUnfolder()
-    u.SetInputData(tree)
+    if 'compact' in case:  # through a compact file (.fmz) at these bits (0: automatic)
+        fd_, path = tempfile.mkstemp(suffix='.fmz')
+        os.close(fd_)
+        w = vtkFoldingTreeCompactWriter()
+        w.SetInputData(tree)
+        w.SetFileName(path)
+        w.SetQuantizationBits(int(case['compact']))
+        w.Write()
+        reader = vtkFoldingTreeCompactReader()
+        reader.SetFileName(path)
+        reader.Update()
+        os.remove(path)
+        read = reader.GetOutputDataObject(0)
+        if read is None or read.GetNumberOfBlocks() == 0:
+            raise RuntimeError('the compact file did not read back')
+        u.SetInputData(read)
+    else:
+        u.SetInputData(tree)
     u.SetOriginalData(mesh)
     for k, v in case.get('u', {}).items():
         getattr(u, 'Set' + k)(v)

@@ -6,7 +6,9 @@
 # MESHES (optional, quoted): only these meshes; "artist" for four artist-like meshes (not in the
 # default 440: 20 cases each, about half a minute a case); "rotation" for the default meshes
 # with the builder's RotationNodes on instead of the five option sets (two: with and without
-# the face stop; 176 cases; issue 22).
+# the face stop; 176 cases; issue 22); "compact" for the default meshes folded with the default
+# options and with RotationNodes on, each unfolded from a compact file (.fmz, automatic bits)
+# written and read back (176 cases).
 # All 176 pass since the sectors' seams are stitched within a tenth of the stitch tolerance
 # (2026-12-06; before, the bearing's unfolded area was 1.06-1.25 times its input's).
 set -u
@@ -27,8 +29,12 @@ meshes="square rect triangle isosceles fan6 fan8 polyfan6 grid4 grid6 cube boxlo
 options=('{}' '{"UseMinimumFaces": false}' '{"UseMinimumFaces": false, "UseMaximumFolds": false}'
   '{"UseMinimumFaces": false, "UseMinimumAreaFraction": false}'
   '{"UseMinimumFaces": false, "KeepSide": 1}')
+compact=""
 if [ "${2:-}" = rotation ]; then
   options=('{"RotationNodes": true}' '{"RotationNodes": true, "UseMinimumFaces": false}')
+elif [ "${2:-}" = compact ]; then
+  options=('{}' '{"RotationNodes": true}')
+  compact=', "compact": 0'
 elif [ -n "${2:-}" ]; then
   meshes=${2/artist/$artist}
 fi
@@ -38,7 +44,7 @@ for m in $meshes; do
   for double in $doubles; do
     for b in "${options[@]}"; do
       for rigid in 0 7; do
-        c="{\"mesh\": \"$m\", \"double\": $double, \"rigid\": $rigid, \"b\": $b}"
+        c="{\"mesh\": \"$m\", \"double\": $double, \"rigid\": $rigid, \"b\": $b$compact}"
         r=$(PYTHONPATH=build/lib/python3/dist-packages timeout 60 /usr/bin/python3 \
           scripts/fuzz/fuzz_case.py "$c" 2>/dev/null | grep '^RESULT' | /usr/bin/python3 -c "
 import sys, json
