@@ -145,12 +145,14 @@ its size, the stored faces and the quantisation. Unless given, compress folds wi
 --min-faces 400 (fewer, larger leaves: files up to 39% smaller) and --rotation-when-axial;
 a tree that gets rotation nodes so is compared with the fold without them and the smaller
 file kept (JSON "foldOptions": what it added to the options given, "" none; the other fold
-options keep the fold command's defaults).
+options keep the fold command's defaults). The file kept is decompressed and its distance to
+MESH proved ("proved bound", JSON "provedBound", "provedWithin"); with the automatic bits it
+is written again with two more bits while not within the root epsilon (JSON "proofRetries";
+a warning where even 24 bits do not prove it).
   --quantization-bits N    position bits per coordinate, 6..24, or auto (default): the fewest
                            (at least 8) whose error is at most half of the smallest error
                            budget of a stored point (and, with rotation nodes, at most their
-                           seams' stitch tolerance); the error is taken from the budgets, so
-                           the unfolded mesh stays within the root epsilon
+                           seams' stitch tolerance), raised until the file is proved
   --keep-arrays            also store the mesh's point and cell arrays (lossless; a larger
                            file: the geometry is then coded in the leaves' order)
   --search                 also fold with up to six other settings (the options given alone,

@@ -195,18 +195,38 @@ int Compress(int argc, char* argv[])
   std::filesystem::remove(candidatePath, removed);
   vtkFoldingTreeBuilder* builder = best.builder;
   vtkFoldingTreeCompactWriter* writer = best.writer;
-  const double seconds =
-    std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   auto* tree = vtkMultiBlockDataSet::SafeDownCast(builder->GetOutputDataObject(0));
   const int original = static_cast<int>(TreeValue(tree, "OriginalFaces"));
   const int stored = static_cast<int>(TreeValue(tree, "StoredFaces"));
   const double epsilon = TreeValue(tree, "RootEpsilon");
+  const double diagonal = TreeValue(tree, "Diagonal");
+  // The chosen file written again with the mesh as the writer's original: decompressed and
+  // proved against it, with more bits while it is not within the root epsilon (automatic
+  // bits; vtkFoldingTreeCompactWriter::SetOriginalData).
+  writer->SetFileName(output.c_str()); // (a candidate's file was renamed to the output)
+  writer->SetOriginalData(mesh);
+  std::string writeError;
+  if (!RunFilter(writer, "writing", true, writeError))
+  {
+    std::cerr << "foldingmeshes: " << writeError << "\n";
+    return 3;
+  }
+  const int proofRetries = writer->GetProofRetries();
+  const double proved = writer->GetProvedBound();
+  const bool within = proved >= 0.0 && proved <= epsilon + 1e-7 * diagonal;
+  if (!within)
+    std::cerr << "foldingmeshes: warning: " << output << " decompresses " << proved
+              << " from the mesh, not proved within the root epsilon " << epsilon
+              << (bits == 0 ? " even at 24 bits" : " (try more --quantization-bits)") << "\n";
+  const double seconds =
+    std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   const long long bytes = static_cast<long long>(writer->GetBytesWritten());
   if (f.json)
     std::printf("{\n  \"mesh\": %s,\n  \"output\": %s,\n  \"bytes\": %lld,\n"
                 "  \"originalFaces\": %d,\n  \"storedFaces\": %d,\n  \"rootEpsilon\": %.9g,\n"
                 "  \"quantizationBits\": %d,\n  \"quantizationError\": %.9g,\n"
                 "  \"foldSettingsTried\": %d,\n  \"foldOptions\": %s,\n"
+                "  \"provedBound\": %.9g,\n  \"provedWithin\": %s,\n  \"proofRetries\": %d,\n"
                 "  \"seconds\": %.3f\n}\n",
       JsonString(f.meshPath).c_str(),
       JsonString(output).c_str(),
@@ -218,6 +238,9 @@ int Compress(int argc, char* argv[])
       writer->GetQuantizationError(),
       tried,
       JsonString(chosen).c_str(),
+      proved,
+      within ? "true" : "false",
+      proofRetries,
       seconds);
   else
   {
@@ -235,6 +258,11 @@ int Compress(int argc, char* argv[])
     else if (!chosen.empty())
       std::printf(
         "fold settings:           compress's %s on top of the options given\n", chosen.c_str());
+    std::printf("proved bound:            %.6g (decompressed vs mesh; %s; %d more encoding%s)\n",
+      proved,
+      within ? "within the root epsilon" : "NOT within the root epsilon",
+      proofRetries,
+      proofRetries == 1 ? "" : "s");
     std::printf("time:                    %.3f s\n", seconds);
     std::printf("wrote:                   %s (%lld bytes)\n", output.c_str(), bytes);
   }

@@ -1,10 +1,12 @@
 #include "vtkFoldingTreeCompactWriter.h"
 
 #include "Core/CompactTreeFormat.h"
+#include "Core/CompactTreeProof.h"
 #include "vtkFoldingTreeIO.h"
 
 #include "vtkFoldingArrays.h"
 
+#include "vtkCellArray.h"
 #include "vtkCellData.h"
 #include "vtkDataArray.h"
 #include "vtkErrorCode.h"
@@ -68,15 +70,54 @@ std::vector<foldingmeshes::CompactArray> UserArrays(const foldingmeshes::Folding
 }
 }
 
-vtkFoldingTreeCompactWriter::vtkFoldingTreeCompactWriter() = default;
+namespace
+{
+/// The most bits the compact format codes, and the bits added per encoding not proved.
+constexpr int MaximumBits = 24;
+constexpr int ProofBitStep = 2;
+/// The proof's tolerance, a share of the diagonal (the builder's and roundtrip's).
+constexpr double ProofToleranceOfDiagonal = 1e-7;
+
+/// The original's triangles (polygons fanned); false when it has none.
+bool OriginalTriangles(vtkPolyData* mesh, foldingmeshes::TriangleMesh& out)
+{
+  if (!mesh || !mesh->GetPolys() || mesh->GetNumberOfPolys() == 0)
+    return false;
+  for (vtkIdType i = 0; i < mesh->GetNumberOfPoints(); ++i)
+  {
+    double x[3];
+    mesh->GetPoint(i, x);
+    out.points.emplace_back(x[0], x[1], x[2]);
+  }
+  vtkIdType n = 0;
+  const vtkIdType* ids = nullptr;
+  vtkCellArray* polys = mesh->GetPolys();
+  for (polys->InitTraversal(); polys->GetNextCell(n, ids);)
+    for (vtkIdType k = 1; k + 1 < n; ++k)
+      out.triangles.push_back(
+        { static_cast<int>(ids[0]), static_cast<int>(ids[k]), static_cast<int>(ids[k + 1]) });
+  return !out.triangles.empty();
+}
+}
+
+vtkFoldingTreeCompactWriter::vtkFoldingTreeCompactWriter()
+{
+  this->SetNumberOfInputPorts(2);
+}
 
 vtkFoldingTreeCompactWriter::~vtkFoldingTreeCompactWriter()
 {
   this->SetFileName(nullptr);
 }
 
-int vtkFoldingTreeCompactWriter::FillInputPortInformation(int, vtkInformation* info)
+int vtkFoldingTreeCompactWriter::FillInputPortInformation(int port, vtkInformation* info)
 {
+  if (port == 1) // the original mesh (SetOriginalData)
+  {
+    info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkPolyData");
+    info->Set(vtkAlgorithm::INPUT_IS_OPTIONAL(), 1);
+    return 1;
+  }
   info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkMultiBlockDataSet");
   return 1;
 }
@@ -86,6 +127,8 @@ void vtkFoldingTreeCompactWriter::WriteData()
   this->BytesWritten = 0;
   this->QuantizationBitsUsed = 0;
   this->QuantizationError = 0.0;
+  this->ProvedBound = -1.0;
+  this->ProofRetries = 0;
   this->OutputString.clear();
   vtkMultiBlockDataSet* input = vtkMultiBlockDataSet::SafeDownCast(this->GetInputDataObject(0, 0));
   if (!this->WriteToOutputString && (!this->FileName || !*this->FileName))
@@ -116,6 +159,38 @@ void vtkFoldingTreeCompactWriter::WriteData()
     this->SetErrorCode(vtkErrorCode::UnknownError);
     return;
   }
+  // The file proved against the original, with more bits while it is not within epsilon.
+  if (this->GetNumberOfInputConnections(1) > 0)
+  {
+    foldingmeshes::TriangleMesh original;
+    if (!OriginalTriangles(vtkPolyData::SafeDownCast(this->GetInputDataObject(1, 0)), original))
+    {
+      vtkErrorMacro("The original mesh has no triangles to prove the file against.");
+      this->SetErrorCode(vtkErrorCode::UnknownError);
+      return;
+    }
+    const double tolerance = ProofToleranceOfDiagonal * tree.diagonal;
+    for (;;)
+    {
+      this->ProvedBound =
+        foldingmeshes::ProvedCompactFileBound(bytes, original, tolerance, tree.rootEpsilon);
+      if (this->ProvedBound <= tree.rootEpsilon + tolerance || this->QuantizationBits != 0 ||
+        stats.quantizationBits >= MaximumBits)
+        break;
+      options.quantizationBits = std::min(MaximumBits, stats.quantizationBits + ProofBitStep);
+      if (!foldingmeshes::EncodeCompactTree(tree, options, bytes, &stats, error, &arrays))
+      {
+        vtkErrorMacro("Cannot encode the tree: " << error << ".");
+        this->SetErrorCode(vtkErrorCode::UnknownError);
+        return;
+      }
+      ++this->ProofRetries;
+    }
+    if (this->ProvedBound > tree.rootEpsilon + tolerance)
+      vtkWarningMacro("The file decompresses " << this->ProvedBound << " from the original, "
+                                               << "not proved within the root epsilon "
+                                               << tree.rootEpsilon << ".");
+  }
   if (this->WriteToOutputString)
     this->OutputString = bytes;
   else
@@ -144,4 +219,6 @@ void vtkFoldingTreeCompactWriter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "BytesWritten: " << this->BytesWritten << "\n";
   os << indent << "QuantizationBitsUsed: " << this->QuantizationBitsUsed << "\n";
   os << indent << "QuantizationError: " << this->QuantizationError << "\n";
+  os << indent << "ProvedBound: " << this->ProvedBound << "\n";
+  os << indent << "ProofRetries: " << this->ProofRetries << "\n";
 }

@@ -5,7 +5,10 @@ A sphere folded by foldingmeshes.vtkFoldingTreeBuilder is written with
 vtkFoldingTreeCompactWriter (smaller than the .vtm of the same tree, the bits and quantisation
 error reported), read back with vtkFoldingTreeCompactReader (QuantizationError in the "Tree"
 block) and unfolded: the same number of stored triangles, the unfolded mesh within the root
-epsilon of the sphere (vtkFoldingTreeUnfolder's proved HausdorffToOriginalBound). User arrays
+epsilon of the sphere (vtkFoldingTreeUnfolder's proved HausdorffToOriginalBound). Given the
+sphere (SetOriginalData) the writer proves its file within the root epsilon with no bits added;
+given the sphere moved by three epsilons it raises the bits to 24 and reports the bound it
+could not prove; without one it proves nothing. User arrays
 come back (exactly in the leaves) only with StoreUserArrays. A file that is not a .fmz gives an
 error and an empty output.
 
@@ -22,6 +25,8 @@ try:
     from vtkmodules.vtkFiltersCore import vtkGenerateIds
 except ImportError:  # VTK < 9.3
     from vtkmodules.vtkFiltersCore import vtkIdFilter as vtkGenerateIds
+from vtkmodules.vtkCommonTransforms import vtkTransform
+from vtkmodules.vtkFiltersGeneral import vtkTransformPolyDataFilter
 from vtkmodules.vtkIOXML import vtkXMLMultiBlockDataWriter
 
 from foldingmeshes import (vtkExpatSafeXMLMultiBlockDataReader, vtkFoldingTreeBuilder, vtkFoldingTreeCompactReader,
@@ -73,6 +78,42 @@ def main(temp_dir):
     check(8 <= writer.GetQuantizationBitsUsed() <= 24 and writer.GetQuantizationError() > 0,
           "automatic quantisation: %d bits, error %g" % (writer.GetQuantizationBitsUsed(),
                                                           writer.GetQuantizationError()))
+    check(writer.GetProvedBound() == -1 and writer.GetProofRetries() == 0,
+          "no original mesh: the file is not proved (ProvedBound %g)" % writer.GetProvedBound())
+
+    # The proof against the mesh folded (SetOriginalData): the file decompressed and proved
+    # within the root epsilon, no bits added; against the sphere moved by three epsilons it
+    # cannot be: two more bits per encoding up to 24, a file still written, a warning.
+    root_epsilon = field(builder.GetOutputDataObject(0).GetBlock(1), "RootEpsilon")
+    proved = vtkFoldingTreeCompactWriter()
+    proved.SetInputConnection(builder.GetOutputPort(0))
+    proved.SetOriginalConnection(sphere.GetOutputPort())
+    proved.WriteToOutputStringOn()
+    proved.Write()
+    check(0 <= proved.GetProvedBound() <= root_epsilon and proved.GetProofRetries() == 0 and
+          proved.GetOutputString() == open(fmz, "rb").read(),
+          "proved against the sphere: %g (epsilon %g), the same bytes, %d encodings added" %
+          (proved.GetProvedBound(), root_epsilon, proved.GetProofRetries()))
+    shift = vtkTransform()
+    shift.Translate(3.0 * root_epsilon, 0.0, 0.0)
+    moved = vtkTransformPolyDataFilter()
+    moved.SetInputConnection(sphere.GetOutputPort())
+    moved.SetTransform(shift)
+    wrong = vtkFoldingTreeCompactWriter()
+    wrong.SetInputConnection(builder.GetOutputPort(0))
+    wrong.SetOriginalConnection(moved.GetOutputPort())
+    wrong.WriteToOutputStringOn()
+    warnings = []
+    wrong.AddObserver("WarningEvent", lambda caller, event: warnings.append(event))
+    wrong.Write()
+    first_bits = writer.GetQuantizationBitsUsed()
+    check(wrong.GetProvedBound() > root_epsilon and wrong.GetQuantizationBitsUsed() == 24 and
+          wrong.GetProofRetries() == (24 - first_bits + 1) // 2 and wrong.GetBytesWritten() > 0
+          and len(warnings) == 1,
+          "not proved against a moved sphere: %g, %d bits after %d encodings added (from %d), "
+          "%d warning" % (wrong.GetProvedBound(), wrong.GetQuantizationBitsUsed(),
+                          wrong.GetProofRetries(), first_bits, len(warnings)))
+
     vtm = os.path.join(temp_dir, "TestCompactTreePython.vtm")
     vtm_writer = vtkXMLMultiBlockDataWriter()
     vtm_writer.SetInputConnection(builder.GetOutputPort(0))
