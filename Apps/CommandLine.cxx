@@ -152,7 +152,8 @@ a warning where even 24 bits do not prove it).
   --quantization-bits N    position bits per coordinate, 6..24, or auto (default): the fewest
                            (at least 8) whose error is at most half of the smallest error
                            budget of a stored point (and, with rotation nodes, at most their
-                           seams' stitch tolerance), raised until the file is proved
+                           seams' stitch tolerance), raised by two while the file is not
+                           proved within the root epsilon (up to 24; given bits: no more)
   --keep-arrays            also store the mesh's point and cell arrays (lossless; a larger
                            file: the geometry is then coded in the leaves' order)
   --search                 also fold with up to six other settings (the options given alone,

@@ -10,6 +10,7 @@
 #include <vtkNew.h>
 
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
@@ -214,10 +215,11 @@ int Compress(int argc, char* argv[])
   const int proofRetries = writer->GetProofRetries();
   const double proved = writer->GetProvedBound();
   const bool within = proved >= 0.0 && proved <= epsilon + 1e-7 * diagonal;
-  if (!within)
-    std::cerr << "foldingmeshes: warning: " << output << " decompresses " << proved
-              << " from the mesh, not proved within the root epsilon " << epsilon
-              << (bits == 0 ? " even at 24 bits" : " (try more --quantization-bits)") << "\n";
+  // JSON: null where the file could not be decompressed (an infinite bound).
+  char provedJson[32] = "null";
+  if (std::isfinite(proved))
+    std::snprintf(provedJson, sizeof(provedJson), "%.9g", proved);
+  // (Not within: the writer warns; the line below says it too.)
   const double seconds =
     std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   const long long bytes = static_cast<long long>(writer->GetBytesWritten());
@@ -226,7 +228,7 @@ int Compress(int argc, char* argv[])
                 "  \"originalFaces\": %d,\n  \"storedFaces\": %d,\n  \"rootEpsilon\": %.9g,\n"
                 "  \"quantizationBits\": %d,\n  \"quantizationError\": %.9g,\n"
                 "  \"foldSettingsTried\": %d,\n  \"foldOptions\": %s,\n"
-                "  \"provedBound\": %.9g,\n  \"provedWithin\": %s,\n  \"proofRetries\": %d,\n"
+                "  \"provedBound\": %s,\n  \"provedWithin\": %s,\n  \"proofRetries\": %d,\n"
                 "  \"seconds\": %.3f\n}\n",
       JsonString(f.meshPath).c_str(),
       JsonString(output).c_str(),
@@ -238,7 +240,7 @@ int Compress(int argc, char* argv[])
       writer->GetQuantizationError(),
       tried,
       JsonString(chosen).c_str(),
-      proved,
+      provedJson,
       within ? "true" : "false",
       proofRetries,
       seconds);

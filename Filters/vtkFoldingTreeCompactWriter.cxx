@@ -3,10 +3,10 @@
 #include "Core/CompactTreeFormat.h"
 #include "Core/CompactTreeProof.h"
 #include "vtkFoldingTreeIO.h"
+#include "vtkTriangleMeshAdapter.h"
 
 #include "vtkFoldingArrays.h"
 
-#include "vtkCellArray.h"
 #include "vtkCellData.h"
 #include "vtkDataArray.h"
 #include "vtkErrorCode.h"
@@ -77,27 +77,6 @@ constexpr int MaximumBits = 24;
 constexpr int ProofBitStep = 2;
 /// The proof's tolerance, a share of the diagonal (the builder's and roundtrip's).
 constexpr double ProofToleranceOfDiagonal = 1e-7;
-
-/// The original's triangles (polygons fanned); false when it has none.
-bool OriginalTriangles(vtkPolyData* mesh, foldingmeshes::TriangleMesh& out)
-{
-  if (!mesh || !mesh->GetPolys() || mesh->GetNumberOfPolys() == 0)
-    return false;
-  for (vtkIdType i = 0; i < mesh->GetNumberOfPoints(); ++i)
-  {
-    double x[3];
-    mesh->GetPoint(i, x);
-    out.points.emplace_back(x[0], x[1], x[2]);
-  }
-  vtkIdType n = 0;
-  const vtkIdType* ids = nullptr;
-  vtkCellArray* polys = mesh->GetPolys();
-  for (polys->InitTraversal(); polys->GetNextCell(n, ids);)
-    for (vtkIdType k = 1; k + 1 < n; ++k)
-      out.triangles.push_back(
-        { static_cast<int>(ids[0]), static_cast<int>(ids[k]), static_cast<int>(ids[k + 1]) });
-  return !out.triangles.empty();
-}
 }
 
 vtkFoldingTreeCompactWriter::vtkFoldingTreeCompactWriter()
@@ -162,10 +141,20 @@ void vtkFoldingTreeCompactWriter::WriteData()
   // The file proved against the original, with more bits while it is not within epsilon.
   if (this->GetNumberOfInputConnections(1) > 0)
   {
+    // The original read as the builder reads its input (triangulated, checked).
     foldingmeshes::TriangleMesh original;
-    if (!OriginalTriangles(vtkPolyData::SafeDownCast(this->GetInputDataObject(1, 0)), original))
+    std::vector<foldingmeshes::Vec3> normals;
+    vtkIdType droppedVerts = 0, droppedLines = 0;
+    std::string why;
+    if (!foldingmeshes::SurfaceInput(vtkPolyData::SafeDownCast(this->GetInputDataObject(1, 0)),
+          "the file cannot be proved against it",
+          original,
+          normals,
+          droppedVerts,
+          droppedLines,
+          why))
     {
-      vtkErrorMacro("The original mesh has no triangles to prove the file against.");
+      vtkErrorMacro("The original (input port 1): " << why);
       this->SetErrorCode(vtkErrorCode::UnknownError);
       return;
     }
@@ -186,7 +175,7 @@ void vtkFoldingTreeCompactWriter::WriteData()
       }
       ++this->ProofRetries;
     }
-    if (this->ProvedBound > tree.rootEpsilon + tolerance)
+    if (!(this->ProvedBound <= tree.rootEpsilon + tolerance)) // (NaN or infinite too)
       vtkWarningMacro("The file decompresses " << this->ProvedBound << " from the original, "
                                                << "not proved within the root epsilon "
                                                << tree.rootEpsilon << ".");

@@ -7,9 +7,11 @@
  * triangles (coded with Draco), the per-point tear / fold-line flags, projected and input-border
  * flags and error budgets, and the mirrored-flag records. Positions are quantised on a grid of
  * QuantizationBits bits over the stored points' bounding box; the quantisation error is
- * subtracted from every point's error budget, so unfolding the file stays within the tree's
- * root epsilon (the proved bound) with quantisation included. The layout is documented in
- * Core/CompactTreeFormat.h. Read it with vtkFoldingTreeCompactReader.
+ * subtracted from every point's error budget. That does not by itself keep the file's unfold
+ * within the root epsilon (some unfolder steps do not answer to the budgets when positions
+ * move); given the mesh folded (SetOriginalData) the writer proves it, with more bits where
+ * needed. The layout is documented in Core/CompactTreeFormat.h. Read it with
+ * vtkFoldingTreeCompactReader.
  *
  * What the user gives up against the .vtm: user point and cell arrays unless StoreUserArrays is
  * on, the input ids of stored points and faces (the unfolded mesh's OriginalPointId /
@@ -92,9 +94,10 @@ public:
   ///@{
   /**
    * Results of the last Write(): file size, bits used, largest quantisation move (a length),
-   * the proved distance of the decompressed file to the original (a length, decided against
-   * the root epsilon: within it, at most epsilon but not the tightest bound; -1: no original)
-   * and the encodings added to prove it.
+   * the proved distance of the decompressed file (unfolded with the default options) to the
+   * original (a length, decided against the root epsilon: proved within it when at most
+   * epsilon + 1e-7 of the diagonal, not the tightest bound; a bound not converged counts as not
+   * within; infinite: the file did not unfold; -1: no original) and the encodings added.
    */
   vtkGetMacro(BytesWritten, vtkIdType);
   vtkGetMacro(QuantizationBitsUsed, int);

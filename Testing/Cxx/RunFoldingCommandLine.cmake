@@ -106,6 +106,17 @@ string(JSON fmzBytes ERROR_VARIABLE jsonError2 GET "${cout}" bytes)
 if (jsonError OR jsonError2 OR NOT fmz STREQUAL "${WORK_DIR}/fmz/${stem}.fmz" OR NOT EXISTS "${fmz}")
   message(FATAL_ERROR "compress JSON: output '${fmz}' bytes '${fmzBytes}' ${jsonError} ${jsonError2}")
 endif ()
+# compress proves its file against the mesh (vtkFoldingTreeCompactWriter::SetOriginalData):
+# within the root epsilon (+1e-7 of the diagonal, which provedWithin allows).
+string(JSON provedWithin ERROR_VARIABLE jsonError GET "${cout}" provedWithin)
+string(JSON provedBound ERROR_VARIABLE jsonError2 GET "${cout}" provedBound)
+string(JSON proofRetries ERROR_VARIABLE jsonError3 GET "${cout}" proofRetries)
+string(JSON compressEpsilon ERROR_VARIABLE jsonError4 GET "${cout}" rootEpsilon)
+if (jsonError OR jsonError2 OR jsonError3 OR jsonError4 OR NOT provedWithin STREQUAL "ON"
+    OR provedBound LESS 0 OR proofRetries LESS 0)
+  message(FATAL_ERROR "compress's proof: within '${provedWithin}', bound '${provedBound}' "
+    "(epsilon ${compressEpsilon}), retries '${proofRetries}'")
+endif ()
 file(SIZE "${fmz}" fmzSize)
 file(GLOB_RECURSE treeFiles "${WORK_DIR}/${stem}_tree/*" "${WORK_DIR}/${stem}_tree.vtm")
 set(treeSize 0)
