@@ -2,6 +2,7 @@
 
 #include "Core/CompactTreeFormat.h"
 #include "Core/CompactTreeProof.h"
+#include "Core/FoldingTreeVerification.h"
 #include "vtkFoldingTreeIO.h"
 #include "vtkTriangleMeshAdapter.h"
 
@@ -108,6 +109,7 @@ void vtkFoldingTreeCompactWriter::WriteData()
   this->QuantizationError = 0.0;
   this->ProvedBound = -1.0;
   this->ProofRetries = 0;
+  this->OpenEdgesBack = -1;
   this->OutputString.clear();
   vtkMultiBlockDataSet* input = vtkMultiBlockDataSet::SafeDownCast(this->GetInputDataObject(0, 0));
   if (!this->WriteToOutputString && (!this->FileName || !*this->FileName))
@@ -159,12 +161,17 @@ void vtkFoldingTreeCompactWriter::WriteData()
       return;
     }
     const double tolerance = ProofToleranceOfDiagonal * tree.diagonal;
+    // A closed original comes back closed (as the builder's proof of its tree asks).
+    const bool closed = foldingmeshes::WeldedOpenEdges(original) == 0;
+    bool proved = false;
     for (;;)
     {
-      this->ProvedBound =
-        foldingmeshes::ProvedCompactFileBound(bytes, original, tolerance, tree.rootEpsilon);
-      if (this->ProvedBound <= tree.rootEpsilon + tolerance || this->QuantizationBits != 0 ||
-        stats.quantizationBits >= MaximumBits)
+      const foldingmeshes::CompactFileProof proof =
+        foldingmeshes::ProveCompactFile(bytes, original, tolerance, tree.rootEpsilon);
+      this->ProvedBound = proof.bound;
+      this->OpenEdgesBack = proof.openEdges;
+      proved = proof.bound <= tree.rootEpsilon + tolerance && (!closed || proof.openEdges == 0);
+      if (proved || this->QuantizationBits != 0 || stats.quantizationBits >= MaximumBits)
         break;
       options.quantizationBits = std::min(MaximumBits, stats.quantizationBits + ProofBitStep);
       if (!foldingmeshes::EncodeCompactTree(tree, options, bytes, &stats, error, &arrays))
@@ -175,10 +182,11 @@ void vtkFoldingTreeCompactWriter::WriteData()
       }
       ++this->ProofRetries;
     }
-    if (!(this->ProvedBound <= tree.rootEpsilon + tolerance)) // (NaN or infinite too)
-      vtkWarningMacro("The file decompresses " << this->ProvedBound << " from the original, "
-                                               << "not proved within the root epsilon "
-                                               << tree.rootEpsilon << ".");
+    if (!proved) // (a NaN or infinite bound too)
+      vtkWarningMacro("The file decompresses "
+        << this->ProvedBound << " from the original" << (closed ? ", which is closed, with " : " (")
+        << this->OpenEdgesBack << " open edges" << (closed ? "" : ")")
+        << ": not proved within the root epsilon " << tree.rootEpsilon << ".");
   }
   if (this->WriteToOutputString)
     this->OutputString = bytes;
@@ -210,4 +218,5 @@ void vtkFoldingTreeCompactWriter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "QuantizationError: " << this->QuantizationError << "\n";
   os << indent << "ProvedBound: " << this->ProvedBound << "\n";
   os << indent << "ProofRetries: " << this->ProofRetries << "\n";
+  os << indent << "OpenEdgesBack: " << this->OpenEdgesBack << "\n";
 }

@@ -81,8 +81,9 @@ public:
   /**
    * The mesh the tree was folded from (optional, input port 1). With it the file is
    * decompressed (decoded, unfolded with the default options) and its distance to this mesh
-   * proved over every point of both surfaces (ProvedBound); with automatic bits, while it is
-   * not within the root epsilon the tree is written again with two more bits, up to 24
+   * proved over every point of both surfaces (ProvedBound), and a closed original must come
+   * back closed (OpenEdgesBack); with automatic bits, while either fails the tree is written
+   * again with two more bits, up to 24
    * (ProofRetries): a compact file's quantisation can move the unfolded surface farther than
    * the error budgets account for (the moved bearing at 8 bits: 1.02 epsilon;
    * docs/limitations.md). Without it the file is not proved (ProvedBound -1).
@@ -97,13 +98,16 @@ public:
    * the proved distance of the decompressed file (unfolded with the default options) to the
    * original (a length, decided against the root epsilon: proved within it when at most
    * epsilon + 1e-7 of the diagonal, not the tightest bound; a bound not converged counts as not
-   * within; infinite: the file did not unfold; -1: no original) and the encodings added.
+   * within; infinite: the file did not unfold; -1: no original), the encodings added, and the
+   * open edges of the file's unfold (points at identical positions counted as one; -1: not
+   * proved) - a closed original must come back with none to be proved.
    */
   vtkGetMacro(BytesWritten, vtkIdType);
   vtkGetMacro(QuantizationBitsUsed, int);
   vtkGetMacro(QuantizationError, double);
   vtkGetMacro(ProvedBound, double);
   vtkGetMacro(ProofRetries, int);
+  vtkGetMacro(OpenEdgesBack, int);
   ///@}
 
 protected:
@@ -123,6 +127,7 @@ protected:
   double QuantizationError = 0.0;
   double ProvedBound = -1.0;
   int ProofRetries = 0;
+  int OpenEdgesBack = -1;
 
 private:
   vtkFoldingTreeCompactWriter(const vtkFoldingTreeCompactWriter&) = delete;

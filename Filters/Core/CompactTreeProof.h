@@ -14,13 +14,23 @@
 
 namespace foldingmeshes
 {
+/// What ProveCompactFile found.
+struct CompactFileProof
+{
+  /// The proved symmetric Hausdorff bound between the file's unfold and the input, decided
+  /// against the floor; infinite when the file does not decode or unfold.
+  double bound = 0.0;
+  /// Edges of the file's unfold used by one face (WeldedOpenEdges); -1 when it did not unfold.
+  int openEdges = -1;
+};
+
 /**
  * The file `bytes` decoded (DecodeCompactTree), unfolded with the default UnfoldOptions and
  * bounded against `input` (SymmetricHausdorffBounds, to `tolerance`, decided against `floor`:
- * the upper bound is at most floor + tolerance when the distance is proved within floor).
- * Infinity when the file does not decode or unfold.
+ * the upper bound is at most floor + tolerance when the distance is proved within floor), and
+ * its open edges counted (a closed input should come back closed, as the builder's proof asks).
  */
-double ProvedCompactFileBound(const std::string& bytes,
+CompactFileProof ProveCompactFile(const std::string& bytes,
   const TriangleMesh& input,
   double tolerance,
   double floor);

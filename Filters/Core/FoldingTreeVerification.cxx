@@ -70,6 +70,13 @@ std::vector<Vec3> OpenEdgeProbes(const TriangleMesh& mesh, int& count)
 }
 }
 
+int WeldedOpenEdges(const TriangleMesh& mesh)
+{
+  int count = 0;
+  OpenEdgeProbes(mesh, count);
+  return count;
+}
+
 UnfoldedBoundCheck VerifyUnfoldedBound(const TriangleMesh& input,
   const FoldingTree& tree,
   const ClosestFaceQueryFactory& queries,

@@ -42,6 +42,10 @@ struct UnfoldedBoundCheck
  * (optional, used only without `queries`): distances to `input` through the core's FaceTree
  * already built (the builder's), instead of a new one.
  */
+/// Edges of `mesh` used by one face, points at identical positions counted as one (the
+/// unfolder's copies meet at shared positions).
+int WeldedOpenEdges(const TriangleMesh& mesh);
+
 UnfoldedBoundCheck VerifyUnfoldedBound(const TriangleMesh& input,
   const FoldingTree& tree,
   const ClosestFaceQueryFactory& queries = nullptr,
