@@ -146,7 +146,8 @@ its size, the stored faces and the quantisation. Unless given, compress folds wi
 a tree that gets rotation nodes so is compared with the fold without them and the smaller
 file kept (JSON "foldOptions": what it added to the options given, "" none; the other fold
 options keep the fold command's defaults). The file kept is decompressed and its distance to
-MESH proved ("proved bound", JSON "provedBound", "provedWithin"); with the automatic bits it
+MESH proved, and a closed MESH to come back closed ("proved bound", JSON "provedBound",
+"provedWithin"); with the automatic bits it
 is written again with two more bits while not within the root epsilon (JSON "proofRetries";
 a warning where even 24 bits do not prove it).
   --quantization-bits N    position bits per coordinate, 6..24, or auto (default): the fewest

@@ -110,6 +110,7 @@ void vtkFoldingTreeCompactWriter::WriteData()
   this->ProvedBound = -1.0;
   this->ProofRetries = 0;
   this->OpenEdgesBack = -1;
+  this->Proved = false;
   this->OutputString.clear();
   vtkMultiBlockDataSet* input = vtkMultiBlockDataSet::SafeDownCast(this->GetInputDataObject(0, 0));
   if (!this->WriteToOutputString && (!this->FileName || !*this->FileName))
@@ -182,6 +183,7 @@ void vtkFoldingTreeCompactWriter::WriteData()
       }
       ++this->ProofRetries;
     }
+    this->Proved = proved;
     if (!proved) // (a NaN or infinite bound too)
       vtkWarningMacro("The file decompresses "
         << this->ProvedBound << " from the original" << (closed ? ", which is closed, with " : " (")
@@ -219,4 +221,5 @@ void vtkFoldingTreeCompactWriter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "ProvedBound: " << this->ProvedBound << "\n";
   os << indent << "ProofRetries: " << this->ProofRetries << "\n";
   os << indent << "OpenEdgesBack: " << this->OpenEdgesBack << "\n";
+  os << indent << "Proved: " << this->Proved << "\n";
 }

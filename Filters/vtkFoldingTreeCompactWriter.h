@@ -108,6 +108,8 @@ public:
   vtkGetMacro(ProvedBound, double);
   vtkGetMacro(ProofRetries, int);
   vtkGetMacro(OpenEdgesBack, int);
+  /** Whether the last Write() proved its file (within epsilon and, the original closed, closed). */
+  vtkGetMacro(Proved, bool);
   ///@}
 
 protected:
@@ -128,6 +130,7 @@ protected:
   double ProvedBound = -1.0;
   int ProofRetries = 0;
   int OpenEdgesBack = -1;
+  bool Proved = false;
 
 private:
   vtkFoldingTreeCompactWriter(const vtkFoldingTreeCompactWriter&) = delete;
