@@ -73,11 +73,8 @@ std::vector<foldingmeshes::CompactArray> UserArrays(const foldingmeshes::Folding
 
 namespace
 {
-/// The most bits the compact format codes, and the bits added per encoding not proved.
-constexpr int MaximumBits = 24;
+/// The bits added per encoding not proved.
 constexpr int ProofBitStep = 2;
-/// The proof's tolerance, a share of the diagonal (the builder's and roundtrip's).
-constexpr double ProofToleranceOfDiagonal = 1e-7;
 }
 
 vtkFoldingTreeCompactWriter::vtkFoldingTreeCompactWriter()
@@ -161,7 +158,7 @@ void vtkFoldingTreeCompactWriter::WriteData()
       this->SetErrorCode(vtkErrorCode::UnknownError);
       return;
     }
-    const double tolerance = ProofToleranceOfDiagonal * tree.diagonal;
+    const double tolerance = foldingmeshes::ProofToleranceOfDiagonal * tree.diagonal;
     // A closed original comes back closed (as the builder's proof of its tree asks).
     const bool closed = foldingmeshes::WeldedOpenEdges(original) == 0;
     bool proved = false;
@@ -172,9 +169,11 @@ void vtkFoldingTreeCompactWriter::WriteData()
       this->ProvedBound = proof.bound;
       this->OpenEdgesBack = proof.openEdges;
       proved = proof.bound <= tree.rootEpsilon + tolerance && (!closed || proof.openEdges == 0);
-      if (proved || this->QuantizationBits != 0 || stats.quantizationBits >= MaximumBits)
+      if (proved || this->QuantizationBits != 0 ||
+        stats.quantizationBits >= foldingmeshes::MaximumQuantizationBits)
         break;
-      options.quantizationBits = std::min(MaximumBits, stats.quantizationBits + ProofBitStep);
+      options.quantizationBits =
+        std::min(foldingmeshes::MaximumQuantizationBits, stats.quantizationBits + ProofBitStep);
       if (!foldingmeshes::EncodeCompactTree(tree, options, bytes, &stats, error, &arrays))
       {
         vtkErrorMacro("Cannot encode the tree: " << error << ".");

@@ -49,7 +49,7 @@ int ChooseBits(const FoldingTree& tree, LeafGeometryCoding coding, int requested
   }
   const double target =
     std::min(std::isfinite(smallest) ? 0.5 * smallest : 0.01 * tree.rootEpsilon, seams);
-  for (coding.bits = 8; coding.bits < 24; ++coding.bits)
+  for (coding.bits = 8; coding.bits < MaximumQuantizationBits; ++coding.bits)
     if (coding.QuantizationError() <= target)
       break;
   return coding.bits;
@@ -258,7 +258,8 @@ bool EncodeCompactTree(const FoldingTree& tree,
     return false;
   }
   if (options.quantizationBits != 0 &&
-    (options.quantizationBits < 6 || options.quantizationBits > 24))
+    (options.quantizationBits < MinimumQuantizationBits ||
+      options.quantizationBits > MaximumQuantizationBits))
   {
     error = "quantization bits must be 0 (automatic) or 6..24";
     return false;

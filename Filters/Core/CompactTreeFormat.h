@@ -47,6 +47,9 @@
 namespace foldingmeshes
 {
 constexpr int CompactTreeFormatVersion = 1;
+/// The position quantisation bits a file may use (CompactTreeOptions::quantizationBits).
+constexpr int MinimumQuantizationBits = 6;
+constexpr int MaximumQuantizationBits = 24;
 
 struct CompactTreeOptions
 {

@@ -98,7 +98,7 @@ UnfoldedBoundCheck VerifyUnfoldedBound(const TriangleMesh& input,
   out.points = unfolded.points;
   out.triangles = unfolded.triangles;
   const double epsilon = tree.rootEpsilon;
-  const double tolerance = 1e-7 * tree.diagonal;
+  const double tolerance = ProofToleranceOfDiagonal * tree.diagonal;
   std::unique_ptr<SurfaceDistanceQuery> ownToInput;
   if (queries || !sharedToInput)
     ownToInput = std::make_unique<SurfaceDistanceQuery>(input, queries);

@@ -42,6 +42,10 @@ struct UnfoldedBoundCheck
  * (optional, used only without `queries`): distances to `input` through the core's FaceTree
  * already built (the builder's), instead of a new one.
  */
+/// The proofs decide epsilon to this share of the diagonal (VerifyUnfoldedBound, and the
+/// compact writer's proof of its file).
+constexpr double ProofToleranceOfDiagonal = 1e-7;
+
 /// Edges of `mesh` used by one face, points at identical positions counted as one (the
 /// unfolder's copies meet at shared positions).
 int WeldedOpenEdges(const TriangleMesh& mesh);
