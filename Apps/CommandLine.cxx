@@ -79,10 +79,11 @@ original and stored faces, compression, tree height, folds, leaves and time.
   --separate-parts         as for detect: regions and components never span separate parts
   --rotation               rotation nodes: where no fold lies above, keep one sector of a
                            rotational symmetry of order k (a turn by 360/k) and fold on
-                           within it (default off; docs/builder.md, "Rotation nodes")
+                           within it, on any mesh (docs/builder.md, "Rotation nodes")
   --rotation-when-axial    --rotation only where MESH's second moments are axially symmetric
                            (two eigenvalues within 2% of the larger): no cost elsewhere
-  --no-rotation            no rotation nodes (the default; turns compress's rule off)
+                           (the default)
+  --no-rotation            no rotation nodes (also turns compress's rule off)
   --max-rotation-order N   largest order tried with --rotation (default 64, range 2..360)
   --seed N                 seed of the candidate sampling, as for detect (default 1)
   --tight-symmetry         fold only clear symmetries (RMS mirror distance <= 0.35 epsilon);

@@ -41,7 +41,14 @@ vtkSmartPointer<vtkFoldingTreeBuilder> MakeBuilder(const FoldSettings& f,
   auto builder = vtkSmartPointer<vtkFoldingTreeBuilder>::New();
   ConfigureBuilder(builder, f);
   if (variant)
+  {
+    // --search's settings fold without rotation nodes unless the variant or the user asks for
+    // them (the builder's default, WHEN_AXIAL, is compress's own fold, compared already with
+    // the same fold without them).
+    if (!f.rotationNodes && !f.rotationWhenAxial && !f.noRotation)
+      builder->SetRotationNodes(vtkFoldingTreeBuilder::ROTATION_NODES_OFF);
     ApplyFoldSearchVariant(builder, *variant);
+  }
   return builder;
 }
 
@@ -181,6 +188,7 @@ int Compress(int argc, char* argv[])
     c.builder = MakeBuilder(f, nullptr);
     withoutRotation =
       ApplyCompressFoldDefaults(c.builder, f.keep.has_value(), f.minFaces.has_value(), true);
+    c.builder->SetRotationNodes(vtkFoldingTreeBuilder::ROTATION_NODES_OFF); // not the default
     if (!tryFold(c, withoutRotation.c_str()))
       return 3;
   }

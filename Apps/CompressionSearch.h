@@ -83,8 +83,9 @@ inline std::string ApplyCompressFoldDefaults(vtkFoldingTreeBuilder* builder,
 /// the user's settings with the fold command's defaults (smaller than compress's own on 2 of
 /// the 29 shared meshes, by at most 0.4%, docs/compression.md). The others are each the smallest on
 /// at least one shared mesh (2026-12-05); `--min-faces 400` is compress's own default. The
-/// last, rotation nodes (off by default: they cost build time), since 2026-12-05, eighth
-/// session: the bearing 801 -> 660 bytes.
+/// last, rotation nodes everywhere, since 2026-12-05, eighth session: the bearing 801 -> 660
+/// bytes. All but the last fold without rotation nodes unless the user asks for them (the
+/// fold command's default before it became WHEN_AXIAL; compress's own fold has it).
 constexpr FoldSearchVariant FoldSearchVariants[] = {
   { "", false, 0, 0.0 },
   { "--keep fewer", true, 0, 0.0 },

@@ -196,9 +196,12 @@ void ConfigureBuilder(vtkFoldingTreeBuilder* builder, const FoldSettings& f)
     builder->VerifyBoundOff();
   if (f.separateParts)
     builder->ConnectNearbyPartsOff();
-  builder->SetRotationNodes(f.rotationNodes ? vtkFoldingTreeBuilder::ROTATION_NODES_ON
-      : f.rotationWhenAxial                 ? vtkFoldingTreeBuilder::ROTATION_NODES_WHEN_AXIAL
-                                            : vtkFoldingTreeBuilder::ROTATION_NODES_OFF);
+  if (f.rotationNodes)
+    builder->SetRotationNodes(vtkFoldingTreeBuilder::ROTATION_NODES_ON);
+  else if (f.rotationWhenAxial)
+    builder->SetRotationNodes(vtkFoldingTreeBuilder::ROTATION_NODES_WHEN_AXIAL);
+  else if (f.noRotation)
+    builder->SetRotationNodes(vtkFoldingTreeBuilder::ROTATION_NODES_OFF);
   if (f.maxRotationOrder)
     builder->SetMaximumRotationOrder(*f.maxRotationOrder);
 }

@@ -48,8 +48,9 @@ def main():
     parser.add_argument("--min-area-fraction", type=float, default=0.05,
                         help="leaf when a region's area is below this fraction (default 0.05)")
     parser.add_argument("--rotation", action="store_true",
-                        help="rotation nodes: keep one sector of a rotational symmetry "
-                             "(vtkFoldingTreeBuilder.RotationNodes, default off)")
+                        help="rotation nodes on any mesh: keep one sector of a rotational "
+                             "symmetry (vtkFoldingTreeBuilder.RotationNodes on; default: only "
+                             "where the mesh's second moments are axially symmetric)")
     args = parser.parse_args()
     os.makedirs(args.outdir, exist_ok=True)
     stem = os.path.join(args.outdir, os.path.splitext(os.path.basename(args.mesh))[0])
@@ -60,7 +61,8 @@ def main():
     builder.SetInputConnection(reader.GetOutputPort())
     builder.SetTolerance(args.tolerance)
     builder.SetMinimumAreaFraction(args.min_area_fraction)
-    builder.SetRotationNodes(args.rotation)
+    if args.rotation:
+        builder.RotationNodesOn()
     if not builder.GetExecutive().Update():
         print("folding failed on %s" % args.mesh, file=sys.stderr)
         return 2

@@ -206,7 +206,8 @@ struct FoldingTreeOptions
    * and the seams: FoldingTreeRotation.cxx. A tree with rotation nodes that verifyBound finds
    * beyond epsilon, or with holes where the input is closed, is rebuilt with the planes alone
    * (docs/builder.md). Off by default (docs/benchmarks.md: the 29 shared meshes' builds take
-   * 70% longer, 16.7 -> 28.5 s, and the Table 1 chair and eagle more than 1 s).
+   * 70% longer, 16.7 -> 28.5 s); rotationNodesWhenAxial, on by default, turns them on where
+   * the input's moments allow a rotational symmetry of the whole surface.
    */
   bool rotationNodes = false;
   /// With rotationNodes false: rotation nodes on for an input whose surface's second moments
@@ -214,7 +215,8 @@ struct FoldingTreeOptions
   /// rotational symmetry of order 3 or more of the whole surface implies; off for the others,
   /// at no cost. On the 29 shared meshes it turns them on for the bearing, mech and queen only
   /// (gaps 0.0000-0.0052; the next, 0.178), whose trees it makes smaller (docs/builder.md).
-  bool rotationNodesWhenAxial = false;
+  /// On by default (since 2026-12-07): it makes no tree of the 29 shared meshes larger.
+  bool rotationNodesWhenAxial = true;
   int maximumRotationOrder = DefaultMaximumRotationOrder;
 
   /// With verifyBound, the plane detection of every region is kept for the call: a region

@@ -258,7 +258,8 @@ int main(int argc, char* argv[])
     auto ownSettings = [&](vtkFoldingTreeBuilder* builder, bool rotationRule)
     {
       builder->SetInputData(mesh);
-      builder->SetRotationNodes(rotation);
+      if (rotation || !rotationRule) // else the rule's (or the fold command's) WHEN_AXIAL
+        builder->SetRotationNodes(rotation);
       std::string label;
       if (minimumFaces > 0)
       {

@@ -17,7 +17,8 @@
 //
 //   BenchmarkFoldingTable1 [--threads N] [--keep fewer] [--tree] [--no-unfold]
 //                          [--no-close-holes] [--hole-tolerance F] [--keep-projected-points]
-//                          [--keep-copy-density] [--tolerance F] [--rotation]
+//                          [--keep-copy-density] [--tolerance F]
+//                          [--rotation|--no-rotation|--rotation-when-axial]
 //                          [--compare-rotation] [--distance-locator static|facetree]
 //                          MESH_OR_FOLDER...
 //
@@ -30,8 +31,9 @@
 // --keep-copy-density: the mirrored copies keep the kept half's density (MatchDiscardedDensity
 // off);
 // --tolerance: the root epsilon as a fraction of the diagonal (the builder's Tolerance,
-// default 0.02); --rotation: the builder's RotationNodes on (issue 22); --compare-rotation:
-// under each mesh's row (rotation nodes as --rotation says), a line with the other setting's
+// default 0.02); --rotation, --no-rotation, --rotation-when-axial: the builder's RotationNodes
+// on, off, WHEN_AXIAL (issue 22; none: the builder's default, WHEN_AXIAL); --compare-rotation:
+// under each mesh's row, a line with rotation nodes on (off where the row has them on):
 // stored faces, compression, rotation nodes, build time and the builder's own proved bound
 // (VerifiedBound over the diagonal, and whether it is within the root epsilon); --distance-locator:
 // what answers the Hausdorff columns' closest-triangle queries, vtkStaticCellLocator (default,
@@ -121,27 +123,38 @@ struct Settings
   bool matchDiscardedDensity = true;
   double holeToleranceScale = -1.0; // < 0: the filter's default
   double tolerance = -1.0;          // root epsilon / diagonal; < 0: the builder's default
-  bool rotationNodes = false;
+  int rotationNodes = -1;           ///< RotationNodes; < 0: the builder's default
   bool compareRotation = false;
   foldingmeshes::DistanceLocator locator = foldingmeshes::DistanceLocator::StaticCellLocator;
 };
 
-/// The builder's options from the command line (RotationNodes as `rotation` says).
-void Configure(vtkFoldingTreeBuilder* builder, const Settings& settings, bool rotation)
+/// The builder's options from the command line (RotationNodes as `rotation` says; < 0: the
+/// builder's default).
+void Configure(vtkFoldingTreeBuilder* builder, const Settings& settings, int rotation)
 {
   if (settings.keepFewer)
     builder->SetKeepSide(vtkFoldingTreeBuilder::FEWER_FACES);
   if (settings.tolerance >= 0.0)
     builder->SetTolerance(settings.tolerance);
-  builder->SetRotationNodes(rotation);
+  if (rotation >= 0)
+    builder->SetRotationNodes(rotation);
 }
 
-/// The --compare-rotation line: the mesh folded with RotationNodes the other way.
+/// The --compare-rotation line's RotationNodes: on, or off where the row has them on.
+int OtherRotationNodes(const Settings& settings)
+{
+  return settings.rotationNodes == vtkFoldingTreeBuilder::ROTATION_NODES_ON
+    ? vtkFoldingTreeBuilder::ROTATION_NODES_OFF
+    : vtkFoldingTreeBuilder::ROTATION_NODES_ON;
+}
+
+/// The --compare-rotation line: the mesh folded with RotationNodes OtherRotationNodes.
 void CompareRotation(vtkPolyData* mesh, const Settings& settings)
 {
   vtkNew<vtkFoldingTreeBuilder> builder;
   builder->SetInputData(mesh);
-  Configure(builder, settings, !settings.rotationNodes);
+  const bool on = OtherRotationNodes(settings) == vtkFoldingTreeBuilder::ROTATION_NODES_ON;
+  Configure(builder, settings, OtherRotationNodes(settings));
   const auto t0 = Clock::now();
   builder->Update();
   const double build = std::chrono::duration<double>(Clock::now() - t0).count();
@@ -150,9 +163,7 @@ void CompareRotation(vtkPolyData* mesh, const Settings& settings)
   std::string error;
   if (!tree || !foldingmeshes::MultiBlockToFoldingTree(tree, folded, error))
   {
-    std::printf("  rotation nodes %s: folding failed %s\n",
-      settings.rotationNodes ? "off" : "on",
-      error.c_str());
+    std::printf("  rotation nodes %s: folding failed %s\n", on ? "on" : "off", error.c_str());
     return;
   }
   int rotations = 0;
@@ -160,7 +171,7 @@ void CompareRotation(vtkPolyData* mesh, const Settings& settings)
     rotations += node.kind == foldingmeshes::FoldingNodeKind::Rotation;
   std::printf("  rotation nodes %-3s %7d stored %6.1f%% %3d rotation nodes, build %7.3f s, "
               "proved %7.4f%s of the diagonal\n",
-    settings.rotationNodes ? "off" : "on",
+    on ? "on" : "off",
     folded.StoredFaces(),
     100.0 * folded.Compression(),
     rotations,
@@ -369,7 +380,11 @@ int main(int argc, char* argv[])
     else if (arg == "--keep" && i + 1 < argc)
       settings.keepFewer = std::string(argv[++i]) == "fewer";
     else if (arg == "--rotation")
-      settings.rotationNodes = true;
+      settings.rotationNodes = vtkFoldingTreeBuilder::ROTATION_NODES_ON;
+    else if (arg == "--no-rotation")
+      settings.rotationNodes = vtkFoldingTreeBuilder::ROTATION_NODES_OFF;
+    else if (arg == "--rotation-when-axial")
+      settings.rotationNodes = vtkFoldingTreeBuilder::ROTATION_NODES_WHEN_AXIAL;
     else if (arg == "--compare-rotation")
       settings.compareRotation = true;
     else if (arg == "--tree")

@@ -111,8 +111,10 @@ def main(temp_dir):
     vase = make_twisted_vase(ORDER, segments_per_lobe=8, amplitude=0.25)
     builder = vtkFoldingTreeBuilder()
     builder.SetInputData(vase)
-    check(not builder.GetRotationNodes() and builder.GetMaximumRotationOrder() == 64,
-          "defaults: RotationNodes off, MaximumRotationOrder 64")
+    check(builder.GetRotationNodes() == vtkFoldingTreeBuilder.ROTATION_NODES_WHEN_AXIAL and
+          builder.GetMaximumRotationOrder() == 64,
+          "defaults: RotationNodes WHEN_AXIAL, MaximumRotationOrder 64")
+    builder.RotationNodesOff()
     builder.Update()
     off = axis_block(builder.GetOutputDataObject(0))
     check(off is None or field(off, "FoldingNodeKind") != 3, "RotationNodes off: no rotation root")
@@ -121,7 +123,8 @@ def main(temp_dir):
           "RotationNodes off: RotationNodesTried 0")
     off_stored = builder.GetStoredFaces()
 
-    # WHEN_AXIAL: on for the vase (6-fold: its second moments are axially symmetric) ...
+    # WHEN_AXIAL (the default): on for the vase (6-fold: its second moments are axially
+    # symmetric) ...
     builder.SetRotationNodes(vtkFoldingTreeBuilder.ROTATION_NODES_WHEN_AXIAL)
     builder.Update()
     when_axial = builder.GetOutputDataObject(0)

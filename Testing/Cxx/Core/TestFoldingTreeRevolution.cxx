@@ -127,6 +127,7 @@ FoldingTree Fold(const TriangleMesh& m, bool rotationNodes = false)
   FoldingTreeOptions o;
   o.epsilon = 0.02 * coretest::Diagonal(m);
   o.rotationNodes = rotationNodes;
+  o.rotationNodesWhenAxial = false; // off: the planes alone (the default would turn them on)
   FoldingTree tree;
   std::string error;
   EXPECT(BuildFoldingTree(m, {}, o, tree, error), "BuildFoldingTree: " << error);
