@@ -572,6 +572,7 @@ bool BuildFoldingTree(const TriangleMesh& input,
     bool nearMissTree = false;
     std::vector<int> firstPins;
     int firstRound = 0;
+    double provedArea = 0.0; // `proved`'s area ratio where it was rebuilt for that, else 0
     for (int round = 0;; ++round)
     {
       const UnfoldedBoundCheck check =
@@ -590,17 +591,27 @@ bool BuildFoldingTree(const TriangleMesh& input,
         tree.verifiedBound = check.upper;
         nearMissTree = false;
       }
-      if (check.within && (check.pinOpen.empty() || closingRounds == MaximumClosingRounds))
+      const bool laidTwice = check.within && round == firstRound && again.rotationNodes &&
+        tree.NumberOfRotations() > 0 && check.areaRatio > RotationAreaRatioLimit;
+      const bool noLess = provedArea > 0.0 && check.areaRatio >= provedArea;
+      if (check.within && noLess && !laidTwice)
+      {
+        tree = std::move(*proved); // the planes lay no less surface twice
+        break;
+      }
+      if (check.within && !laidTwice &&
+        (check.pinOpen.empty() || closingRounds == MaximumClosingRounds))
         break;
       if (!check.within && proved)
       {
         tree = std::move(*proved);
         break;
       }
-      // A first tree with rotation nodes that misses (the bound, or holes where the input is
-      // closed): without the second orders it kept, if any, then the planes alone, at epsilon,
-      // no pins (their seams are the ones the unfolder closes best); should that tree miss
-      // too, the rounds below go on from it.
+      // A first tree with rotation nodes that misses (the bound, holes where the input is
+      // closed, or its area above RotationAreaRatioLimit: kept only while the rebuilds lay no
+      // less surface twice): without the second orders it kept, if any, then the planes alone,
+      // at epsilon, no pins (their seams are the ones the unfolder closes best); should that
+      // tree miss too, the rounds below go on from it.
       if (round == firstRound && again.rotationNodes && tree.NumberOfRotations() > 0)
       {
         const bool withoutSecond = keptSecondOrder && secondOrders;
@@ -609,12 +620,15 @@ bool BuildFoldingTree(const TriangleMesh& input,
         else
           again.rotationNodes = false;
         firstRound = round + 1; // the rebuilt tree is the first of the rounds below
-        if (check.within)
+        if (check.within && !(laidTwice && noLess))
+        {
           proved.reset(new FoldingTree(tree)); // should the rebuilt tree miss the bound
+          provedArea = laidTwice ? check.areaRatio : 0.0;
+        }
         if (options.trace)
-          options.trace(withoutSecond
-              ? "[verify] the tree with rotation nodes missed: rebuilt without second orders"
-              : "[verify] the tree with rotation nodes missed: rebuilt with planes alone");
+          options.trace(FormatTrace("[verify] the tree with rotation nodes missed%s: rebuilt %s",
+            laidTwice ? FormatTrace(" (area %.3f of the input's)", check.areaRatio).c_str() : "",
+            withoutSecond ? "without second orders" : "with planes alone"));
         build(again, pinned);
         tree.verificationRounds = round + 1;
         if (check.within &&
@@ -635,6 +649,7 @@ bool BuildFoldingTree(const TriangleMesh& input,
         if (added == 0)
           break; // pinned there already: the same tree again
         proved.reset(new FoldingTree(tree));
+        provedArea = 0.0;
         ++closingRounds;
         for (int f : check.pinOpen)
           pinned[f] = 1;

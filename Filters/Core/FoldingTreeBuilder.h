@@ -62,6 +62,11 @@ constexpr int MaximumClosingRounds = 2;
 /// them stored all 1188 faces instead of 200: it keeps its holes (docs/builder.md).
 constexpr double MaximumClosingShare = 0.1;
 constexpr int MaximumClosingFaces = 250;
+/// A first tree with rotation nodes whose unfolded area is above this many times the input's
+/// (surface laid twice within epsilon: a bearing moved, with the face and area stops off,
+/// 1.36) is rebuilt like one that misses the bound; the rebuilt tree is kept only where it lays
+/// less surface twice (docs/builder.md, "The bound, verified").
+constexpr double RotationAreaRatioLimit = 1.1;
 
 /// FoldingTreeOptions::rotationNodesWhenAxial: the largest gap between two eigenvalues of the
 /// surface's second moments, as a share of the larger, that still counts as axially symmetric.

@@ -68,6 +68,16 @@ std::vector<Vec3> OpenEdgeProbes(const TriangleMesh& mesh, int& count)
     probes.insert(probes.end(), { at[e.first], at[e.second], 0.5 * (at[e.first] + at[e.second]) });
   return probes;
 }
+
+/// The summed area of the mesh's triangles.
+double MeshArea(const TriangleMesh& mesh)
+{
+  double area = 0.0;
+  for (const Triangle& t : mesh.triangles)
+    area += 0.5 *
+      (mesh.points[t[1]] - mesh.points[t[0]]).cross(mesh.points[t[2]] - mesh.points[t[0]]).norm();
+  return area;
+}
 }
 
 int WeldedOpenEdges(const TriangleMesh& mesh)
@@ -111,6 +121,8 @@ UnfoldedBoundCheck VerifyUnfoldedBound(const TriangleMesh& input,
     input, toOut, tolerance, DefaultMaximumEvaluations, epsilon, &inputBeyond);
   check.upper = std::max(there.upper, back.upper);
   check.within = check.upper <= epsilon + tolerance;
+  const double inputArea = MeshArea(input);
+  check.areaRatio = inputArea > 0.0 ? MeshArea(out) / inputArea : 0.0;
   if (tree.inputBorderEdges.empty())
   {
     const std::vector<Vec3> probes = OpenEdgeProbes(out, check.openEdges);

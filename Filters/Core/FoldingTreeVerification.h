@@ -29,6 +29,9 @@ struct UnfoldedBoundCheck
   /// Input faces to pin where those edges are (nearest to their end points and midpoints,
   /// two rings around them), sorted; empty when openEdges is 0.
   std::vector<int> pinOpen;
+  /// unfold(tree)'s area over the input's (above 1: surface laid twice within epsilon, which
+  /// the bound cannot see; docs/limitations.md); 0 for an input of no area.
+  double areaRatio = 0.0;
 };
 
 /**

@@ -179,7 +179,10 @@ void Revolution()
 /// once, and the cut sectors of those orders (the second pass) are cut at the axis too: the
 /// root is a rotation node there as well (before the second pass: the planes alone). Never more
 /// faces than the planes alone, k sectors hold at most three times the input's faces, nothing
-/// open.
+/// open. A rotation tree whose unfolded area is above RotationAreaRatioLimit times the input's
+/// (surface laid twice) is rebuilt with the planes alone, which the builder keeps where they lay
+/// less twice (since 2026-12-07: the 12-segment vase's rotation tree, 210 faces, came back with
+/// 1.217 times its area; the planes' tree, 335 faces, with about its own).
 void Staggered()
 {
   for (int segments : { 40, 12, -12 })
@@ -199,12 +202,31 @@ void Staggered()
     const FoldingTree tree = FoldAndCheck(name, m);
     int first = -1;
     const int rotations = CountRotationNodes(tree, first);
-    EXPECT(rotations == 1 && first == 0,
-      name << ": " << rotations << " rotation nodes, the first at " << first);
+    const double area = coretest::SurfaceArea(m.points, m.triangles);
+    auto areaRatio = [&](const FoldingTree& t)
+    {
+      const UnfoldedMesh unfolded = coretest::Unfold(t);
+      return coretest::SurfaceArea(unfolded.points, unfolded.triangles) / area;
+    };
+    // The tree before the verification's rebuilds: a rotation tree at the root.
+    FoldingTreeOptions unverified;
+    unverified.rotationNodes = true;
+    unverified.verifyBound = false;
+    const FoldingTree firstTree = coretest::Fold(m, 0.02 * coretest::Diagonal(m), unverified);
+    int firstTreeRoot = -1;
+    EXPECT(CountRotationNodes(firstTree, firstTreeRoot) == 1 && firstTreeRoot == 0,
+      name << ": the first tree has no rotation node at its root");
+    const double firstArea = areaRatio(firstTree);
+    const double keptArea = areaRatio(tree);
+    EXPECT(rotations == 1
+        ? first == 0 && keptArea <= RotationAreaRatioLimit
+        : rotations == 0 && firstArea > RotationAreaRatioLimit && keptArea < firstArea,
+      name << ": " << rotations << " rotation nodes, the first at " << first << ", area "
+           << keptArea << " of the input's (the first tree's " << firstArea << ")");
     FoldingTreeOptions planesAlone;
     planesAlone.rotationNodesWhenAxial = false;
     const FoldingTree planes = coretest::Fold(m, 0.02 * coretest::Diagonal(m), planesAlone);
-    EXPECT(tree.StoredFaces() < planes.StoredFaces(),
+    EXPECT(rotations == 0 || tree.StoredFaces() < planes.StoredFaces(),
       name << ": " << tree.StoredFaces() << " faces stored, " << planes.StoredFaces()
            << " with planes alone");
     EXPECT(first < 0 ||
