@@ -1,6 +1,11 @@
 #include "FoldingSegmentation.h"
 
+#include "ParallelFor.h"
 #include "PointKdTree.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
 
 namespace foldingmeshes
 {
@@ -15,6 +20,78 @@ bool ValidFace(int f, int numberOfFaces)
 {
   return f >= 0 && f < numberOfFaces;
 }
+
+constexpr double Pi = 3.14159265358979323846;
+
+/**
+ * The kept centroids of a rotation node in cylindrical coordinates about its axis, for a lower
+ * bound on the distance from a point turned back to the nearest of them: they lie in an arc of
+ * angles [first, first + width] (the complement of the widest gap between them), so a point at
+ * distance r from the axis whose angle is Delta outside that arc is at least
+ * r sin(min(Delta, 90 degrees)) from every one of them (the distance across the axis alone).
+ */
+class KeptArc
+{
+public:
+  KeptArc(const RotationAxis& axis, const std::vector<Vec3>& centroids)
+    : Origin(axis.origin)
+    , Direction(axis.direction.normalized())
+  {
+    const Vec3 seed = std::abs(this->Direction.x()) < 0.9 ? Vec3::UnitX() : Vec3::UnitY();
+    this->U = (seed - seed.dot(this->Direction) * this->Direction).normalized();
+    this->V = this->Direction.cross(this->U);
+    std::vector<double> angles;
+    angles.reserve(centroids.size());
+    for (const Vec3& c : centroids)
+      angles.push_back(this->Angle(c));
+    std::sort(angles.begin(), angles.end());
+    if (angles.size() < 2)
+      return;
+    // The widest gap between neighbouring angles (the last to the first across 2 pi too).
+    double gap = angles.front() + 2.0 * Pi - angles.back();
+    size_t after = 0; // the arc starts at angles[after]
+    for (size_t i = 1; i < angles.size(); ++i)
+      if (angles[i] - angles[i - 1] > gap)
+      {
+        gap = angles[i] - angles[i - 1];
+        after = i;
+      }
+    this->First = angles[after];
+    this->Width = 2.0 * Pi - gap;
+    this->Bounded = this->Width < Pi; // else the bound is too weak to matter
+  }
+  double Angle(const Vec3& p) const
+  {
+    const Vec3 r = p - this->Origin;
+    return std::atan2(r.dot(this->V), r.dot(this->U));
+  }
+  double Radius(const Vec3& p) const
+  {
+    const Vec3 r = p - this->Origin;
+    return (r - r.dot(this->Direction) * this->Direction).norm();
+  }
+  /// A lower bound on the distance from a point at `radius` and `angle` to the kept centroids
+  /// (0 where none is known).
+  double LowerBound(double radius, double angle) const
+  {
+    if (!this->Bounded)
+      return 0.0;
+    const double twoPi = 2.0 * Pi;
+    double into = std::fmod(angle - this->First, twoPi); // angle past the arc's start
+    if (into < 0.0)
+      into += twoPi;
+    const double outside = std::min(into - this->Width, twoPi - into); // <= 0: within
+    // A margin far above the rounding of the angles and the turn (the bound only skips
+    // queries that cannot win, never one that ties).
+    const double delta = std::min(outside, 0.5 * Pi) - 1e-9;
+    return delta > 0.0 ? radius * std::sin(delta) * (1.0 - 1e-9) : 0.0;
+  }
+
+private:
+  Vec3 Origin, Direction, U, V;
+  double First = 0.0, Width = 2.0 * Pi;
+  bool Bounded = false;
+};
 }
 
 FoldingSegmentation LabelFacesByLeaf(const FoldingTree& tree,
@@ -75,33 +152,71 @@ FoldingSegmentation LabelFacesByLeaf(const FoldingTree& tree,
       }
     const PointKdTree search(centroids);
     std::vector<AxisTurn> turnsBack;
+    std::vector<double> turnAngles;
     for (int j = 1; rotation && j < node.rotationOrder; ++j)
-      turnsBack.emplace_back(node.axis, -2.0 * EIGEN_PI * j / node.rotationOrder);
-    for (int f : node.discardedOriginalFaces)
     {
-      if (!ValidFace(f, nf) || labels.role[f] != -1)
-        continue;
-      const Vec3 c = Centroid(points, triangles[f]);
-      int nearest = -1;
-      if (!rotation)
-        nearest = search.Nearest(node.plane.Reflect(c));
-      double best = 0.0;
-      for (const AxisTurn& turn : turnsBack)
-      {
-        const Vec3 back = turn.Point(c);
-        const int candidate = search.Nearest(back);
-        const double d = candidate >= 0 ? (centroids[candidate] - back).norm() : 0.0;
-        if (candidate >= 0 && (nearest < 0 || d < best))
-        {
-          nearest = candidate;
-          best = d;
-        }
-      }
-      labels.role[f] =
-        static_cast<int>(rotation ? FoldingFaceRole::TurnedAway : FoldingFaceRole::MirroredAway);
-      labels.depth[f] = node.depth;
-      labels.leaf[f] = nearest >= 0 ? labels.leaf[partners[nearest]] : -1;
+      turnAngles.push_back(-2.0 * EIGEN_PI * j / node.rotationOrder);
+      turnsBack.emplace_back(node.axis, turnAngles.back());
     }
+    const KeptArc arc = rotation ? KeptArc(node.axis, centroids) : KeptArc(RotationAxis(), {});
+    // The faces to label (each once: a face cut into pieces is discarded once per piece).
+    std::vector<int> faces;
+    for (int f : node.discardedOriginalFaces)
+      if (ValidFace(f, nf) && labels.role[f] == -1)
+      {
+        labels.role[f] = -2; // listed
+        faces.push_back(f);
+      }
+    // In parallel: each face's labels depend on the kept faces' only (labelled before).
+    ParallelForRanges(static_cast<vtkIdType>(faces.size()),
+      64,
+      [&](vtkIdType begin, vtkIdType end)
+      {
+        for (vtkIdType i = begin; i < end; ++i)
+        {
+          const int f = faces[i];
+          const Vec3 c = Centroid(points, triangles[f]);
+          int nearest = -1;
+          if (!rotation)
+            nearest = search.Nearest(node.plane.Reflect(c));
+          // A rotation: the nearest kept centroid over the turns back, the first on ties.
+          // Turns whose point lies farther outside the kept arc than the turn nearest to the
+          // arc finds a centroid cannot win (KeptArc) and are not queried: the same answer.
+          const double radius = rotation ? arc.Radius(c) : 0.0;
+          const double angle = rotation ? arc.Angle(c) : 0.0;
+          double reach = std::numeric_limits<double>::infinity();
+          size_t first = 0;
+          for (size_t t = 1; t < turnsBack.size(); ++t)
+            if (arc.LowerBound(radius, angle + turnAngles[t]) <
+              arc.LowerBound(radius, angle + turnAngles[first]))
+              first = t;
+          if (!turnsBack.empty())
+          {
+            const Vec3 back = turnsBack[first].Point(c);
+            const int candidate = search.Nearest(back);
+            if (candidate >= 0)
+              reach = (centroids[candidate] - back).norm();
+          }
+          double best = 0.0;
+          for (size_t t = 0; t < turnsBack.size(); ++t)
+          {
+            if (arc.LowerBound(radius, angle + turnAngles[t]) > reach)
+              continue;
+            const Vec3 back = turnsBack[t].Point(c);
+            const int candidate = search.Nearest(back);
+            const double d = candidate >= 0 ? (centroids[candidate] - back).norm() : 0.0;
+            if (candidate >= 0 && (nearest < 0 || d < best))
+            {
+              nearest = candidate;
+              best = d;
+            }
+          }
+          labels.role[f] = static_cast<int>(
+            rotation ? FoldingFaceRole::TurnedAway : FoldingFaceRole::MirroredAway);
+          labels.depth[f] = node.depth;
+          labels.leaf[f] = nearest >= 0 ? labels.leaf[partners[nearest]] : -1;
+        }
+      });
   }
   return labels;
 }
