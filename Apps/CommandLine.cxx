@@ -144,9 +144,9 @@ compress: folds MESH (fold options) and writes STEM.fmz in --outdir: the compact
 only what unfolding needs, the leaves coded with Draco; prints (JSON: "output", "bytes")
 its size, the stored faces and the quantisation. Unless given, compress folds with
 --min-faces 400 (fewer, larger leaves: files up to 39% smaller) and --rotation-when-axial;
-a tree that gets rotation nodes so is compared with the fold without them and the smaller
-file kept (JSON "foldOptions": what it added to the options given, "" none; the other fold
-options keep the fold command's defaults). The file kept is decompressed and its distance to
+a tree that gets rotation nodes so is compared with the fold without them (--no-rotation)
+and the smaller file kept (JSON "foldOptions": what it added to the options given, "" none;
+the other fold options keep the fold command's defaults). The file kept is decompressed and its distance to
 MESH proved, and a closed MESH to come back closed ("proved bound", JSON "provedBound",
 "provedWithin"); with the automatic bits it
 is written again with two more bits while not within the root epsilon (JSON "proofRetries";
@@ -161,8 +161,10 @@ a warning where even 24 bits do not prove it).
   --search                 also fold with up to six other settings (the options given alone,
                            --keep fewer, --min-faces 400, --min-area-fraction 0.2 and
                            combinations, --rotation --min-faces 400, on top of the options
-                           given; settings already folded are not folded again; with
-                           --no-rotation, none with rotation nodes) and keep the smallest file
+                           given; settings already folded are not folded again; all but the
+                           last without rotation nodes unless a rotation option is given, so
+                           labelled --no-rotation on an axial MESH; with --no-rotation, none
+                           with rotation nodes) and keep the smallest file
                            (JSON "foldOptions", "foldSettingsTried"); up to eight folds: about
                            eight times the time
 decompress: unfolds a .fmz file like unfold (same options, --original too) and writes

@@ -189,6 +189,7 @@ int Compress(int argc, char* argv[])
     withoutRotation =
       ApplyCompressFoldDefaults(c.builder, f.keep.has_value(), f.minFaces.has_value(), true);
     c.builder->SetRotationNodes(vtkFoldingTreeBuilder::ROTATION_NODES_OFF); // not the default
+    withoutRotation += std::string(withoutRotation.empty() ? "" : " ") + "--no-rotation";
     if (!tryFold(c, withoutRotation.c_str()))
       return 3;
   }
@@ -201,7 +202,12 @@ int Compress(int argc, char* argv[])
       continue;
     CompressedCandidate c;
     c.builder = MakeBuilder(f, &v);
-    if (!tryFold(c, v.options))
+    // The options that fold it again: MakeBuilder turned rotation nodes off, which on an axial
+    // mesh differs from the fold command's default.
+    std::string options = v.options;
+    if (axial && !rotationGiven && !v.rotationNodes && !v.rotationWhenAxial)
+      options += std::string(options.empty() ? "" : " ") + "--no-rotation";
+    if (!tryFold(c, options.c_str()))
       return 3;
   }
   std::error_code removed;

@@ -256,8 +256,7 @@ public:
   ///@{
   /**
    * Rotation nodes (default ROTATION_NODES_WHEN_AXIAL; issue 22): where no fold lies above a
-   * region, look for a
-   * rotational symmetry of order k (2..MaximumRotationOrder, default 64, range 2..360) and,
+   * region, look for a rotational symmetry of order k (2..MaximumRotationOrder, default 64, range 2..360) and,
    * when turning one sector of 360/k degrees k times reproduces the whole region within
    * epsilon / 2, store that sector only (a node of kind 3 with FoldingAxisOrigin,
    * FoldingAxisDirection and FoldingRotationOrder); the sector is built with epsilon / 2 and
@@ -269,7 +268,7 @@ public:
    * as a rotational symmetry of order 3 or more of the whole surface makes them - no rotation
    * detection cost elsewhere (of the 29 shared meshes: the bearing, mech and queen, each stored
    * smaller; the other 26 as with OFF). ON looks everywhere: four more of the 29 smaller
-   * (teapot, fandisk, octopus, horse_walk), none larger, builds 1.7 times as long.
+   * (teapot, fandisk, octopus, horse_walk), none larger, builds 1.8 times as long.
    */
   vtkSetClampMacro(RotationNodes, int, ROTATION_NODES_OFF, ROTATION_NODES_WHEN_AXIAL);
   vtkGetMacro(RotationNodes, int);

@@ -597,6 +597,7 @@ bool BuildFoldingTree(const TriangleMesh& input,
       if (check.within && noLess && !laidTwice)
       {
         tree = std::move(*proved); // the planes lay no less surface twice
+        tree.verificationRounds = round;
         break;
       }
       if (check.within && !laidTwice &&
@@ -607,14 +608,14 @@ bool BuildFoldingTree(const TriangleMesh& input,
         tree = std::move(*proved);
         break;
       }
-      // A first tree with rotation nodes that misses (the bound, holes where the input is
-      // closed, or its area above RotationAreaRatioLimit: kept only while the rebuilds lay no
-      // less surface twice): without the second orders it kept, if any, then the planes alone,
-      // at epsilon, no pins (their seams are the ones the unfolder closes best); should that
-      // tree miss too, the rounds below go on from it.
+      // A first tree with rotation nodes that misses (the bound, or holes where the input is
+      // closed): without the second orders it kept, if any, then the planes alone, at epsilon,
+      // no pins (their seams are the ones the unfolder closes best); should that tree miss
+      // too, the rounds below go on from it. One whose area is above RotationAreaRatioLimit:
+      // the planes alone at once, kept only where they lay less surface twice.
       if (round == firstRound && again.rotationNodes && tree.NumberOfRotations() > 0)
       {
-        const bool withoutSecond = keptSecondOrder && secondOrders;
+        const bool withoutSecond = keptSecondOrder && secondOrders && !laidTwice;
         if (withoutSecond)
           secondOrders = false;
         else
@@ -623,7 +624,7 @@ bool BuildFoldingTree(const TriangleMesh& input,
         if (check.within && !(laidTwice && noLess))
         {
           proved.reset(new FoldingTree(tree)); // should the rebuilt tree miss the bound
-          provedArea = laidTwice ? check.areaRatio : 0.0;
+          provedArea = laidTwice && check.pinOpen.empty() ? check.areaRatio : 0.0;
         }
         if (options.trace)
           options.trace(FormatTrace("[verify] the tree with rotation nodes missed%s: rebuilt %s",

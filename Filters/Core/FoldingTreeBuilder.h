@@ -210,7 +210,8 @@ struct FoldingTreeOptions
    * that passes (ties: the larger order). The rule for the order, the sector cut
    * and the seams: FoldingTreeRotation.cxx. A tree with rotation nodes that verifyBound finds
    * beyond epsilon, or with holes where the input is closed, is rebuilt with the planes alone
-   * (docs/builder.md). Off by default (docs/benchmarks.md: the 29 shared meshes' builds take
+   * (docs/builder.md); so is one whose unfolded area is above RotationAreaRatioLimit times the
+   * input's, the planes' tree kept only where it lays less surface twice. Off by default (docs/benchmarks.md: the 29 shared meshes' builds take
    * 70% longer, 16.7 -> 28.5 s); rotationNodesWhenAxial, on by default, turns them on where
    * the input's moments allow a rotational symmetry of the whole surface.
    */

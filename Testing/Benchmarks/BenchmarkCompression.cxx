@@ -6,8 +6,8 @@
 // The fold as `foldingmeshes compress` folds: its own defaults for --keep and --min-faces
 // (CompressionSearch.h; --fold-defaults: the fold command's instead; --min-faces N: that
 // MinimumFaces instead of compress's, as `compress --min-faces N`; compress's rotation rule,
-// --rotation-when-axial and a tree with rotation nodes also folded without, unless
-// --fold-defaults or --rotation).
+// --rotation-when-axial - the fold command's default too since 2026-12-07 - and a tree with
+// rotation nodes also folded without them, unless --rotation).
 // --rotation: the builder's RotationNodes on, issue 22. --search: as `foldingmeshes compress
 // --search`, the fold settings of CompressionSearch.h are tried too and the smallest file is kept;
 // the last column names the settings that made it, t_c counts every fold. Columns: faces; binary
@@ -278,10 +278,14 @@ int main(int argc, char* argv[])
     const bool rotationTree = foldingmeshes::KeptRotationNodes(first);
     if (!rotationTree) // looked for rotation nodes and kept none: the fold without them too
       folded.insert(foldingmeshes::DecidedKey(foldingmeshes::FoldSettingsKey(first), false));
+    // Labelled as the options that fold them again: rotation nodes off differs from the fold
+    // command's default on an axial mesh.
+    auto withoutRotation = [](std::string label)
+    { return label + (label.empty() ? "" : " ") + "--no-rotation"; };
     if (!rotation && rotationTree)
     {
       vtkNew<vtkFoldingTreeBuilder> without;
-      fold(without, ownSettings(without, false));
+      fold(without, withoutRotation(ownSettings(without, false)));
     }
     for (size_t k = 0; search && k < std::size(foldingmeshes::FoldSearchVariants); ++k)
     {
@@ -293,8 +297,10 @@ int main(int argc, char* argv[])
         builder->SetUseMinimumFaces(true);
         builder->SetMinimumFaces(minimumFaces);
       }
-      foldingmeshes::ApplyFoldSearchVariant(builder, foldingmeshes::FoldSearchVariants[k]);
-      fold(builder, foldingmeshes::FoldSearchVariants[k].options);
+      const foldingmeshes::FoldSearchVariant& v = foldingmeshes::FoldSearchVariants[k];
+      foldingmeshes::ApplyFoldSearchVariant(builder, v);
+      const bool off = !rotation && !v.rotationNodes && !v.rotationWhenAxial;
+      fold(builder, off && axial ? withoutRotation(v.options) : std::string(v.options));
     }
     if (bytes.empty())
     {

@@ -484,7 +484,9 @@ int TestFoldingTreeFilters(int argc, char* argv[])
       defaults->GetMinimumAreaFraction() == 0.05 && defaults->GetMaximumFolds() == 8 &&
       defaults->GetRequireMeaningfulSymmetry() && !defaults->GetRequireTightSymmetry() &&
       defaults->GetConnectNearbyParts() && defaults->GetMethod() == 0 &&
-      defaults->GetRandomSeed() == 1 && defaults->GetSampledSearchAboveFaces() == 1000,
+      defaults->GetRandomSeed() == 1 && defaults->GetSampledSearchAboveFaces() == 1000 &&
+      defaults->GetRotationNodes() == vtkFoldingTreeBuilder::ROTATION_NODES_WHEN_AXIAL &&
+      defaults->GetMaximumRotationOrder() == 64,
     "builder defaults differ from FoldingTreeOptions");
 
   std::vector<Case> cases;

@@ -9,8 +9,8 @@
 //   competed for S, see FoldingTreeBuilder.h);
 // - the same tree (stored faces, height, leaf ids) with the Sequential and STDThread backends;
 // - rotation nodes (RotationNodes, issue 22) never store more faces than the planes alone, and
-//   the proved bound stays within the root epsilon: on the queen (whose trees with rotation
-//   nodes miss the bound, so the builder falls back to the planes) and the bearing, where a
+//   the proved bound stays within the root epsilon: on the queen (a cut sector of order 15
+//   since 2026-12-06, 549 faces against the planes' 812) and the bearing, where a
 //   sector of the second order that passes, with a fold below it, stores under three quarters
 //   of the planes' faces (184 of 276; the largest order's sector alone stores 264, 96%),
 //   and the teapot, whose body (a sector of order 4 of the part the turns map onto itself,

@@ -8,8 +8,8 @@ with RotationNodes on:
   FoldingRotationOrder 6, and draws the axis as a line; the tree stores about a sixth;
 - the tree saved as .vtm (inline binary) and as .fmz reads back and unfolds within the root
   epsilon of the vase (vtkFoldingTreeUnfolder's proved HausdorffToOriginalBound), closed;
-- RotationNodes off (the default) gives no rotation node (RotationNodesTried 0); WHEN_AXIAL
-  gives the tree of on for the vase and, for the vase stretched along x (its second moments no
+- the default is WHEN_AXIAL (since 2026-12-07); RotationNodes off gives no rotation node
+  (RotationNodesTried 0); WHEN_AXIAL gives the tree of on for the vase and, for the vase stretched along x (its second moments no
   longer axially symmetric), the tree of off, RotationNodesTried 0;
 - a malformed rotation node (order 1; no FoldingAxisDirection) is rejected with an error that
   names it.

@@ -177,12 +177,13 @@ void Revolution()
 /// With polygon caps (no vertex on the axis: the axis passes through a diagonal of each cap,
 /// triangulated in large faces across it), the sectors of whole faces do not cover the caps
 /// once, and the cut sectors of those orders (the second pass) are cut at the axis too: the
-/// root is a rotation node there as well (before the second pass: the planes alone). Never more
+/// root is a rotation node there (before the second pass: the planes alone). Never more
 /// faces than the planes alone, k sectors hold at most three times the input's faces, nothing
 /// open. A rotation tree whose unfolded area is above RotationAreaRatioLimit times the input's
 /// (surface laid twice) is rebuilt with the planes alone, which the builder keeps where they lay
-/// less twice (since 2026-12-07: the 12-segment vase's rotation tree, 210 faces, came back with
-/// 1.217 times its area; the planes' tree, 335 faces, with about its own).
+/// less twice: since 2026-12-07 the 12-segment vase with poles keeps its planes' tree (335
+/// faces, about its own area; its rotation tree, 210 faces, came back with 1.217 times it); the
+/// other two keep their rotation trees.
 void Staggered()
 {
   for (int segments : { 40, 12, -12 })
@@ -218,15 +219,17 @@ void Staggered()
       name << ": the first tree has no rotation node at its root");
     const double firstArea = areaRatio(firstTree);
     const double keptArea = areaRatio(tree);
-    EXPECT(rotations == 1
-        ? first == 0 && keptArea <= RotationAreaRatioLimit
-        : rotations == 0 && firstArea > RotationAreaRatioLimit && keptArea < firstArea,
+    // The 12-segment vase with poles lays surface twice: its planes' tree is kept.
+    const bool planesKept = segments == 12 && !s.polygonCaps;
+    EXPECT(planesKept ? rotations == 0 && firstArea > RotationAreaRatioLimit && keptArea < firstArea
+                      : rotations == 1 && first == 0 && keptArea <= RotationAreaRatioLimit,
       name << ": " << rotations << " rotation nodes, the first at " << first << ", area "
            << keptArea << " of the input's (the first tree's " << firstArea << ")");
     FoldingTreeOptions planesAlone;
     planesAlone.rotationNodesWhenAxial = false;
     const FoldingTree planes = coretest::Fold(m, 0.02 * coretest::Diagonal(m), planesAlone);
-    EXPECT(rotations == 0 || tree.StoredFaces() < planes.StoredFaces(),
+    EXPECT(rotations == 0 ? tree.StoredFaces() <= planes.StoredFaces()
+                          : tree.StoredFaces() < planes.StoredFaces(),
       name << ": " << tree.StoredFaces() << " faces stored, " << planes.StoredFaces()
            << " with planes alone");
     EXPECT(first < 0 ||

@@ -9,8 +9,10 @@
 //   over vertices and face centroids, both ways);
 // - bounded round trips: on meshes whose folds are approximate (the blob with an asymmetric
 //   attachment, the three-plane shape and the bilateral blob with all their folds, a sphere
-//   and a cylinder - continuous symmetry, folds that do not map the
-//   tessellation onto itself -, the multi-part shape, differently tessellated halves) the
+//   and a cylinder - continuous symmetry, folds that do not map the tessellation onto itself;
+//   since 2026-12-07 (RotationNodes WHEN_AXIAL, the default) the sphere's root is a rotation
+//   node whose turns do not map it onto itself either -, the multi-part shape, differently
+//   tessellated halves) the
 //   Hausdorff distance is at most the root epsilon and the orientation consistent; open and
 //   non-manifold edges are printed and must equal the unfolder's own report (openEdges,
 //   nonManifoldEdges: gaps are never hidden), misoriented edges stay below 0.5% of the faces;

@@ -1,10 +1,12 @@
 // The builder's verification of its error bound (FoldingTreeVerification.h,
 // FoldingTreeOptions::verifyBound):
 // - a one-leaf tree holding the input unchanged is proved within epsilon (bound ~0, nothing
-//   pinned); with one vertex moved by half of epsilon it is still proved (bound at least the
-//   move, at most epsilon); moved by twice epsilon it is not, and the faces to pin are the
-//   faces around that vertex (its star and two rings), nowhere else on the sphere;
-// - BuildFoldingTree with verifyBound on a symmetric sphere: a verified bound within epsilon,
+//   pinned, its area ratio 1; the sphere scaled by 1.01: 1.0201); with one vertex moved by half of
+//   epsilon it is still proved (bound at least the move, at most epsilon); moved by twice epsilon
+//   it is not, and the faces to pin are the faces around that vertex (its star and two rings),
+//   nowhere else on the sphere;
+// - BuildFoldingTree with verifyBound on a symmetric sphere (a rotation node at its root since
+//   RotationNodes WHEN_AXIAL became the default): a verified bound within epsilon,
 //   the same tree as with the option off (nothing pinned, no extra build); off: not verified
 //   (-1).
 #include "CoreTestUtilities.h"
@@ -30,6 +32,16 @@ void TestMovedVertex(const TriangleMesh& sphere)
   EXPECT(same.within && same.upper < 1e-9 && same.pin.empty(),
     "unchanged leaf: within " << same.within << ", bound " << same.upper << ", pin "
                               << same.pin.size());
+  // The unfolded area over the input's (areaRatio): 1 for the unchanged leaf, 1.01^2 for the
+  // sphere (radius 1) scaled by 1.01 about its centre, a move of 0.01 within epsilon.
+  TriangleMesh grown = sphere;
+  for (Vec3& p : grown.points)
+    p *= 1.01;
+  const UnfoldedBoundCheck larger =
+    VerifyUnfoldedBound(sphere, coretest::LeafTree(grown, epsilon, diagonal));
+  EXPECT(std::abs(same.areaRatio - 1.0) < 1e-12 && larger.within &&
+      std::abs(larger.areaRatio - 1.0201) < 1e-9,
+    "area ratios " << same.areaRatio << " and " << larger.areaRatio << " (scaled by 1.01)");
   const int moved = 17;
   const Vec3 out = sphere.points[moved].normalized();
   for (const double factor : { 0.5, 2.0 })
