@@ -12,7 +12,10 @@ with RotationNodes on:
   (RotationNodesTried 0); WHEN_AXIAL gives the tree of on for the vase and, for the vase stretched along x (its second moments no
   longer axially symmetric), the tree of off, RotationNodesTried 0;
 - a malformed rotation node (order 1; no FoldingAxisDirection) is rejected with an error that
-  names it.
+  names it;
+- the default on a user's plain vtkSphereSource (64 x 64, triangulated and cleaned): a rotation
+  node at the root, at most a tenth of the faces the planes alone store (124 against 1,510 on
+  2026-12-07), unfolded within the root epsilon and closed.
 
 Run with /usr/bin/python3 and PYTHONPATH=<build>/lib/python3/dist-packages:
     TestRotationNodesPython.py TEMP_DIR
@@ -25,7 +28,8 @@ import sys
 from vtkmodules.util.misc import calldata_type
 from vtkmodules.vtkCommonCore import VTK_STRING
 from vtkmodules.vtkCommonDataModel import vtkPolyData
-from vtkmodules.vtkFiltersCore import vtkFeatureEdges
+from vtkmodules.vtkFiltersCore import vtkCleanPolyData, vtkFeatureEdges, vtkTriangleFilter
+from vtkmodules.vtkFiltersSources import vtkSphereSource
 from vtkmodules.vtkIOXML import vtkXMLMultiBlockDataWriter
 
 from foldingmeshes import (vtkExpatSafeXMLMultiBlockDataReader, vtkFoldingTreeBuilder,
@@ -104,6 +108,37 @@ def expect_rejected(tree, damage, must_contain, label):
     text = "\n".join(messages)
     check(unfolder.GetOutput().GetNumberOfCells() == 0 and must_contain in text,
           "%s: rejected, the error names it (%r in the error)" % (label, must_contain))
+
+
+def sphere_default():
+    """RotationNodes at its default on a VTK sphere, against the planes alone."""
+    source = vtkSphereSource()
+    source.SetThetaResolution(64)
+    source.SetPhiResolution(64)
+    clean = vtkCleanPolyData()  # the source repeats its poles' and seam's points
+    clean.SetInputConnection(source.GetOutputPort())
+    triangles = vtkTriangleFilter()
+    triangles.SetInputConnection(clean.GetOutputPort())
+    triangles.Update()
+    sphere = triangles.GetOutput()
+    stored = {}
+    for mode in (None, vtkFoldingTreeBuilder.ROTATION_NODES_OFF):
+        builder = vtkFoldingTreeBuilder()
+        builder.SetInputData(sphere)
+        if mode is not None:
+            builder.SetRotationNodes(mode)
+        builder.Update()
+        tree = builder.GetOutputDataObject(0)
+        stored[mode] = builder.GetStoredFaces()
+        if mode is None:
+            block = axis_block(tree)
+            check(block is not None and field(block, "FoldingNodeKind") == 3,
+                  "default on a vtkSphereSource: the root is a rotation node")
+            epsilon = field(tree.GetBlock(1), "RootEpsilon")
+            unfold_and_check(builder.GetOutputPort(0), sphere, epsilon, "default sphere")
+    check(10 * stored[None] <= stored[vtkFoldingTreeBuilder.ROTATION_NODES_OFF],
+          "default on a vtkSphereSource: %d faces stored, %d with the planes alone"
+          % (stored[None], stored[vtkFoldingTreeBuilder.ROTATION_NODES_OFF]))
 
 
 def main(temp_dir):
@@ -209,6 +244,8 @@ def main(temp_dir):
                     "FoldingRotationOrder 1", "order 1")
     expect_rejected(tree, lambda b: b.GetFieldData().RemoveArray("FoldingAxisDirection"),
                     "rotation node without its axis metadata", "no FoldingAxisDirection")
+
+    sphere_default()
 
     print("TestRotationNodesPython: %s" % ("%d failure(s)" % len(failures) if failures
                                            else "all checks passed"))
