@@ -65,6 +65,7 @@ public:
     const Vec3 r = p - this->Origin;
     return std::atan2(r.dot(this->V), r.dot(this->U));
   }
+  double OriginNorm() const { return this->Origin.norm(); }
   double Radius(const Vec3& p) const
   {
     const Vec3 r = p - this->Origin;
@@ -152,12 +153,8 @@ FoldingSegmentation LabelFacesByLeaf(const FoldingTree& tree,
       }
     const PointKdTree search(centroids);
     std::vector<AxisTurn> turnsBack;
-    std::vector<double> turnAngles;
     for (int j = 1; rotation && j < node.rotationOrder; ++j)
-    {
-      turnAngles.push_back(-2.0 * EIGEN_PI * j / node.rotationOrder);
-      turnsBack.emplace_back(node.axis, turnAngles.back());
-    }
+      turnsBack.emplace_back(node.axis, -2.0 * EIGEN_PI * j / node.rotationOrder);
     const KeptArc arc = rotation ? KeptArc(node.axis, centroids) : KeptArc(RotationAxis(), {});
     // The faces to label (each once: a face cut into pieces is discarded once per piece).
     std::vector<int> faces;
@@ -172,6 +169,8 @@ FoldingSegmentation LabelFacesByLeaf(const FoldingTree& tree,
       64,
       [&](vtkIdType begin, vtkIdType end)
       {
+        std::vector<Vec3> backs; // per turn: the face's centroid turned back
+        std::vector<double> bounds;
         for (vtkIdType i = begin; i < end; ++i)
         {
           const int f = faces[i];
@@ -180,31 +179,37 @@ FoldingSegmentation LabelFacesByLeaf(const FoldingTree& tree,
           if (!rotation)
             nearest = search.Nearest(node.plane.Reflect(c));
           // A rotation: the nearest kept centroid over the turns back, the first on ties.
-          // Turns whose point lies farther outside the kept arc than the turn nearest to the
-          // arc finds a centroid cannot win (KeptArc) and are not queried: the same answer.
-          const double radius = rotation ? arc.Radius(c) : 0.0;
-          const double angle = rotation ? arc.Angle(c) : 0.0;
-          double reach = std::numeric_limits<double>::infinity();
+          // The turn whose point lies nearest the kept arc is asked first; a turn whose point's
+          // bound (KeptArc, from the point turned, so whatever the turn's rounding) exceeds
+          // what that one found cannot win and is not asked: the same answer.
+          const size_t turns = turnsBack.size();
+          backs.resize(turns);
+          bounds.resize(turns);
           size_t first = 0;
-          for (size_t t = 1; t < turnsBack.size(); ++t)
-            if (arc.LowerBound(radius, angle + turnAngles[t]) <
-              arc.LowerBound(radius, angle + turnAngles[first]))
+          for (size_t t = 0; t < turns; ++t)
+          {
+            backs[t] = turnsBack[t].Point(c);
+            bounds[t] = arc.LowerBound(arc.Radius(backs[t]), arc.Angle(backs[t]));
+            if (bounds[t] < bounds[first])
               first = t;
-          if (!turnsBack.empty())
-          {
-            const Vec3 back = turnsBack[first].Point(c);
-            const int candidate = search.Nearest(back);
-            if (candidate >= 0)
-              reach = (centroids[candidate] - back).norm();
           }
-          double best = 0.0;
-          for (size_t t = 0; t < turnsBack.size(); ++t)
+          int firstCandidate = -1;
+          double reach = std::numeric_limits<double>::infinity();
+          if (turns > 0)
           {
-            if (arc.LowerBound(radius, angle + turnAngles[t]) > reach)
+            firstCandidate = search.Nearest(backs[first]);
+            if (firstCandidate >= 0)
+              reach = (centroids[firstCandidate] - backs[first]).norm();
+          }
+          // Far above the rounding of the distances (relative to the coordinates' size).
+          const double margin = 1e-9 * reach + 1e-12 * (c.norm() + arc.OriginNorm());
+          double best = 0.0;
+          for (size_t t = 0; t < turns; ++t)
+          {
+            if (t != first && bounds[t] > reach + margin)
               continue;
-            const Vec3 back = turnsBack[t].Point(c);
-            const int candidate = search.Nearest(back);
-            const double d = candidate >= 0 ? (centroids[candidate] - back).norm() : 0.0;
+            const int candidate = t == first ? firstCandidate : search.Nearest(backs[t]);
+            const double d = candidate >= 0 ? (centroids[candidate] - backs[t]).norm() : 0.0;
             if (candidate >= 0 && (nearest < 0 || d < best))
             {
               nearest = candidate;

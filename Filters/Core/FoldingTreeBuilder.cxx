@@ -593,7 +593,9 @@ bool BuildFoldingTree(const TriangleMesh& input,
       }
       const bool laidTwice = check.within && round == firstRound && again.rotationNodes &&
         tree.NumberOfRotations() > 0 && check.areaRatio > RotationAreaRatioLimit;
-      const bool noLess = provedArea > 0.0 && check.areaRatio >= provedArea;
+      // (A rebuild with holes lays no less: its missing faces lower its area.)
+      const bool noLess =
+        provedArea > 0.0 && (check.areaRatio >= provedArea || !check.pinOpen.empty());
       if (check.within && noLess && !laidTwice)
       {
         tree = std::move(*proved); // the planes lay no less surface twice

@@ -5,8 +5,8 @@
 //   epsilon it is still proved (bound at least the move, at most epsilon); moved by twice epsilon
 //   it is not, and the faces to pin are the faces around that vertex (its star and two rings),
 //   nowhere else on the sphere;
-// - BuildFoldingTree with verifyBound on a symmetric sphere (a rotation node at its root since
-//   RotationNodes WHEN_AXIAL became the default): a verified bound within epsilon,
+// - BuildFoldingTree with verifyBound on a symmetric sphere (RotationNodes WHEN_AXIAL, the
+//   default since 2026-12-07, looks for rotation nodes there): a verified bound within epsilon,
 //   the same tree as with the option off (nothing pinned, no extra build); off: not verified
 //   (-1).
 #include "CoreTestUtilities.h"
@@ -104,6 +104,9 @@ void TestBuildVerified(const TriangleMesh& sphere)
       on.StoredFaces() == off.StoredFaces() && on.NumberOfNodes() == off.NumberOfNodes(),
     "a proved first tree changed");
   EXPECT(off.verifiedBound == -1.0 && off.pinnedFaces == 0, "verification ran while off");
+  std::printf("sphere: rotation nodes tried %d, kept %d\n",
+    on.rotationNodesTried ? 1 : 0,
+    on.NumberOfRotations());
 }
 }
 
