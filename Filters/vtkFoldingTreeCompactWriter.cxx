@@ -127,6 +127,9 @@ void vtkFoldingTreeCompactWriter::WriteData()
   }
   foldingmeshes::CompactTreeOptions options;
   options.quantizationBits = this->QuantizationBits;
+  // Given the mesh, the file is proved against it below and written with more bits where it
+  // is not within epsilon: the segmentation seams' rule is left to the proof.
+  options.segmentationSeamBits = this->GetNumberOfInputConnections(1) == 0;
   foldingmeshes::CompactTreeStats stats;
   std::string bytes;
   const std::vector<foldingmeshes::CompactArray> arrays = this->StoreUserArrays

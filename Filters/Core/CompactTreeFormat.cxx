@@ -32,8 +32,14 @@ constexpr size_t HeaderBytes = 16;
 /// its 3,322 (535 bytes; 6,592 seam edges left open), at the 10 bits of this rule with 3,322
 /// (659 bytes; none open). A measured choice, not a guarantee (partners are quantised apart by
 /// up to twice the error; at 11 bits the bearing left 448 seam edges to the repair):
-/// docs/compression.md.
-int ChooseBits(const FoldingTree& tree, LeafGeometryCoding coding, int requested)
+/// docs/compression.md. With `segmentationSeams` (CompactTreeOptions::segmentationSeamBits)
+/// also at most SegmentationSeamShare of every segmentation node's epsilon, the tolerance its
+/// seams are stitched within, for two copies of a seam vertex rounded apart.
+constexpr double SegmentationSeamShare = 0.5;
+int ChooseBits(const FoldingTree& tree,
+  LeafGeometryCoding coding,
+  int requested,
+  bool segmentationSeams)
 {
   if (requested > 0)
     return requested;
@@ -46,6 +52,9 @@ int ChooseBits(const FoldingTree& tree, LeafGeometryCoding coding, int requested
         smallest = std::min(smallest, b);
     if (node.kind == FoldingNodeKind::Rotation && node.epsilon > 0.0)
       seams = std::min(seams, RotationStitchShare(node.rotationOrder) * node.epsilon);
+    if (segmentationSeams && node.kind == FoldingNodeKind::Segmentation &&
+      node.children.size() > 1 && node.epsilon > 0.0)
+      seams = std::min(seams, SegmentationSeamShare * node.epsilon);
   }
   const double target =
     std::min(std::isfinite(smallest) ? 0.5 * smallest : 0.01 * tree.rootEpsilon, seams);
@@ -283,7 +292,7 @@ bool EncodeCompactTree(const FoldingTree& tree,
   coding.keepOrder = withArrays;
   coding.origin = lo;
   coding.range = std::max((hi - lo).maxCoeff(), 1e-9 * tree.diagonal);
-  coding.bits = ChooseBits(tree, coding, options.quantizationBits);
+  coding.bits = ChooseBits(tree, coding, options.quantizationBits, options.segmentationSeamBits);
   const double quantizationError = coding.QuantizationError() + PlaneError(tree);
 
   // Per leaf: points, triangles and palette symbols.
