@@ -515,6 +515,36 @@ void RotationSectorBudgets()
     "staggered vase: read back it unfolds to " << readBack << " faces, in memory " << inMemory);
 }
 
+/// The automatic bits keep the quantisation error within half of every segmentation node's
+/// epsilon (its seams' stitch tolerance for two copies rounded apart), unless
+/// segmentationSeamBits is off (a caller that proves its file), which never takes more bits.
+void SegmentationSeamBits(const FoldingTree& tree, const char* name)
+{
+  double seams = std::numeric_limits<double>::infinity();
+  for (const FoldingNode& node : tree.nodes)
+    if (node.kind == FoldingNodeKind::Segmentation && node.children.size() > 1)
+      seams = std::min(seams, 0.5 * node.epsilon);
+  CompactTreeOptions options;
+  CompactTreeStats with, without;
+  std::string bytes, error;
+  REQUIRE(EncodeCompactTree(tree, options, bytes, &with, error), name << ": " << error);
+  options.segmentationSeamBits = false;
+  REQUIRE(EncodeCompactTree(tree, options, bytes, &without, error), name << ": " << error);
+  std::printf("%s: %d bits (error %.3g of the smallest segmentation epsilon's half %.3g), %d "
+              "without the seams' rule\n",
+    name,
+    with.quantizationBits,
+    with.quantizationError,
+    seams,
+    without.quantizationBits);
+  // stats.quantizationError adds the planes' rounding (PlaneError), far below a bit's step.
+  EXPECT(with.quantizationBits == MaximumQuantizationBits ||
+      with.quantizationError <= seams + 1e-5 * tree.diagonal,
+    name << ": quantisation error " << with.quantizationError << " above " << seams);
+  EXPECT(
+    without.quantizationBits <= with.quantizationBits, name << ": the seams' rule took fewer bits");
+}
+
 int main()
 {
   RotationFans();
@@ -566,6 +596,7 @@ int main()
     EXPECT(Encode(tree, 0).size() < Encode(tree, 0, nullptr, false).size(),
       c.name << ": symbols beside the Draco mesh take fewer bytes");
     EXPECT(Encode(tree, 8).size() < Encode(tree, 16).size(), c.name << ": fewer bits, fewer bytes");
+    SegmentationSeamBits(tree, c.name);
     if (first.Empty())
       first = tree;
     if (columned.Empty() && (smaller[6] & 4))
