@@ -50,7 +50,9 @@ public:
    * Position quantisation bits per coordinate (6..24), or 0 (the default): automatic - the
    * fewest bits (at least 8) whose quantisation error is at most half of the smallest error
    * budget of a stored point (1% of the root epsilon for trees without budgets) and, in trees
-   * with rotation nodes, at most the stitch tolerance of their seams (docs/compression.md).
+   * with rotation nodes, at most the stitch tolerance of their seams; without an original
+   * (SetOriginalData) also at most half the epsilon of every segmentation node with seams, as
+   * nothing proves the file then (docs/compression.md).
    */
   vtkSetClampMacro(QuantizationBits, int, 0, 24);
   vtkGetMacro(QuantizationBits, int);

@@ -33,9 +33,38 @@ constexpr size_t HeaderBytes = 16;
 /// (659 bytes; none open). A measured choice, not a guarantee (partners are quantised apart by
 /// up to twice the error; at 11 bits the bearing left 448 seam edges to the repair):
 /// docs/compression.md. With `segmentationSeams` (CompactTreeOptions::segmentationSeamBits)
-/// also at most SegmentationSeamShare of every segmentation node's epsilon, the tolerance its
-/// seams are stitched within, for two copies of a seam vertex rounded apart.
+/// also at most SegmentationSeamShare of the epsilon of every segmentation node with seams (a
+/// leaf below it has a tear vertex at its level): the unfolder stitches its seams within its
+/// epsilon (at the default StitchToleranceScale, 1), and two copies of a seam vertex rounded
+/// apart are up to twice the error apart - a ceiling, measured (the moved bearing), not a
+/// guarantee: mirrored copies add their planes' rounding.
 constexpr double SegmentationSeamShare = 0.5;
+
+/// Per node: a segmentation node with seams - a leaf below it has a vertex (or a mirrored
+/// vertex's record) on a tear of its level.
+std::vector<char> SegmentationsWithSeams(const FoldingTree& tree)
+{
+  std::vector<char> seamed(tree.nodes.size(), 0);
+  for (const FoldingNode& leaf : tree.nodes)
+  {
+    if (leaf.kind != FoldingNodeKind::Leaf)
+      continue;
+    uint64_t tears = 0;
+    for (uint64_t m : leaf.mesh.tearMask)
+      tears |= m;
+    for (const MirroredFlag& f : leaf.mesh.mirroredFlags)
+      if (f.flag == LevelFlag::Tear && f.level >= 0 && f.level < 64)
+        tears |= uint64_t(1) << f.level;
+    for (int a = leaf.parent; a >= 0; a = tree.nodes[a].parent)
+    {
+      const FoldingNode& node = tree.nodes[a];
+      if (node.kind == FoldingNodeKind::Segmentation && node.depth >= 0 && node.depth < 64 &&
+        (tears >> node.depth) & 1)
+        seamed[a] = 1;
+    }
+  }
+  return seamed;
+}
 int ChooseBits(const FoldingTree& tree,
   LeafGeometryCoding coding,
   int requested,
@@ -45,15 +74,17 @@ int ChooseBits(const FoldingTree& tree,
     return requested;
   double smallest = std::numeric_limits<double>::infinity();
   double seams = std::numeric_limits<double>::infinity();
-  for (const FoldingNode& node : tree.nodes)
+  const std::vector<char> seamed =
+    segmentationSeams ? SegmentationsWithSeams(tree) : std::vector<char>(tree.nodes.size(), 0);
+  for (size_t i = 0; i < tree.nodes.size(); ++i)
   {
+    const FoldingNode& node = tree.nodes[i];
     for (double b : node.mesh.errorBudget)
       if (b > 0.0)
         smallest = std::min(smallest, b);
     if (node.kind == FoldingNodeKind::Rotation && node.epsilon > 0.0)
       seams = std::min(seams, RotationStitchShare(node.rotationOrder) * node.epsilon);
-    if (segmentationSeams && node.kind == FoldingNodeKind::Segmentation &&
-      node.children.size() > 1 && node.epsilon > 0.0)
+    if (seamed[i] && node.epsilon > 0.0)
       seams = std::min(seams, SegmentationSeamShare * node.epsilon);
   }
   const double target =

@@ -62,11 +62,12 @@ constexpr int MaximumClosingRounds = 2;
 /// them stored all 1188 faces instead of 200: it keeps its holes (docs/builder.md).
 constexpr double MaximumClosingShare = 0.1;
 constexpr int MaximumClosingFaces = 250;
-/// A first tree with rotation nodes, closed where the input is, whose unfolded area is above
-/// this many times the input's (surface laid twice within epsilon: a bearing moved, with the
-/// face and area stops off, 1.36) is rebuilt with the planes alone, kept only where it is
-/// within epsilon, closed where the input is, lays less surface twice and stores at most the
-/// closing rounds' allowance more (docs/builder.md, step 8 of "Rotation nodes").
+/// A first tree with rotation nodes whose unfolded area is above this many times the input's
+/// (surface laid twice within epsilon: a bearing moved, with the face and area stops off,
+/// 1.36) is rebuilt with the planes alone; where the first tree was closed (as the input),
+/// the planes' tree is kept only where it is within epsilon, closed, lays less surface twice
+/// and stores at most the closing rounds' allowance more (docs/builder.md, step 8 of
+/// "Rotation nodes").
 constexpr double RotationAreaRatioLimit = 1.1;
 
 /// FoldingTreeOptions::rotationNodesWhenAxial: the largest gap between two eigenvalues of the
