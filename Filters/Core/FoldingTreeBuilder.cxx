@@ -171,31 +171,6 @@ void AddDegenerateFaces(const WorkMesh& w, const PreparedMesh& pm, std::vector<c
       S[f] = 1;
 }
 
-namespace
-{
-/// Tear vertices of the segmentation at `depth`: used by faces of two different children (S
-/// is child 0, remaining component c is child 1 + c, labels per face).
-void MarkTears(WorkMesh& w, const std::vector<char>& S, const std::vector<int>& labels, int depth)
-{
-  std::vector<int> firstChild(w.points.size(), -1);
-  std::vector<char> tear(w.points.size(), 0);
-  for (int f = 0; f < w.NumberOfFaces(); ++f)
-  {
-    const int child = S[f] ? 0 : 1 + labels[f];
-    for (int v : w.triangles[f])
-    {
-      if (firstChild[v] < 0)
-        firstChild[v] = child;
-      else if (firstChild[v] != child)
-        tear[v] = 1;
-    }
-  }
-  for (int v = 0; v < w.NumberOfPoints(); ++v)
-    if (tear[v])
-      w.tear[v] |= uint64_t(1) << depth;
-}
-}
-
 // The recursion of the paper's section 4 (FoldingTreeBuilderInternal.h): leaf tests, detection,
 // the choice of S, the fold, the segmentation of the rest - named helpers, in their order.
 int Builder::Build(WorkMesh w, int parent, int depth, double eps, int folds, uint64_t pathFolds)

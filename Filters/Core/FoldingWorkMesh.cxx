@@ -100,5 +100,25 @@ std::vector<int> WeldAndDropCollapsed(WorkMesh& w)
   w = Extract(w, keep);
   return dropped;
 }
+
+void MarkTears(WorkMesh& w, const std::vector<char>& S, const std::vector<int>& labels, int depth)
+{
+  std::vector<int> firstChild(w.points.size(), -1);
+  std::vector<char> tear(w.points.size(), 0);
+  for (int f = 0; f < w.NumberOfFaces(); ++f)
+  {
+    const int child = S[f] ? 0 : 1 + labels[f];
+    for (int v : w.triangles[f])
+    {
+      if (firstChild[v] < 0)
+        firstChild[v] = child;
+      else if (firstChild[v] != child)
+        tear[v] = 1;
+    }
+  }
+  for (int v = 0; v < w.NumberOfPoints(); ++v)
+    if (tear[v])
+      w.tear[v] |= uint64_t(1) << depth;
+}
 }
 }

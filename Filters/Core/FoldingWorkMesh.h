@@ -59,6 +59,10 @@ WorkMesh ExtractFaces(const WorkMesh& w, const std::vector<int>& faces);
  * original ids of the dropped faces.
  */
 std::vector<int> WeldAndDropCollapsed(WorkMesh& w);
+
+/// Tear vertices of the segmentation at `depth`: used by faces of two different children (S
+/// is child 0, remaining component c is child 1 + c, labels per face).
+void MarkTears(WorkMesh& w, const std::vector<char>& S, const std::vector<int>& labels, int depth);
 }
 }
 
