@@ -189,7 +189,7 @@ int Compress(int argc, char* argv[])
     withoutRotation =
       ApplyCompressFoldDefaults(c.builder, f.keep.has_value(), f.minFaces.has_value(), true);
     c.builder->SetRotationNodes(vtkFoldingTreeBuilder::ROTATION_NODES_OFF); // not the default
-    withoutRotation += std::string(withoutRotation.empty() ? "" : " ") + "--no-rotation";
+    withoutRotation = WithoutRotationNodes(withoutRotation);
     if (!tryFold(c, withoutRotation.c_str()))
       return 3;
   }
@@ -204,9 +204,8 @@ int Compress(int argc, char* argv[])
     c.builder = MakeBuilder(f, &v);
     // The options that fold it again: MakeBuilder turned rotation nodes off, which on an axial
     // mesh differs from the fold command's default.
-    std::string options = v.options;
-    if (axial && !rotationGiven && !v.rotationNodes && !v.rotationWhenAxial)
-      options += std::string(options.empty() ? "" : " ") + "--no-rotation";
+    const bool off = !rotationGiven && !v.rotationNodes && !v.rotationWhenAxial;
+    const std::string options = off && axial ? WithoutRotationNodes(v.options) : v.options;
     if (!tryFold(c, options.c_str()))
       return 3;
   }

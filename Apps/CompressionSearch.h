@@ -96,6 +96,13 @@ constexpr FoldSearchVariant FoldSearchVariants[] = {
   { "--rotation --min-faces 400", false, 400, 0.0, true },
 };
 
+/// `options` as the command line spells them for a fold with rotation nodes turned off (which
+/// differs from the builder's default, WHEN_AXIAL, on an axial mesh only).
+inline std::string WithoutRotationNodes(const std::string& options)
+{
+  return options + (options.empty() ? "" : " ") + "--no-rotation";
+}
+
 /// The settings a --search fold differs in: a fold whose key was folded already is skipped.
 using FoldSearchKey = std::tuple<int, bool, int, bool, double, int>;
 inline FoldSearchKey FoldSettingsKey(vtkFoldingTreeBuilder* b)

@@ -256,8 +256,8 @@ public:
   ///@{
   /**
    * Rotation nodes (default ROTATION_NODES_WHEN_AXIAL; issue 22): where no fold lies above a
-   * region, look for a rotational symmetry of order k (2..MaximumRotationOrder, default 64, range 2..360) and,
-   * when turning one sector of 360/k degrees k times reproduces the whole region within
+   * region, look for a rotational symmetry of order k (2..MaximumRotationOrder, default 64,
+   * range 2..360) and, when turning one sector of 360/k degrees k times reproduces the whole region within
    * epsilon / 2, store that sector only (a node of kind 3 with FoldingAxisOrigin,
    * FoldingAxisDirection and FoldingRotationOrder); the sector is built with epsilon / 2 and
    * may fold again (a dihedral part becomes rotation + fold). Surfaces of revolution get the

@@ -34,16 +34,12 @@ class KeptArc
 {
 public:
   KeptArc(const RotationAxis& axis, const std::vector<Vec3>& centroids)
-    : Origin(axis.origin)
-    , Direction(axis.direction.normalized())
+    : Frame(RotationAxis{ axis.origin, axis.direction.normalized() })
   {
-    const Vec3 seed = std::abs(this->Direction.x()) < 0.9 ? Vec3::UnitX() : Vec3::UnitY();
-    this->U = (seed - seed.dot(this->Direction) * this->Direction).normalized();
-    this->V = this->Direction.cross(this->U);
     std::vector<double> angles;
     angles.reserve(centroids.size());
     for (const Vec3& c : centroids)
-      angles.push_back(this->Angle(c));
+      angles.push_back(this->Frame.Angle(c));
     std::sort(angles.begin(), angles.end());
     if (angles.size() < 2)
       return;
@@ -60,36 +56,26 @@ public:
     this->Width = 2.0 * Pi - gap;
     this->Bounded = this->Width < Pi; // else the bound is too weak to matter
   }
-  double Angle(const Vec3& p) const
-  {
-    const Vec3 r = p - this->Origin;
-    return std::atan2(r.dot(this->V), r.dot(this->U));
-  }
-  double OriginNorm() const { return this->Origin.norm(); }
-  double Radius(const Vec3& p) const
-  {
-    const Vec3 r = p - this->Origin;
-    return (r - r.dot(this->Direction) * this->Direction).norm();
-  }
-  /// A lower bound on the distance from a point at `radius` and `angle` to the kept centroids
-  /// (0 where none is known).
-  double LowerBound(double radius, double angle) const
+  /// A lower bound on the distance from p to the kept centroids (0 where none is known).
+  double LowerBound(const Vec3& p) const
   {
     if (!this->Bounded)
       return 0.0;
     const double twoPi = 2.0 * Pi;
-    double into = std::fmod(angle - this->First, twoPi); // angle past the arc's start
+    double into = std::fmod(this->Frame.Angle(p) - this->First, twoPi); // past the arc's start
     if (into < 0.0)
       into += twoPi;
     const double outside = std::min(into - this->Width, twoPi - into); // <= 0: within
     // A margin far above the rounding of the angles and the turn (the bound only skips
     // queries that cannot win, never one that ties).
     const double delta = std::min(outside, 0.5 * Pi) - 1e-9;
-    return delta > 0.0 ? radius * std::sin(delta) * (1.0 - 1e-9) : 0.0;
+    return delta > 0.0 ? this->Frame.Radius(p) * std::sin(delta) * (1.0 - 1e-9) : 0.0;
   }
+  /// The size of the coordinates about the axis' origin (for rounding margins).
+  double OriginNorm() const { return this->Frame.Axis.origin.norm(); }
 
 private:
-  Vec3 Origin, Direction, U, V;
+  const AxisFrame Frame;
   double First = 0.0, Width = 2.0 * Pi;
   bool Bounded = false;
 };
@@ -189,7 +175,7 @@ FoldingSegmentation LabelFacesByLeaf(const FoldingTree& tree,
           for (size_t t = 0; t < turns; ++t)
           {
             backs[t] = turnsBack[t].Point(c);
-            bounds[t] = arc.LowerBound(arc.Radius(backs[t]), arc.Angle(backs[t]));
+            bounds[t] = arc.LowerBound(backs[t]);
             if (bounds[t] < bounds[first])
               first = t;
           }

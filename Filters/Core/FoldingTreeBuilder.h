@@ -213,9 +213,10 @@ struct FoldingTreeOptions
    * and the seams: FoldingTreeRotation.cxx. A tree with rotation nodes that verifyBound finds
    * beyond epsilon, or with holes where the input is closed, is rebuilt with the planes alone
    * (docs/builder.md); so is one whose unfolded area is above RotationAreaRatioLimit times the
-   * input's, the planes' tree kept only where it lays less surface twice. Off by default (docs/benchmarks.md: the 29 shared meshes' builds take
-   * 70% longer, 16.7 -> 28.5 s); rotationNodesWhenAxial, on by default, turns them on where
-   * the input's moments allow a rotational symmetry of the whole surface.
+   * input's, the planes' tree kept only where it lays less surface twice. Off by default
+   * (docs/benchmarks.md: the 29 shared meshes' builds take 70% longer, 16.7 -> 28.5 s);
+   * rotationNodesWhenAxial, on by default, turns them on where the input's moments allow a
+   * rotational symmetry of the whole surface.
    */
   bool rotationNodes = false;
   /// With rotationNodes false: rotation nodes on for an input whose surface's second moments

@@ -54,6 +54,36 @@ struct AxisTurn
   Vec3 origin;
 };
 
+/// Cylindrical coordinates about an axis.
+struct AxisFrame
+{
+  explicit AxisFrame(const RotationAxis& axis)
+    : Axis(axis)
+  {
+    const Vec3& a = axis.direction;
+    const Vec3 seed = std::abs(a.x()) < 0.9 ? Vec3::UnitX() : Vec3::UnitY();
+    this->U = (seed - seed.dot(a) * a).normalized();
+    this->V = a.cross(this->U);
+  }
+  double Angle(const Vec3& p) const
+  {
+    const Vec3 r = p - this->Axis.origin;
+    return std::atan2(r.dot(this->V), r.dot(this->U));
+  }
+  double Radius(const Vec3& p) const
+  {
+    const Vec3 r = p - this->Axis.origin;
+    return (r - r.dot(this->Axis.direction) * this->Axis.direction).norm();
+  }
+  Vec3 OntoAxis(const Vec3& p) const
+  {
+    return this->Axis.origin +
+      (p - this->Axis.origin).dot(this->Axis.direction) * this->Axis.direction;
+  }
+  RotationAxis Axis;
+  Vec3 U, V;
+};
+
 /// Angle between two axes' directions in degrees, ignoring orientation (0..90).
 double AxisAngleDegrees(const RotationAxis& a, const RotationAxis& b);
 /// Distance between the axes at the point of `a` nearest to `at`.

@@ -280,12 +280,10 @@ int main(int argc, char* argv[])
       folded.insert(foldingmeshes::DecidedKey(foldingmeshes::FoldSettingsKey(first), false));
     // Labelled as the options that fold them again: rotation nodes off differs from the fold
     // command's default on an axial mesh.
-    auto withoutRotation = [](std::string label)
-    { return label + (label.empty() ? "" : " ") + "--no-rotation"; };
     if (!rotation && rotationTree)
     {
       vtkNew<vtkFoldingTreeBuilder> without;
-      fold(without, withoutRotation(ownSettings(without, false)));
+      fold(without, foldingmeshes::WithoutRotationNodes(ownSettings(without, false)));
     }
     for (size_t k = 0; search && k < std::size(foldingmeshes::FoldSearchVariants); ++k)
     {
@@ -300,7 +298,7 @@ int main(int argc, char* argv[])
       const foldingmeshes::FoldSearchVariant& v = foldingmeshes::FoldSearchVariants[k];
       foldingmeshes::ApplyFoldSearchVariant(builder, v);
       const bool off = !rotation && !v.rotationNodes && !v.rotationWhenAxial;
-      fold(builder, off && axial ? withoutRotation(v.options) : std::string(v.options));
+      fold(builder, off && axial ? foldingmeshes::WithoutRotationNodes(v.options) : v.options);
     }
     if (bytes.empty())
     {
