@@ -65,26 +65,45 @@ FaceTree::FaceTree(const PreparedMesh& mesh)
     const int large = this->Large = this->PutLargeFacesFirst();
     this->Nodes.resize(
       large > 0 ? 1 + SubtreeNodes(large) + SubtreeNodes(count - large) : SubtreeNodes(count));
+    const std::vector<Vec3>* points = &mesh.points;
+    const std::vector<Vec3>* centroids = &mesh.faceCentroids;
+    std::vector<Vec3> framePoints, frameCentroids;
     if (this->Rotated)
     {
       // The margins of PruneAdd (only a rotated frame has them).
       for (const Vec3& x : mesh.points)
         this->CoordinateScale = std::max(this->CoordinateScale, x.cwiseAbs().maxCoeff());
       this->PruneScale = 1.0 + PruneRelativeMargin;
-      std::vector<Vec3> points(mesh.points.size()), centroids(mesh.faceCentroids.size());
-      ForRanges(static_cast<vtkIdType>(points.size()),
+      framePoints.resize(mesh.points.size());
+      frameCentroids.resize(mesh.faceCentroids.size());
+      ForRanges(static_cast<vtkIdType>(framePoints.size()),
         0,
         [&](vtkIdType begin, vtkIdType end)
         {
           for (vtkIdType v = begin; v < end; ++v)
-            points[v] = this->Frame * mesh.points[v];
+            framePoints[v] = this->Frame * mesh.points[v];
         });
       for (int f : this->Order)
-        centroids[f] = this->Frame * mesh.faceCentroids[f];
-      this->Build(0, count, 0, points, centroids, large);
+        frameCentroids[f] = this->Frame * mesh.faceCentroids[f];
+      points = &framePoints;
+      centroids = &frameCentroids;
     }
-    else
-      this->Build(0, count, 0, mesh.points, mesh.faceCentroids, large);
+    // Each face's box in the frame, for the nodes' boxes and the choice of split axis.
+    std::vector<FaceBox> boxes(mesh.NumberOfFaces());
+    ForRanges(count,
+      0,
+      [&](vtkIdType begin, vtkIdType end)
+      {
+        for (vtkIdType k = begin; k < end; ++k)
+        {
+          const int f = this->Order[k];
+          const Triangle& t = mesh.triangles[f];
+          const std::vector<Vec3>& x = *points;
+          boxes[f].lo = x[t[0]].cwiseMin(x[t[1]]).cwiseMin(x[t[2]]);
+          boxes[f].hi = x[t[0]].cwiseMax(x[t[1]]).cwiseMax(x[t[2]]);
+        }
+      });
+    this->Build(0, count, 0, boxes, *centroids, large);
   }
   this->OrderIndex.assign(mesh.NumberOfFaces(), -1);
   // Appended (reserve, not resize: value-initialising PackedFace zeroes every byte first).
@@ -241,7 +260,7 @@ int FaceTree::PutLargeFacesFirst()
 void FaceTree::Build(int first,
   int count,
   int index,
-  const std::vector<Vec3>& points,
+  const std::vector<FaceBox>& boxes,
   const std::vector<Vec3>& centroids,
   int split)
 {
@@ -252,11 +271,8 @@ void FaceTree::Build(int first,
   for (int k = first; k < first + count; ++k)
   {
     const int f = this->Order[k];
-    for (int v : Mesh.triangles[f])
-    {
-      node.lo = node.lo.cwiseMin(points[v]);
-      node.hi = node.hi.cwiseMax(points[v]);
-    }
+    node.lo = node.lo.cwiseMin(boxes[f].lo);
+    node.hi = node.hi.cwiseMax(boxes[f].hi);
     clo = clo.cwiseMin(centroids[f]);
     chi = chi.cwiseMax(centroids[f]);
   }
@@ -278,9 +294,9 @@ void FaceTree::Build(int first,
     return;
   }
   assert(split == 0 || (split < count && count > LeafSize)); // PutLargeFacesFirst's split
-  int axisIndex = 0;
-  (chi - clo).maxCoeff(&axisIndex);
   const int half = split > 0 ? split : count / 2;
+  const int axisIndex =
+    split > 0 ? 0 : this->SplitAxis(first, count, half, boxes, centroids, clo, chi);
   if (split <= 0)
     std::nth_element(this->Order.begin() + first,
       this->Order.begin() + first + half,
@@ -305,7 +321,7 @@ void FaceTree::Build(int first,
   if (split > 0)
   {
     for (int c = 0; c < 2; ++c)
-      this->Build(firsts[c], counts[c], indices[c], points, centroids);
+      this->Build(firsts[c], counts[c], indices[c], boxes, centroids);
     return;
   }
   ForRanges(2,
@@ -313,8 +329,78 @@ void FaceTree::Build(int first,
     [&](vtkIdType begin, vtkIdType end)
     {
       for (vtkIdType c = begin; c < end; ++c)
-        this->Build(firsts[c], counts[c], indices[c], points, centroids);
+        this->Build(firsts[c], counts[c], indices[c], boxes, centroids);
     });
+}
+
+int FaceTree::SplitAxis(int first,
+  int count,
+  int half,
+  const std::vector<FaceBox>& boxes,
+  const std::vector<Vec3>& centroids,
+  const Vec3& clo,
+  const Vec3& chi) const
+{
+  struct Bin
+  {
+    Vec3 lo = Vec3::Constant(std::numeric_limits<double>::max());
+    Vec3 hi = Vec3::Constant(-std::numeric_limits<double>::max());
+    int count = 0;
+  };
+  constexpr int Bins = 16;
+  // Per axis: the faces in bins of their centroids, each bin's box and count.
+  Bin bins[3][Bins];
+  const Vec3 extent = chi - clo;
+  Vec3 scale = Vec3::Zero();
+  for (int a = 0; a < 3; ++a)
+    if (extent[a] > 0.0)
+      scale[a] = Bins / extent[a];
+  for (int k = first; k < first + count; ++k)
+  {
+    const int f = this->Order[k];
+    const Vec3 &lo = boxes[f].lo, &hi = boxes[f].hi;
+    for (int a = 0; a < 3; ++a)
+    {
+      const int b =
+        std::clamp(static_cast<int>((centroids[f][a] - clo[a]) * scale[a]), 0, Bins - 1);
+      Bin& bin = bins[a][b];
+      bin.lo = bin.lo.cwiseMin(lo);
+      bin.hi = bin.hi.cwiseMax(hi);
+      ++bin.count;
+    }
+  }
+  auto area = [](const Vec3& lo, const Vec3& hi)
+  {
+    const Vec3 e = (hi - lo).cwiseMax(0.0);
+    return e.x() * e.y() + e.y() * e.z() + e.z() * e.x();
+  };
+  int best = 0;
+  double bestCost = std::numeric_limits<double>::infinity();
+  for (int a = 0; a < 3; ++a)
+  {
+    if (!(extent[a] > 0.0))
+      continue;
+    // The bins below the median face go to the first half, those above to the second; the
+    // bin the median splits (unless it falls on a bin's edge) to both.
+    int below = 0, m = 0;
+    while (m < Bins && below + bins[a][m].count <= half)
+      below += bins[a][m++].count;
+    Bin sides[2];
+    for (int b = 0; b < Bins; ++b)
+      for (int side = 0; side < 2; ++side)
+        if (side == 0 ? b < m || (b == m && below < half) : b >= m)
+        {
+          sides[side].lo = sides[side].lo.cwiseMin(bins[a][b].lo);
+          sides[side].hi = sides[side].hi.cwiseMax(bins[a][b].hi);
+        }
+    const double cost = area(sides[0].lo, sides[0].hi) + area(sides[1].lo, sides[1].hi);
+    if (cost < bestCost)
+    {
+      bestCost = cost;
+      best = a;
+    }
+  }
+  return best;
 }
 
 template <typename Prune, typename Visit>
@@ -363,14 +449,14 @@ bool FaceTree::TryFace(const Vec3& p,
   Hit& hit,
   Excluded excluded) const
 {
+  // No interpolated normal of the face is compatible (on a box or a thin plate, most faces
+  // near a mirrored point face away from it): no closest point to compute.
+  if (this->Packed[k].cone.Excludes(normal, std::clamp(cosLimit, -1.0, 1.0), sinLimit))
+    return false;
   if (this->Beyond(p, k, best2))
     return false;
   const int f = this->Order[k];
   if (excluded(f))
-    return false;
-  // No interpolated normal of the face is compatible (on a box or a thin plate, most faces
-  // near a mirrored point face away from it): no closest point to compute.
-  if (this->Packed[k].cone.Excludes(normal, std::clamp(cosLimit, -1.0, 1.0), sinLimit))
     return false;
   const ClosestPointOnTriangle cp = this->ClosestPoint(p, k);
   if (cp.squaredDistance > best2 || (cp.squaredDistance == best2 && hit.face >= 0 && f > hit.face))

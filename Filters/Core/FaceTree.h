@@ -13,8 +13,9 @@
 namespace foldingmeshes
 {
 /**
- * Faces are split recursively at the median centroid along the longest axis (leaves of
- * at most 8 faces; a few faces far larger than the rest are held apart under the root first,
+ * Faces are split recursively at the median centroid along the axis whose two halves have the
+ * boxes of least total surface area (SplitAxis; leaves of at most 8 faces; a few faces far
+ * larger than the rest are held apart under the root first,
  * PutLargeFacesFirst), in the frame BoxFrame chooses (the identity, or axes along the mesh's
  * long edges when its faces' boxes are much smaller there: slivers of a rotated mesh). Every node
  * stores the bounding box of its triangles and a cone bounding the vertex normals of its faces, so
@@ -127,18 +128,38 @@ private:
     int first, count; ///< leaf: range in Order; inner: count == 0
     int left, right;  ///< inner node children
   };
+  /// A face's bounding box (in the box frame).
+  struct FaceBox
+  {
+    Vec3 lo, hi;
+  };
   /// Number of nodes of the subtree over `count` faces.
   static int SubtreeNodes(int count);
   /// Builds the subtree over Order[first, first + count) as Nodes[index] and its successors,
-  /// from the points and face centroids in the box frame.
+  /// from the faces' boxes and centroids in the box frame.
   /// `split` > 0: the first `split` faces (in Order) are the left child, the rest the right
   /// one (the root's split of PutLargeFacesFirst); else the median split.
   void Build(int first,
     int count,
     int index,
-    const std::vector<Vec3>& points,
+    const std::vector<FaceBox>& boxes,
     const std::vector<Vec3>& centroids,
     int split = 0);
+  /// The axis to split Order[first, first + count) along, its first `half` faces by centroid
+  /// on one side: the one whose two halves' boxes have the least total surface area, estimated
+  /// from the faces' boxes gathered in 16 bins of their centroids per axis (clo, chi: the
+  /// centroids' box; the bin the median face falls in counts on both sides, as the split can
+  /// share its faces out: a CAD part's flat cap, many centroids in one bin). The longest axis of
+  /// the centroids, the old rule, splits a grid of long thin boxes (a rack's rods, a bench's
+  /// slats) along their length into halves whose boxes both span it, so a query near a rod's
+  /// end visits both; by area the halves hold whole rods. Ties: the lowest axis.
+  int SplitAxis(int first,
+    int count,
+    int half,
+    const std::vector<FaceBox>& boxes,
+    const std::vector<Vec3>& centroids,
+    const Vec3& clo,
+    const Vec3& chi) const;
   /// Moves the large faces (longest edge over LargeFaceRatio times the median face's, at most
   /// one face in MaximumLargeShare) to the front of Order, in id order; returns their count
   /// (0: none, Order unchanged).
