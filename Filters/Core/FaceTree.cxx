@@ -23,6 +23,14 @@ constexpr double LargeFaceRatio = 8.0;
 constexpr size_t MaximumLargeShare = 8;
 /// Subtrees of at least this many faces build their two halves in parallel.
 constexpr int ParallelBuildFaces = 4096;
+/// Bins of the face centroids per axis for the split's surface-area estimate (FaceTree::Split).
+constexpr int SplitBins = 16;
+/// At most about this many faces (evenly spaced in Order) estimate a node's split.
+constexpr int SplitSampleFaces = 1024;
+/// From this depth on the splits are at the median face (at most log2(faces) levels more), so
+/// that the traversal's stack of 128 entries always holds a path: the area rule may peel off
+/// few faces per level.
+constexpr int MaximumAreaSplitDepth = 64;
 /// In a rotated box frame a node is skipped only when its box is farther than
 /// sqrt(best2) + E, with E = PruneAbsoluteMargin * (|p| + the mesh's coordinate scale): the
 /// rotated coordinates (of p and of the box corners) are within ~1e-15 of that scale of the
@@ -63,8 +71,6 @@ FaceTree::FaceTree(const PreparedMesh& mesh)
     this->Rotated = !this->Frame.isIdentity(0.0);
     const int count = static_cast<int>(this->Order.size());
     const int large = this->Large = this->PutLargeFacesFirst();
-    this->Nodes.resize(
-      large > 0 ? 1 + SubtreeNodes(large) + SubtreeNodes(count - large) : SubtreeNodes(count));
     const std::vector<Vec3>* points = &mesh.points;
     const std::vector<Vec3>* centroids = &mesh.faceCentroids;
     std::vector<Vec3> framePoints, frameCentroids;
@@ -103,7 +109,7 @@ FaceTree::FaceTree(const PreparedMesh& mesh)
           boxes[f].hi = x[t[0]].cwiseMax(x[t[1]]).cwiseMax(x[t[2]]);
         }
       });
-    this->Build(0, count, 0, boxes, *centroids, large);
+    this->Build(0, count, 0, boxes, *centroids, this->Nodes, large);
   }
   this->OrderIndex.assign(mesh.NumberOfFaces(), -1);
   // Appended (reserve, not resize: value-initialising PackedFace zeroes every byte first).
@@ -221,11 +227,6 @@ FaceTree::NormalCone FaceTree::NormalCone::Around(ForEachNormal forEachNormal)
   return cone;
 }
 
-int FaceTree::SubtreeNodes(int count)
-{
-  return count <= LeafSize ? 1 : 1 + SubtreeNodes(count / 2) + SubtreeNodes(count - count / 2);
-}
-
 int FaceTree::PutLargeFacesFirst()
 {
   const int count = static_cast<int>(this->Order.size());
@@ -257,11 +258,12 @@ int FaceTree::PutLargeFacesFirst()
   return large;
 }
 
-void FaceTree::Build(int first,
+int FaceTree::Build(int first,
   int count,
-  int index,
+  int depth,
   const std::vector<FaceBox>& boxes,
   const std::vector<Vec3>& centroids,
+  std::vector<Node>& nodes,
   int split)
 {
   Node node;
@@ -285,122 +287,143 @@ void FaceTree::Build(int first,
         for (int v : Mesh.triangles[this->Order[k]])
           visit(Mesh.vertexNormals[v]);
     });
-  if (count <= LeafSize)
-  {
-    node.first = first;
-    node.count = count;
-    node.left = node.right = -1;
-    this->Nodes[index] = node;
-    return;
-  }
-  assert(split == 0 || (split < count && count > LeafSize)); // PutLargeFacesFirst's split
-  const int half = split > 0 ? split : count / 2;
-  const int axisIndex =
-    split > 0 ? 0 : this->SplitAxis(first, count, half, boxes, centroids, clo, chi);
-  if (split <= 0)
-    std::nth_element(this->Order.begin() + first,
-      this->Order.begin() + first + half,
-      this->Order.begin() + first + count,
-      [&](int a, int b)
-      {
-        const double ca = centroids[a][axisIndex], cb = centroids[b][axisIndex];
-        return ca != cb ? ca < cb : a < b;
-      });
   node.first = first;
-  node.count = 0;
-  node.left = index + 1;
-  node.right = index + 1 + SubtreeNodes(half);
-  this->Nodes[index] = node;
-  // Preorder numbering fixed in advance: the two halves touch disjoint ranges of Order and
-  // Nodes, so large ones are built in parallel (ForRanges; nested calls run serially) with
-  // the same tree for any thread count. The root's split of the large faces holds few faces
-  // on its left: its halves are built one after the other, so that the rest's own halves
-  // are built in parallel.
+  node.count = count <= LeafSize ? count : 0;
+  node.left = node.right = -1;
+  const int index = static_cast<int>(nodes.size());
+  nodes.push_back(node);
+  if (count <= LeafSize)
+    return index;
+  assert(split == 0 || split < count); // PutLargeFacesFirst's split
+  const int half = split > 0 ? split : this->Split(first, count, depth, boxes, centroids, clo, chi);
+  // Preorder: the first half's subtree follows its parent, then the second half's. Large
+  // subtrees build their halves in parallel into nodes of their own, appended after (their
+  // links moved by where they land): the halves touch disjoint ranges of Order, so the tree is
+  // the same for any thread count. The root's split of the large faces holds few faces on its
+  // first side: its halves are built one after the other, so that the rest's own halves are
+  // built in parallel.
   const int firsts[2] = { first, first + half }, counts[2] = { half, count - half };
-  const int indices[2] = { node.left, node.right };
-  if (split > 0)
-  {
+  int children[2];
+  if (split > 0 || count < ParallelBuildFaces)
     for (int c = 0; c < 2; ++c)
-      this->Build(firsts[c], counts[c], indices[c], boxes, centroids);
-    return;
-  }
-  ForRanges(2,
-    count >= ParallelBuildFaces ? 1 : 2,
-    [&](vtkIdType begin, vtkIdType end)
+      children[c] = this->Build(firsts[c], counts[c], depth + 1, boxes, centroids, nodes);
+  else
+  {
+    std::vector<Node> halves[2];
+    ForRanges(2,
+      1,
+      [&](vtkIdType begin, vtkIdType end)
+      {
+        for (vtkIdType c = begin; c < end; ++c)
+          this->Build(firsts[c], counts[c], depth + 1, boxes, centroids, halves[c]);
+      });
+    for (int c = 0; c < 2; ++c)
     {
-      for (vtkIdType c = begin; c < end; ++c)
-        this->Build(firsts[c], counts[c], indices[c], boxes, centroids);
-    });
+      const int offset = children[c] = static_cast<int>(nodes.size());
+      for (Node& n : halves[c])
+      {
+        if (n.count == 0)
+        {
+          n.left += offset;
+          n.right += offset;
+        }
+        nodes.push_back(n);
+      }
+    }
+  }
+  nodes[index].left = children[0];
+  nodes[index].right = children[1];
+  return index;
 }
 
-int FaceTree::SplitAxis(int first,
+int FaceTree::Split(int first,
   int count,
-  int half,
+  int depth,
   const std::vector<FaceBox>& boxes,
   const std::vector<Vec3>& centroids,
   const Vec3& clo,
-  const Vec3& chi) const
+  const Vec3& chi)
 {
   struct Bin
   {
     Vec3 lo = Vec3::Constant(std::numeric_limits<double>::max());
     Vec3 hi = Vec3::Constant(-std::numeric_limits<double>::max());
     int count = 0;
+    void Add(const Vec3& l, const Vec3& h, int n)
+    {
+      this->lo = this->lo.cwiseMin(l);
+      this->hi = this->hi.cwiseMax(h);
+      this->count += n;
+    }
+    double Area() const
+    {
+      const Vec3 e = (this->hi - this->lo).cwiseMax(0.0);
+      return e.x() * e.y() + e.y() * e.z() + e.z() * e.x();
+    }
   };
-  constexpr int Bins = 16;
-  // Per axis: the faces in bins of their centroids, each bin's box and count.
-  Bin bins[3][Bins];
+  const auto begin = this->Order.begin() + first, end = begin + count;
   const Vec3 extent = chi - clo;
-  Vec3 scale = Vec3::Zero();
-  for (int a = 0; a < 3; ++a)
-    if (extent[a] > 0.0)
-      scale[a] = Bins / extent[a];
-  for (int k = first; k < first + count; ++k)
+  int axis = -1, boundary = 0;
+  if (depth < MaximumAreaSplitDepth)
   {
-    const int f = this->Order[k];
-    const Vec3 &lo = boxes[f].lo, &hi = boxes[f].hi;
+    // Per axis: the faces in bins of their centroids, each bin's box and count.
+    Bin bins[3][SplitBins];
+    Vec3 scale = Vec3::Zero();
+    for (int a = 0; a < 3; ++a)
+      if (extent[a] > 0.0)
+        scale[a] = SplitBins / extent[a];
+    auto binOf = [&](int f, int a) {
+      return std::clamp(static_cast<int>((centroids[f][a] - clo[a]) * scale[a]), 0, SplitBins - 1);
+    };
+    // Large nodes: every stride-th face (in Order) stands for the others in the estimate.
+    const int stride = std::max(1, count / SplitSampleFaces);
+    for (int k = first; k < first + count; k += stride)
+      for (int a = 0; a < 3; ++a)
+      {
+        const int f = this->Order[k];
+        bins[a][binOf(f, a)].Add(boxes[f].lo, boxes[f].hi, 1);
+      }
+    // The boundary between bins of least area x faces summed over the two sides (ties: the
+    // lowest axis, then the lowest boundary).
+    double best = std::numeric_limits<double>::infinity();
     for (int a = 0; a < 3; ++a)
     {
-      const int b =
-        std::clamp(static_cast<int>((centroids[f][a] - clo[a]) * scale[a]), 0, Bins - 1);
-      Bin& bin = bins[a][b];
-      bin.lo = bin.lo.cwiseMin(lo);
-      bin.hi = bin.hi.cwiseMax(hi);
-      ++bin.count;
-    }
-  }
-  auto area = [](const Vec3& lo, const Vec3& hi)
-  {
-    const Vec3 e = (hi - lo).cwiseMax(0.0);
-    return e.x() * e.y() + e.y() * e.z() + e.z() * e.x();
-  };
-  int best = 0;
-  double bestCost = std::numeric_limits<double>::infinity();
-  for (int a = 0; a < 3; ++a)
-  {
-    if (!(extent[a] > 0.0))
-      continue;
-    // The bins below the median face go to the first half, those above to the second; the
-    // bin the median splits (unless it falls on a bin's edge) to both.
-    int below = 0, m = 0;
-    while (m < Bins && below + bins[a][m].count <= half)
-      below += bins[a][m++].count;
-    Bin sides[2];
-    for (int b = 0; b < Bins; ++b)
-      for (int side = 0; side < 2; ++side)
-        if (side == 0 ? b < m || (b == m && below < half) : b >= m)
+      Bin above[SplitBins + 1];
+      for (int b = SplitBins - 1; b >= 0; --b)
+      {
+        above[b] = above[b + 1];
+        above[b].Add(bins[a][b].lo, bins[a][b].hi, bins[a][b].count);
+      }
+      Bin below;
+      for (int j = 1; j < SplitBins; ++j)
+      {
+        below.Add(bins[a][j - 1].lo, bins[a][j - 1].hi, bins[a][j - 1].count);
+        if (below.count == 0 || above[j].count == 0)
+          continue;
+        const double cost = below.Area() * below.count + above[j].Area() * above[j].count;
+        if (cost < best)
         {
-          sides[side].lo = sides[side].lo.cwiseMin(bins[a][b].lo);
-          sides[side].hi = sides[side].hi.cwiseMax(bins[a][b].hi);
+          best = cost;
+          axis = a;
+          boundary = j;
         }
-    const double cost = area(sides[0].lo, sides[0].hi) + area(sides[1].lo, sides[1].hi);
-    if (cost < bestCost)
-    {
-      bestCost = cost;
-      best = a;
+      }
     }
+    if (axis >= 0)
+      return static_cast<int>(
+        std::partition(begin, end, [&](int f) { return binOf(f, axis) < boundary; }) - begin);
   }
-  return best;
+  // All centroids in one bin on every axis (or deep): the median along the longest axis.
+  extent.maxCoeff(&axis);
+  std::nth_element(begin,
+    begin + count / 2,
+    end,
+    [&](int a, int b)
+    {
+      const double ca = centroids[a][axis], cb = centroids[b][axis];
+      return ca != cb ? ca < cb : a < b;
+    });
+  return count / 2;
 }
 
 template <typename Prune, typename Visit>

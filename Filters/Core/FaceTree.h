@@ -13,9 +13,9 @@
 namespace foldingmeshes
 {
 /**
- * Faces are split recursively at the median centroid along the axis whose two halves have the
- * boxes of least total surface area (SplitAxis; leaves of at most 8 faces; a few faces far
- * larger than the rest are held apart under the root first,
+ * Faces are split recursively by their centroids where the two children's boxes have the least
+ * surface area times faces (Split; leaves of at most 8 faces; a few faces far larger than the
+ * rest are held apart under the root first,
  * PutLargeFacesFirst), in the frame BoxFrame chooses (the identity, or axes along the mesh's
  * long edges when its faces' boxes are much smaller there: slivers of a rotated mesh). Every node
  * stores the bounding box of its triangles and a cone bounding the vertex normals of its faces, so
@@ -133,33 +133,33 @@ private:
   {
     Vec3 lo, hi;
   };
-  /// Number of nodes of the subtree over `count` faces.
-  static int SubtreeNodes(int count);
-  /// Builds the subtree over Order[first, first + count) as Nodes[index] and its successors,
-  /// from the faces' boxes and centroids in the box frame.
-  /// `split` > 0: the first `split` faces (in Order) are the left child, the rest the right
-  /// one (the root's split of PutLargeFacesFirst); else the median split.
-  void Build(int first,
+  /// Builds the subtree over Order[first, first + count) (at `depth`), appended to `nodes` in
+  /// preorder (child links: indices into `nodes`), from the faces' boxes and centroids in the
+  /// box frame; returns its root's index. `split` > 0: the first `split` faces (in Order) are
+  /// the first child, the rest the second (the root's split of PutLargeFacesFirst); else Split.
+  int Build(int first,
     int count,
-    int index,
+    int depth,
     const std::vector<FaceBox>& boxes,
     const std::vector<Vec3>& centroids,
+    std::vector<Node>& nodes,
     int split = 0);
-  /// The axis to split Order[first, first + count) along, its first `half` faces by centroid
-  /// on one side: the one whose two halves' boxes have the least total surface area, estimated
-  /// from the faces' boxes gathered in 16 bins of their centroids per axis (clo, chi: the
-  /// centroids' box; the bin the median face falls in counts on both sides, as the split can
-  /// share its faces out: a CAD part's flat cap, many centroids in one bin). The longest axis of
-  /// the centroids, the old rule, splits a grid of long thin boxes (a rack's rods, a bench's
-  /// slats) along their length into halves whose boxes both span it, so a query near a rod's
-  /// end visits both; by area the halves hold whole rods. Ties: the lowest axis.
-  int SplitAxis(int first,
+  /// Reorders Order[first, first + count) into the node's two children and returns the first
+  /// one's count: the split (a boundary between 16 bins of the centroids along one axis; clo,
+  /// chi: the centroids' box) of least surface area times faces summed over the two boxes, the
+  /// rule of ray-tracing trees (a query descends into a child about as often as its box is
+  /// large). The median along the longest axis of the centroids, the old rule, splits a grid
+  /// of long thin boxes (a rack's rods, a bench's slats) along their length into halves whose
+  /// boxes both span it, so a query near a rod's end visits both; by area the children hold
+  /// whole rods. The median is kept where every bin but one is empty, and from depth
+  /// MaximumAreaSplitDepth on.
+  int Split(int first,
     int count,
-    int half,
+    int depth,
     const std::vector<FaceBox>& boxes,
     const std::vector<Vec3>& centroids,
     const Vec3& clo,
-    const Vec3& chi) const;
+    const Vec3& chi);
   /// Moves the large faces (longest edge over LargeFaceRatio times the median face's, at most
   /// one face in MaximumLargeShare) to the front of Order, in id order; returns their count
   /// (0: none, Order unchanged).
