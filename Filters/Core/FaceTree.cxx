@@ -110,6 +110,16 @@ FaceTree::FaceTree(const PreparedMesh& mesh)
         }
       });
     this->Build(0, count, 0, boxes, *centroids, this->Nodes, large);
+    std::vector<std::pair<int, int>> stack{ { 0, 0 } }; // node, depth
+    while (!stack.empty())
+    {
+      const auto [index, depth] = stack.back();
+      stack.pop_back();
+      this->MaximumDepth = std::max(this->MaximumDepth, depth);
+      if (this->Nodes[index].count == 0)
+        stack.insert(stack.end(),
+          { { this->Nodes[index].left, depth + 1 }, { this->Nodes[index].right, depth + 1 } });
+    }
   }
   this->OrderIndex.assign(mesh.NumberOfFaces(), -1);
   // Appended (reserve, not resize: value-initialising PackedFace zeroes every byte first).

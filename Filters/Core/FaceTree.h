@@ -90,6 +90,8 @@ public:
   int NumberOfNodes() const { return static_cast<int>(this->Nodes.size()); }
   /// Faces held apart as large (the root's first child: see PutLargeFacesFirst); 0: none.
   int LargeFaces() const { return this->Large; }
+  /// Levels below the root of the deepest leaf (0: a single leaf or none).
+  int Depth() const { return this->MaximumDepth; }
   /// True when the boxes are built in a rotated frame (see BoxFrame).
   bool RotatedFrame() const { return this->Rotated; }
   /// The box frame (rows: its axes; the identity unless RotatedFrame()).
@@ -239,6 +241,7 @@ private:
   Eigen::Matrix3d Frame = Eigen::Matrix3d::Identity(); ///< rows: the box axes
   bool Rotated = false;                                ///< Frame is not the identity
   int Large = 0;                                       ///< see LargeFaces
+  int MaximumDepth = 0;                                ///< see Depth
   double PruneScale = 1.0 + 1e-12;
   double CoordinateScale = 0.0;   ///< largest |coordinate| of the mesh's points
   std::vector<int> Order;         ///< face ids, leaf ranges
