@@ -175,7 +175,7 @@ ClosestPointOnTriangle FaceTree::ClosestPoint(const Vec3& p, int k) const
                       : ClosestPointTriangle(p, face.a, face.b, face.c);
 }
 
-bool FaceTree::Beyond(const Vec3& p, int k, double best2) const
+[[gnu::always_inline]] inline bool FaceTree::Beyond(const Vec3& p, int k, double best2) const
 {
   const PackedFace& face = this->Packed[k];
   const Vec3 pc = p - face.center;
