@@ -21,15 +21,16 @@ constexpr int LeafSize = 8;
 constexpr double LargeFaceRatio = 8.0;
 /// ... unless more than one face in this many is large (then they are not outliers).
 constexpr size_t MaximumLargeShare = 8;
-/// Subtrees of at least this many faces build their two halves in parallel.
+/// Subtrees whose two halves hold at least half this many faces each build them in parallel.
 constexpr int ParallelBuildFaces = 4096;
 /// Bins of the face centroids per axis for the split's surface-area estimate (FaceTree::Split).
 constexpr int SplitBins = 16;
-/// At most about this many faces (evenly spaced in Order) estimate a node's split.
+/// A node's split is estimated from every stride-th face (in Order), stride = faces / this
+/// (rounded down): nodes of up to 2,047 faces use them all, larger ones 1,024 to 2,047 of them.
 constexpr int SplitSampleFaces = 1024;
-/// From this depth on the splits are at the median face (at most log2(faces) levels more), so
-/// that the traversal's stack of 128 entries always holds a path: the area rule may peel off
-/// few faces per level.
+/// The constructor's areaSplitDepth at most: from that depth on the splits are at the median
+/// face (at most log2(faces) levels more), so that the traversal's stack of 128 entries always
+/// holds a path - the area rule may peel off few faces per level.
 constexpr int MaximumAreaSplitDepth = 64;
 /// In a rotated box frame a node is skipped only when its box is farther than
 /// sqrt(best2) + E, with E = PruneAbsoluteMargin * (|p| + the mesh's coordinate scale): the
@@ -59,8 +60,9 @@ double FaceTree::PruneAdd(const Vec3& p) const
   return e * e * (1.0 + 1.0 / PruneRelativeMargin);
 }
 
-FaceTree::FaceTree(const PreparedMesh& mesh)
+FaceTree::FaceTree(const PreparedMesh& mesh, int areaSplitDepth)
   : Mesh(mesh)
+  , AreaSplitDepth(std::clamp(areaSplitDepth, 0, MaximumAreaSplitDepth))
 {
   for (int f = 0; f < mesh.NumberOfFaces(); ++f)
     if (!mesh.faceDegenerate[f])
@@ -306,15 +308,15 @@ int FaceTree::Build(int first,
     return index;
   assert(split == 0 || split < count); // PutLargeFacesFirst's split
   const int half = split > 0 ? split : this->Split(first, count, depth, boxes, centroids, clo, chi);
-  // Preorder: the first half's subtree follows its parent, then the second half's. Large
-  // subtrees build their halves in parallel into nodes of their own, appended after (their
-  // links moved by where they land): the halves touch disjoint ranges of Order, so the tree is
-  // the same for any thread count. The root's split of the large faces holds few faces on its
-  // first side: its halves are built one after the other, so that the rest's own halves are
-  // built in parallel.
+  // Preorder: the first half's subtree follows its parent, then the second half's. Two large
+  // halves (2,048 faces and more each) are built in parallel into nodes of their own, appended
+  // after (their links moved by where they land): the halves touch disjoint ranges of Order, so
+  // the tree is the same for any thread count. A split that peels off few faces, and the root's
+  // split of the large faces, build their halves one after the other, so that the larger
+  // half's own halves are built in parallel (and its nodes are not copied).
   const int firsts[2] = { first, first + half }, counts[2] = { half, count - half };
   int children[2];
-  if (split > 0 || count < ParallelBuildFaces)
+  if (split > 0 || std::min(half, count - half) < ParallelBuildFaces / 2)
     for (int c = 0; c < 2; ++c)
       children[c] = this->Build(firsts[c], counts[c], depth + 1, boxes, centroids, nodes);
   else
@@ -374,16 +376,19 @@ int FaceTree::Split(int first,
   const auto begin = this->Order.begin() + first, end = begin + count;
   const Vec3 extent = chi - clo;
   int axis = -1, boundary = 0;
-  if (depth < MaximumAreaSplitDepth)
+  if (depth < this->AreaSplitDepth)
   {
     // Per axis: the faces in bins of their centroids, each bin's box and count.
     Bin bins[3][SplitBins];
     Vec3 scale = Vec3::Zero();
     for (int a = 0; a < 3; ++a)
-      if (extent[a] > 0.0)
+      if (extent[a] > 0.0 && std::isfinite(SplitBins / extent[a]))
         scale[a] = SplitBins / extent[a];
-    auto binOf = [&](int f, int a) {
-      return std::clamp(static_cast<int>((centroids[f][a] - clo[a]) * scale[a]), 0, SplitBins - 1);
+    // The comparisons keep the cast in range (and would send a NaN to bin 0).
+    auto binOf = [&](int f, int a)
+    {
+      const double t = (centroids[f][a] - clo[a]) * scale[a];
+      return t >= SplitBins - 1 ? SplitBins - 1 : t >= 1.0 ? static_cast<int>(t) : 0;
     };
     // Large nodes: every stride-th face (in Order) stands for the others in the estimate.
     const int stride = std::max(1, count / SplitSampleFaces);
@@ -423,7 +428,7 @@ int FaceTree::Split(int first,
       return static_cast<int>(
         std::partition(begin, end, [&](int f) { return binOf(f, axis) < boundary; }) - begin);
   }
-  // All centroids in one bin on every axis (or deep): the median along the longest axis.
+  // The sampled centroids in one bin on every axis (or deep): the median along the longest axis.
   extent.maxCoeff(&axis);
   std::nth_element(begin,
     begin + count / 2,

@@ -15,13 +15,12 @@ namespace foldingmeshes
 /**
  * Faces are split recursively by their centroids where the two children's boxes have the least
  * surface area times faces (Split; leaves of at most 8 faces; a few faces far larger than the
- * rest are held apart under the root first,
- * PutLargeFacesFirst), in the frame BoxFrame chooses (the identity, or axes along the mesh's
- * long edges when its faces' boxes are much smaller there: slivers of a rotated mesh). Every node
- * stores the bounding box of its triangles and a cone bounding the vertex normals of its faces, so
- * a query skips whole subtrees that are too far away *or* whose normals cannot be compatible with
- * the query normal. Results are exact (ties: lowest face id). Degenerate faces are left out.
- * Queries are const and thread-safe.
+ * rest are held apart under the root first, PutLargeFacesFirst), in the frame BoxFrame chooses (the
+ * identity, or axes along the mesh's long edges when its faces' boxes are much smaller there:
+ * slivers of a rotated mesh). Every node stores the bounding box of its triangles and a cone
+ * bounding the vertex normals of its faces, so a query skips whole subtrees that are too far away
+ * *or* whose normals cannot be compatible with the query normal. Results are exact (ties: lowest
+ * face id). Degenerate faces are left out. Queries are const and thread-safe.
  *
  * Why not vtkStaticCellLocator: its API answers "closest cell" or "cells in a box", not
  * "closest cell whose interpolated normal is within 45 degrees of n". Emulating that with
@@ -31,7 +30,9 @@ namespace foldingmeshes
 class FaceTree
 {
 public:
-  explicit FaceTree(const PreparedMesh& mesh);
+  /// `areaSplitDepth`: the depth from which nodes split at the median instead of by surface
+  /// area (see Split; tests lower it to check the median path).
+  explicit FaceTree(const PreparedMesh& mesh, int areaSplitDepth = 64);
 
   struct Hit
   {
@@ -153,8 +154,8 @@ private:
   /// large). The median along the longest axis of the centroids, the old rule, splits a grid
   /// of long thin boxes (a rack's rods, a bench's slats) along their length into halves whose
   /// boxes both span it, so a query near a rod's end visits both; by area the children hold
-  /// whole rods. The median is kept where every bin but one is empty, and from depth
-  /// MaximumAreaSplitDepth on.
+  /// whole rods. The median is kept where the sampled centroids fall in one bin on every
+  /// axis, and from depth AreaSplitDepth on.
   int Split(int first,
     int count,
     int depth,
@@ -235,13 +236,14 @@ private:
   /// accurate normal: the bounding sphere's distance). The margins are well above the
   /// rounding errors, so a face whose computed distance could be at most sqrt(best2) is
   /// never skipped: the results are exactly those of testing every face.
-  bool Beyond(const Vec3& p, int k, double best2) const;
+  inline bool Beyond(const Vec3& p, int k, double best2) const;
 
   const PreparedMesh& Mesh;
   Eigen::Matrix3d Frame = Eigen::Matrix3d::Identity(); ///< rows: the box axes
   bool Rotated = false;                                ///< Frame is not the identity
   int Large = 0;                                       ///< see LargeFaces
   int MaximumDepth = 0;                                ///< see Depth
+  int AreaSplitDepth = 64;                             ///< see the constructor
   double PruneScale = 1.0 + 1e-12;
   double CoordinateScale = 0.0;   ///< largest |coordinate| of the mesh's points
   std::vector<int> Order;         ///< face ids, leaf ranges
