@@ -26,8 +26,6 @@
 //   faces, one of them large, and with the turned cylinder below (a rotated frame too); and flat
 //   plates turned obliquely (where the nodes' oriented boxes, not their axis-aligned ones, prune):
 //   bit for bit the exhaustive scan.
-// - the split rules (surface area, the median from a given depth on): the median tree's
-//   depth, and bit for bit the scan's answers with either.
 // - a capped cylinder of long slivers (the artist-like chair's legs) under a random rotation:
 //   the tree builds its boxes in a rotated frame (not for the cylinder as built, axis-aligned),
 //   and its answers - ClosestCompatibleFace, ClosestFace with and without excluded faces,
@@ -674,45 +672,6 @@ int main()
     CheckExact("turned cylinder with large triangles", both, 300, 0.1);
     CheckPlainExact("turned cylinder with large triangles", both, 300, 0.1);
     CheckExactAtSurface("turned cylinder with large triangles, on the surface and far", both, 600);
-  }
-  {
-    // The two split rules: by surface area (the default) and at the median from depth 0 or 3
-    // on (the constructor's areaSplitDepth; the median is the rule from depth 64 on, which keeps
-    // the traversal's stack safe). The median tree of 3,000 faces is 9 levels deep (3000 ->
-    // 1500 -> ... -> 6); each tree answers bit for bit as the exhaustive scan.
-    const PreparedMesh m =
-      coretest::Prepare(coretest::ToTriangleMesh(MakeBilateralBlob(3000).mesh));
-    const int faces = m.NumberOfFaces();
-    int medianDepth = 0;
-    for (int count = faces; count > 8; count -= count / 2)
-      ++medianDepth;
-    const double cos45 = std::cos(kPi / 4);
-    for (const int areaSplitDepth : { 64, 3, 0 })
-    {
-      const FaceTree tree(m, areaSplitDepth);
-      if (areaSplitDepth == 0)
-        EXPECT(tree.Depth() == medianDepth,
-          "median splits: depth " << tree.Depth() << ", expected " << medianDepth);
-      else
-        EXPECT(tree.Depth() <= areaSplitDepth + medianDepth,
-          "area splits to depth " << areaSplitDepth << ": tree " << tree.Depth() << " deep");
-      int mismatches = 0;
-      for (int q = 0; q < 300; ++q)
-      {
-        const int v = static_cast<int>(rng() % m.NumberOfPoints());
-        const Vec3 p = m.points[v] + U(-0.1, 0.1) * m.diagonal * RandomUnit();
-        const Vec3 n = q % 2 == 0 ? RandomUnit() : m.vertexNormals[v];
-        const FaceTree::Hit plain = tree.ClosestFace(p, kInf),
-                            plainRef = ExhaustiveClosest(m, p, kInf);
-        const FaceTree::Hit hit = tree.ClosestCompatibleFace(p, n, cos45, kInf),
-                            ref = ExhaustiveCompatible(m, p, n, cos45, kInf);
-        mismatches += plain.face != plainRef.face || plain.distance != plainRef.distance ||
-          hit.face != ref.face || hit.distance != ref.distance || tree.NearestCentroidFace(p) < 0;
-      }
-      EXPECT(mismatches == 0,
-        "area splits to depth " << areaSplitDepth << ": " << mismatches
-                                << " of 300 answers differ from the scan");
-    }
   }
   std::printf("TestFaceTree: %.2f s\n", coretest::Seconds(t0));
   return coretest::Finish("TestFaceTree");
