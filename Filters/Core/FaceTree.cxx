@@ -60,6 +60,42 @@ double FaceTree::PruneAdd(const Vec3& p) const
   return e * e * (1.0 + 1.0 / PruneRelativeMargin);
 }
 
+namespace
+{
+/// x rounded to a float not above (Down) or not below (Up) it.
+float Down(double x)
+{
+  const float f = static_cast<float>(x);
+  return static_cast<double>(f) > x ? std::nextafter(f, -std::numeric_limits<float>::infinity())
+                                    : f;
+}
+float Up(double x)
+{
+  const float f = static_cast<float>(x);
+  return static_cast<double>(f) < x ? std::nextafter(f, std::numeric_limits<float>::infinity()) : f;
+}
+}
+
+FaceTree::FloatBox FaceTree::FloatBox::Around(const Vec3& lo, const Vec3& hi)
+{
+  FloatBox box;
+  for (int a = 0; a < 3; ++a)
+  {
+    box.lo[a] = Down(lo[a]);
+    box.hi[a] = Up(hi[a]);
+  }
+  return box;
+}
+
+FaceTree::FloatCone FaceTree::FloatCone::Of(const NormalCone& cone)
+{
+  FloatCone c;
+  c.axis = cone.axis.cast<float>();
+  c.cos = cone.cos <= -1.0 ? -1.0f : Down(cone.cos);
+  c.sin = cone.cos <= -1.0 ? 0.0f : Up(cone.sin);
+  return c;
+}
+
 FaceTree::FaceTree(const PreparedMesh& mesh, int areaSplitDepth)
   : Mesh(mesh)
   , AreaSplitDepth(std::clamp(areaSplitDepth, 0, MaximumAreaSplitDepth))
@@ -112,6 +148,26 @@ FaceTree::FaceTree(const PreparedMesh& mesh, int areaSplitDepth)
         }
       });
     this->Build(0, count, 0, boxes, *centroids, this->Nodes, large);
+    // The centroids' boxes, children (later in preorder) before their parents.
+    this->CentroidBoxes.resize(this->Nodes.size());
+    for (size_t i = this->Nodes.size(); i-- > 0;)
+    {
+      const Node& node = this->Nodes[i];
+      Vec3 clo = Vec3::Constant(std::numeric_limits<double>::max()), chi = -clo;
+      if (node.count > 0)
+        for (int k = node.first; k < node.first + node.count; ++k)
+        {
+          clo = clo.cwiseMin((*centroids)[this->Order[k]]);
+          chi = chi.cwiseMax((*centroids)[this->Order[k]]);
+        }
+      else
+        for (int child : { node.left, node.right })
+        {
+          clo = clo.cwiseMin(this->CentroidBoxes[child].lo.cast<double>());
+          chi = chi.cwiseMax(this->CentroidBoxes[child].hi.cast<double>());
+        }
+      this->CentroidBoxes[i] = FloatBox::Around(clo, chi);
+    }
     std::vector<std::pair<int, int>> stack{ { 0, 0 } }; // node, depth
     while (!stack.empty())
     {
@@ -279,26 +335,24 @@ int FaceTree::Build(int first,
   int split)
 {
   Node node;
-  node.lo = Vec3::Constant(std::numeric_limits<double>::max());
-  node.hi = -node.lo;
-  Vec3 clo = node.lo, chi = node.hi;
+  Vec3 lo = Vec3::Constant(std::numeric_limits<double>::max()), hi = -lo;
+  Vec3 clo = lo, chi = hi;
   for (int k = first; k < first + count; ++k)
   {
     const int f = this->Order[k];
-    node.lo = node.lo.cwiseMin(boxes[f].lo);
-    node.hi = node.hi.cwiseMax(boxes[f].hi);
+    lo = lo.cwiseMin(boxes[f].lo);
+    hi = hi.cwiseMax(boxes[f].hi);
     clo = clo.cwiseMin(centroids[f]);
     chi = chi.cwiseMax(centroids[f]);
   }
-  node.clo = clo;
-  node.chi = chi;
-  node.cone = NormalCone::Around(
+  node.box = FloatBox::Around(lo, hi);
+  node.cone = FloatCone::Of(NormalCone::Around(
     [&](const auto& visit)
     {
       for (int k = first; k < first + count; ++k)
         for (int v : Mesh.triangles[this->Order[k]])
           visit(Mesh.vertexNormals[v]);
-    });
+    }));
   node.first = first;
   node.count = count <= LeafSize ? count : 0;
   node.left = node.right = -1;
@@ -452,7 +506,7 @@ void FaceTree::Traverse(const Vec3& p, const double& best2, Prune prune, Visit v
   double stackDistance2[128];
   int top = 0;
   stack[top] = 0;
-  stackDistance2[top++] = BoxDistance2(this->Nodes[0].lo, this->Nodes[0].hi, q);
+  stackDistance2[top++] = this->Nodes[0].box.Distance2(q);
   while (top > 0)
   {
     --top;
@@ -467,8 +521,8 @@ void FaceTree::Traverse(const Vec3& p, const double& best2, Prune prune, Visit v
         visit(k);
       continue;
     }
-    const double dl = BoxDistance2(this->Nodes[node.left].lo, this->Nodes[node.left].hi, q);
-    const double dr = BoxDistance2(this->Nodes[node.right].lo, this->Nodes[node.right].hi, q);
+    const double dl = this->Nodes[node.left].box.Distance2(q);
+    const double dr = this->Nodes[node.right].box.Distance2(q);
     const bool leftFirst = dl <= dr;
     stack[top] = leftFirst ? node.right : node.left;
     stackDistance2[top++] = leftFirst ? dr : dl;
@@ -645,7 +699,7 @@ int FaceTree::NearestCentroidFace(const Vec3& p) const
   double stackDistance2[128];
   int top = 0;
   stack[top] = 0;
-  stackDistance2[top++] = BoxDistance2(this->Nodes[0].clo, this->Nodes[0].chi, q);
+  stackDistance2[top++] = this->CentroidBoxes[0].Distance2(q);
   while (top > 0)
   {
     --top;
@@ -666,8 +720,8 @@ int FaceTree::NearestCentroidFace(const Vec3& p) const
       }
       continue;
     }
-    const double dl = BoxDistance2(this->Nodes[node.left].clo, this->Nodes[node.left].chi, q);
-    const double dr = BoxDistance2(this->Nodes[node.right].clo, this->Nodes[node.right].chi, q);
+    const double dl = this->CentroidBoxes[node.left].Distance2(q);
+    const double dr = this->CentroidBoxes[node.right].Distance2(q);
     const bool leftFirst = dl <= dr;
     stack[top] = leftFirst ? node.right : node.left;
     stackDistance2[top++] = leftFirst ? dr : dl;

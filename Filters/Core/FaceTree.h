@@ -123,11 +123,40 @@ private:
       return normal.dot(this->axis) < this->cos * cosL - this->sin * sinL - 1e-12;
     }
   };
-  struct Node
+  /// A box in single precision, rounded outward: it holds the double box it was made from,
+  /// so it prunes nothing that box would not (the results stay those of the double boxes).
+  struct FloatBox
   {
-    Vec3 lo, hi;      ///< box of the triangles
-    Vec3 clo, chi;    ///< box of the face centroids
-    NormalCone cone;  ///< of the vertex normals of its faces
+    Eigen::Vector3f lo, hi;
+    static FloatBox Around(const Vec3& lo, const Vec3& hi);
+    /// Squared distance of p (in the box frame) to the box, in double.
+    double Distance2(const Vec3& p) const
+    {
+      return BoxDistance2(this->lo.cast<double>(), this->hi.cast<double>(), p);
+    }
+  };
+  /// A node's NormalCone in single precision. Excludes tests with a margin (1e-6) far above
+  /// the rounding of the axis, cosine and sine (about 1e-7): it excludes only normals the
+  /// double cone excludes, so the results stay the same.
+  struct FloatCone
+  {
+    Eigen::Vector3f axis;
+    float cos, sin;
+    static FloatCone Of(const NormalCone& cone);
+    bool Excludes(const Vec3& normal, double cosL, double sinL) const
+    {
+      if (this->cos <= -1.0f || !(cosL > 1e-6 - this->cos))
+        return false;
+      return normal.dot(this->axis.cast<double>()) <
+        double(this->cos) * cosL - double(this->sin) * sinL - 1e-6;
+    }
+  };
+  /// What the traversal reads of a node, in one 64-byte line (the boxes of the face centroids,
+  /// for NearestCentroidFace, are apart: CentroidBoxes).
+  struct alignas(64) Node
+  {
+    FloatBox box;     ///< of the triangles
+    FloatCone cone;   ///< of the vertex normals of its faces
     int first, count; ///< leaf: range in Order; inner: count == 0
     int left, right;  ///< inner node children
   };
@@ -250,6 +279,7 @@ private:
   std::vector<PackedFace> Packed; ///< per Order entry
   std::vector<int> OrderIndex;    ///< face id -> index into Order (-1: degenerate)
   std::vector<Node> Nodes;
+  std::vector<FloatBox> CentroidBoxes; ///< per node: the box of its faces' centroids
 };
 
 /// FaceTree::ClosestFace behind the ClosestFaceQuery interface (degenerate faces left out, ties
