@@ -15,28 +15,18 @@ namespace foldingmeshes
 {
 namespace
 {
-constexpr int LeafSize = 8;
-/// Faces whose longest edge is more than this many times the median face's are large: the
-/// root's first child holds them, so that their boxes do not swell the boxes of the rest.
-constexpr double LargeFaceRatio = 8.0;
-/// ... unless more than one face in this many is large (then they are not outliers).
-constexpr size_t MaximumLargeShare = 8;
 /// Subtrees whose two halves hold at least half this many faces each build them in parallel.
 constexpr int ParallelBuildFaces = 4096;
-/// Bins of the face centroids per axis for the split's surface-area estimate (FaceTree::Split).
-constexpr int SplitBins = 16;
-/// A node's split is estimated from every stride-th face (in Order), stride = faces / this
-/// (rounded down): nodes of up to 2,047 faces use them all, larger ones 1,024 to 2,047 of them.
-constexpr int SplitSampleFaces = 1024;
 /// The constructor's areaSplitDepth at most: from that depth on the splits are at the median
 /// face (at most log2(faces) levels more), so that the traversal's stack of 128 entries always
 /// holds a path - the area rule may peel off few faces per level.
 constexpr int MaximumAreaSplitDepth = 64;
-/// In a rotated box frame a node is skipped only when its box is farther than
-/// sqrt(best2) + E, with E = PruneAbsoluteMargin * (|p| + the mesh's coordinate scale): the
-/// rotated coordinates (of p and of the box corners) are within ~1e-15 of that scale of the
-/// exact ones, and the frame is orthonormal within ~1e-15, so the box's computed distance
-/// exceeds every true distance to its faces by far less than E. With
+/// A node is skipped only when its box is farther than sqrt(best2) + E, with
+/// E = PruneAbsoluteMargin * (|p| + the mesh's coordinate scale): the query's and the box
+/// corners' coordinates, rotated into the box frame (if it is not the identity) and taken
+/// relative to the tree's Origin, are within ~1e-15 of that scale of the exact ones (the float
+/// boxes are rounded outward from those), and the frame is orthonormal within ~1e-15, so the
+/// box's computed distance exceeds every true distance to its faces by far less than E. With
 /// (a + E)^2 <= a^2 (1 + eta) + E^2 (1 + 1/eta), eta = PruneRelativeMargin, the test
 /// needs no square root.
 constexpr double PruneRelativeMargin = 1e-6;
@@ -53,8 +43,6 @@ std::pair<double, double> ConeLimits(double cosLimit)
 
 double FaceTree::PruneAdd(const Vec3& p) const
 {
-  if (!this->Rotated)
-    return 0.0;
   const double e =
     PruneAbsoluteMargin * std::sqrt(3.0) * (p.cwiseAbs().maxCoeff() + this->CoordinateScale);
   return e * e * (1.0 + 1.0 / PruneRelativeMargin);
@@ -112,12 +100,12 @@ FaceTree::FaceTree(const PreparedMesh& mesh, int areaSplitDepth)
     const std::vector<Vec3>* points = &mesh.points;
     const std::vector<Vec3>* centroids = &mesh.faceCentroids;
     std::vector<Vec3> framePoints, frameCentroids;
+    // The margins of PruneAdd.
+    this->PruneScale = 1.0 + PruneRelativeMargin;
+    for (const Vec3& x : mesh.points)
+      this->CoordinateScale = std::max(this->CoordinateScale, x.cwiseAbs().maxCoeff());
     if (this->Rotated)
     {
-      // The margins of PruneAdd (only a rotated frame has them).
-      for (const Vec3& x : mesh.points)
-        this->CoordinateScale = std::max(this->CoordinateScale, x.cwiseAbs().maxCoeff());
-      this->PruneScale = 1.0 + PruneRelativeMargin;
       framePoints.resize(mesh.points.size());
       frameCentroids.resize(mesh.faceCentroids.size());
       ForRanges(static_cast<vtkIdType>(framePoints.size()),
@@ -147,26 +135,38 @@ FaceTree::FaceTree(const PreparedMesh& mesh, int areaSplitDepth)
           boxes[f].hi = x[t[0]].cwiseMax(x[t[1]]).cwiseMax(x[t[2]]);
         }
       });
+    // The nodes' boxes are stored relative to the centre of the faces' box (float keeps
+    // 24 bits of a coordinate: of the mesh's own size, not of its distance from the origin).
+    Vec3 lo = Vec3::Constant(std::numeric_limits<double>::max()), hi = -lo;
+    for (int f : this->Order)
+    {
+      lo = lo.cwiseMin(boxes[f].lo);
+      hi = hi.cwiseMax(boxes[f].hi);
+    }
+    this->Origin = 0.5 * lo + 0.5 * hi;
+    if (!this->Origin.allFinite())
+      this->Origin = Vec3::Zero();
     this->Build(0, count, 0, boxes, *centroids, this->Nodes, large);
     // The centroids' boxes, children (later in preorder) before their parents.
     this->CentroidBoxes.resize(this->Nodes.size());
     for (size_t i = this->Nodes.size(); i-- > 0;)
     {
       const Node& node = this->Nodes[i];
+      FloatBox& box = this->CentroidBoxes[i];
+      if (node.count == 0)
+      {
+        const FloatBox &l = this->CentroidBoxes[node.left], &r = this->CentroidBoxes[node.right];
+        box.lo = l.lo.cwiseMin(r.lo);
+        box.hi = l.hi.cwiseMax(r.hi);
+        continue;
+      }
       Vec3 clo = Vec3::Constant(std::numeric_limits<double>::max()), chi = -clo;
-      if (node.count > 0)
-        for (int k = node.first; k < node.first + node.count; ++k)
-        {
-          clo = clo.cwiseMin((*centroids)[this->Order[k]]);
-          chi = chi.cwiseMax((*centroids)[this->Order[k]]);
-        }
-      else
-        for (int child : { node.left, node.right })
-        {
-          clo = clo.cwiseMin(this->CentroidBoxes[child].lo.cast<double>());
-          chi = chi.cwiseMax(this->CentroidBoxes[child].hi.cast<double>());
-        }
-      this->CentroidBoxes[i] = FloatBox::Around(clo, chi);
+      for (int k = node.first; k < node.first + node.count; ++k)
+      {
+        clo = clo.cwiseMin((*centroids)[this->Order[k]]);
+        chi = chi.cwiseMax((*centroids)[this->Order[k]]);
+      }
+      box = FloatBox::Around(clo - this->Origin, chi - this->Origin);
     }
     std::vector<std::pair<int, int>> stack{ { 0, 0 } }; // node, depth
     while (!stack.empty())
@@ -295,37 +295,6 @@ FaceTree::NormalCone FaceTree::NormalCone::Around(ForEachNormal forEachNormal)
   return cone;
 }
 
-int FaceTree::PutLargeFacesFirst()
-{
-  const int count = static_cast<int>(this->Order.size());
-  if (count <= LeafSize)
-    return 0;
-  std::vector<double> longest(count);
-  for (int k = 0; k < count; ++k)
-  {
-    const Triangle& t = this->Mesh.triangles[this->Order[k]];
-    const Vec3 &a = this->Mesh.points[t[0]], &b = this->Mesh.points[t[1]],
-               &c = this->Mesh.points[t[2]];
-    longest[k] = std::max({ (b - a).squaredNorm(), (c - a).squaredNorm(), (c - b).squaredNorm() });
-  }
-  std::vector<double> sorted = longest;
-  std::nth_element(sorted.begin(), sorted.begin() + count / 2, sorted.end());
-  // The face at count / 2 (the upper median for an even count); an infinite one: none large.
-  const double limit = LargeFaceRatio * LargeFaceRatio * sorted[count / 2];
-  const int large = static_cast<int>(
-    std::count_if(longest.begin(), longest.end(), [&](double l) { return l > limit; }));
-  if (large == 0 || static_cast<size_t>(large) * MaximumLargeShare > static_cast<size_t>(count))
-    return 0;
-  std::vector<int> reordered;
-  reordered.reserve(count);
-  for (const bool first : { true, false })
-    for (int k = 0; k < count; ++k)
-      if ((longest[k] > limit) == first)
-        reordered.push_back(this->Order[k]);
-  this->Order = std::move(reordered);
-  return large;
-}
-
 int FaceTree::Build(int first,
   int count,
   int depth,
@@ -345,7 +314,7 @@ int FaceTree::Build(int first,
     clo = clo.cwiseMin(centroids[f]);
     chi = chi.cwiseMax(centroids[f]);
   }
-  node.box = FloatBox::Around(lo, hi);
+  node.box = FloatBox::Around(lo - this->Origin, hi - this->Origin);
   node.cone = FloatCone::Of(NormalCone::Around(
     [&](const auto& visit)
     {
@@ -400,99 +369,6 @@ int FaceTree::Build(int first,
   nodes[index].left = children[0];
   nodes[index].right = children[1];
   return index;
-}
-
-int FaceTree::Split(int first,
-  int count,
-  int depth,
-  const std::vector<FaceBox>& boxes,
-  const std::vector<Vec3>& centroids,
-  const Vec3& clo,
-  const Vec3& chi)
-{
-  struct Bin
-  {
-    Vec3 lo = Vec3::Constant(std::numeric_limits<double>::max());
-    Vec3 hi = Vec3::Constant(-std::numeric_limits<double>::max());
-    int count = 0;
-    void Add(const Vec3& l, const Vec3& h, int n)
-    {
-      this->lo = this->lo.cwiseMin(l);
-      this->hi = this->hi.cwiseMax(h);
-      this->count += n;
-    }
-    double Area() const
-    {
-      const Vec3 e = (this->hi - this->lo).cwiseMax(0.0);
-      return e.x() * e.y() + e.y() * e.z() + e.z() * e.x();
-    }
-  };
-  const auto begin = this->Order.begin() + first, end = begin + count;
-  const Vec3 extent = chi - clo;
-  int axis = -1, boundary = 0;
-  if (depth < this->AreaSplitDepth)
-  {
-    // Per axis: the faces in bins of their centroids, each bin's box and count.
-    Bin bins[3][SplitBins];
-    Vec3 scale = Vec3::Zero();
-    for (int a = 0; a < 3; ++a)
-      if (extent[a] > 0.0 && std::isfinite(SplitBins / extent[a]))
-        scale[a] = SplitBins / extent[a];
-    // The comparisons keep the cast in range (and would send a NaN to bin 0).
-    auto binOf = [&](int f, int a)
-    {
-      const double t = (centroids[f][a] - clo[a]) * scale[a];
-      return t >= SplitBins - 1 ? SplitBins - 1 : t >= 1.0 ? static_cast<int>(t) : 0;
-    };
-    // Large nodes: every stride-th face (in Order) stands for the others in the estimate.
-    const int stride = std::max(1, count / SplitSampleFaces);
-    for (int k = first; k < first + count; k += stride)
-      for (int a = 0; a < 3; ++a)
-      {
-        const int f = this->Order[k];
-        bins[a][binOf(f, a)].Add(boxes[f].lo, boxes[f].hi, 1);
-      }
-    // The boundary between bins of least area x faces summed over the two sides (ties: the
-    // lowest axis, then the lowest boundary).
-    double best = std::numeric_limits<double>::infinity();
-    for (int a = 0; a < 3; ++a)
-    {
-      Bin above[SplitBins + 1];
-      for (int b = SplitBins - 1; b >= 0; --b)
-      {
-        above[b] = above[b + 1];
-        above[b].Add(bins[a][b].lo, bins[a][b].hi, bins[a][b].count);
-      }
-      Bin below;
-      for (int j = 1; j < SplitBins; ++j)
-      {
-        below.Add(bins[a][j - 1].lo, bins[a][j - 1].hi, bins[a][j - 1].count);
-        if (below.count == 0 || above[j].count == 0)
-          continue;
-        const double cost = below.Area() * below.count + above[j].Area() * above[j].count;
-        if (cost < best)
-        {
-          best = cost;
-          axis = a;
-          boundary = j;
-        }
-      }
-    }
-    if (axis >= 0)
-      return static_cast<int>(
-        std::partition(begin, end, [&](int f) { return binOf(f, axis) < boundary; }) - begin);
-  }
-  // The sampled centroids in one bin on every axis (or deep): the median along the longest axis.
-  extent.maxCoeff(&axis);
-  std::nth_element(begin,
-    begin + count / 2,
-    end,
-    [&](int a, int b)
-    {
-      const double ca = centroids[a][axis], cb = centroids[b][axis];
-      return ca != cb ? ca < cb : a < b;
-    });
-  return count / 2;
 }
 
 template <typename Prune, typename Visit>

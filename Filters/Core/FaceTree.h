@@ -123,6 +123,8 @@ private:
       return normal.dot(this->axis) < this->cos * cosL - this->sin * sinL - 1e-12;
     }
   };
+  /// Faces per leaf at most.
+  static constexpr int LeafSize = 8;
   /// A box in single precision, rounded outward: it holds the double box it was made from,
   /// so it prunes nothing that box would not (the results stay those of the double boxes).
   struct FloatBox
@@ -160,6 +162,7 @@ private:
     int first, count; ///< leaf: range in Order; inner: count == 0
     int left, right;  ///< inner node children
   };
+  static_assert(sizeof(Node) == 64, "a node is one cache line");
   /// A face's bounding box (in the box frame).
   struct FaceBox
   {
@@ -196,14 +199,15 @@ private:
   /// one face in MaximumLargeShare) to the front of Order, in id order; returns their count
   /// (0: none, Order unchanged).
   int PutLargeFacesFirst();
-  /// p in the box frame.
-  Vec3 InFrame(const Vec3& p) const { return this->Rotated ? Vec3(this->Frame * p) : p; }
+  /// p in the box frame, relative to Origin (as the nodes' boxes).
+  Vec3 InFrame(const Vec3& p) const
+  {
+    return (this->Rotated ? Vec3(this->Frame * p) : p) - this->Origin;
+  }
   /// A node whose (frame) box is d2 away from the query is skipped when
-  /// d2 > best2 * PruneScale + PruneAdd(p): in the identity frame with a relative margin of
-  /// 1e-12 (a face's computed closest point may lie an ulp outside its box, so its computed
-  /// distance below the box's), in a rotated one with margins far above the rounding of the
-  /// rotation (see Traverse). So a hint face, which only lowers best2 sooner, never hides a
-  /// face of the same computed distance.
+  /// d2 > best2 * PruneScale + PruneAdd(p): margins far above the rounding of the rotation
+  /// (if any) and of the subtraction of Origin (see PruneRelativeMargin). So a hint face, which
+  /// only lowers best2 sooner, never hides a face of the same computed distance.
   double PruneAdd(const Vec3& p) const;
   /// Visits the faces of the leaves not farther than sqrt(best2) from p (best2 may shrink
   /// during the visit) and not pruned by prune(node).
@@ -273,7 +277,8 @@ private:
   int Large = 0;                                       ///< see LargeFaces
   int MaximumDepth = 0;                                ///< see Depth
   int AreaSplitDepth = 64;                             ///< see the constructor
-  double PruneScale = 1.0 + 1e-12;
+  double PruneScale = 1.0;        ///< 1 + PruneRelativeMargin (the constructor)
+  Vec3 Origin = Vec3::Zero();     ///< the centre of the faces' box (frame), see InFrame
   double CoordinateScale = 0.0;   ///< largest |coordinate| of the mesh's points
   std::vector<int> Order;         ///< face ids, leaf ranges
   std::vector<PackedFace> Packed; ///< per Order entry

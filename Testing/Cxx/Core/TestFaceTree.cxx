@@ -651,6 +651,14 @@ int main()
     EXPECT(
       FaceTree(farMesh).RotatedFrame(), "turned cylinder at 1e6: boxes not in a rotated frame");
     CheckExactAtSurface("turned cylinder of slivers 1e6 from the origin", farMesh, 900);
+    // The same far away in the identity frame (the boxes relative to the tree's centre).
+    TriangleMesh farStraight = cylinder;
+    for (Vec3& x : farStraight.points)
+      x += Vec3(1e6, -2e6, 3e6);
+    const PreparedMesh farStraightMesh = coretest::Prepare(farStraight);
+    EXPECT(!FaceTree(farStraightMesh).RotatedFrame(), "axis-aligned cylinder at 1e6: rotated");
+    CheckExactAtSurface("axis-aligned cylinder 1e6 from the origin", farStraightMesh, 900);
+    CheckExact("axis-aligned cylinder 1e6 from the origin", farStraightMesh, 300, 0.05);
     CheckPlainExact(
       "blob", coretest::Prepare(coretest::ToTriangleMesh(MakeBilateralBlob(3000).mesh)), 300, 0.1);
     // A rotated frame and large faces held apart together.
