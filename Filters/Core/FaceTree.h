@@ -102,6 +102,21 @@ public:
   const PreparedMesh& Surface() const { return this->Mesh; }
 
 private:
+  /// The test of NormalCone::Excludes and FloatCone::Excludes, given normal . axis and the
+  /// cone's cos and sin: angle(normal, axis) > half-angle + acos(cosL), by
+  /// cos(h + l) = cos h cos l - sin h sin l (valid while h + l < 180 degrees), with `margin`
+  /// above the rounding of the stored cone.
+  static bool ConeExcludes(double normalDotAxis,
+    double cos,
+    double sin,
+    double cosL,
+    double sinL,
+    double margin)
+  {
+    if (cos <= -1.0 || !(cosL > margin - cos))
+      return false;
+    return normalDotAxis < cos * cosL - sin * sinL - margin;
+  }
   /// A cone holding unit vertex normals: every normal interpolated between them points into
   /// it (it is narrower than 90 degrees, else `cos` is -1: no bound).
   struct NormalCone
@@ -117,10 +132,7 @@ private:
     /// (sinL = sqrt(1 - cosL^2)): angle(normal, axis) > half-angle + acos(cosL).
     bool Excludes(const Vec3& normal, double cosL, double sinL) const
     {
-      // cos(h + l) = cos h cos l - sin h sin l, valid while h + l < 180 degrees.
-      if (this->cos <= -1.0 || !(cosL > -this->cos))
-        return false;
-      return normal.dot(this->axis) < this->cos * cosL - this->sin * sinL - 1e-12;
+      return ConeExcludes(normal.dot(this->axis), this->cos, this->sin, cosL, sinL, 1e-12);
     }
   };
   /// Faces per leaf at most.
@@ -147,10 +159,8 @@ private:
     static FloatCone Of(const NormalCone& cone);
     bool Excludes(const Vec3& normal, double cosL, double sinL) const
     {
-      if (this->cos <= -1.0f || !(cosL > 1e-6 - this->cos))
-        return false;
-      return normal.dot(this->axis.cast<double>()) <
-        double(this->cos) * cosL - double(this->sin) * sinL - 1e-6;
+      return ConeExcludes(
+        normal.dot(this->axis.cast<double>()), this->cos, this->sin, cosL, sinL, 1e-6);
     }
   };
   /// What the traversal reads of a node, in one 64-byte line (the boxes of the face centroids,
