@@ -153,6 +153,9 @@ private:
    * `edgeUses`: pm's (ComputeFaceEdgeUses). `prepared`: S prepared elsewhere with its
    * queries (Polish's), used where it is what the first iteration prepares
    * (ShrinkingSubsetDistances::Adopt).
+   * winAbove: S matters to the caller only if its area ends above this (-infinity: always);
+   * once it cannot, Trim stops and returns S empty (S only shrinks: the full trim would have
+   * ended at or below winAbove too).
    */
   std::vector<char> Trim(const WorkMesh& w,
     const PreparedMesh& pm,
@@ -161,6 +164,7 @@ private:
     const Plane& plane,
     double eps,
     bool wholeParts,
+    double winAbove,
     int& provenSide,
     const FaceEdgeUses& edgeUses,
     PreparedSubsetQueries prepared = {}) const;
@@ -189,13 +193,15 @@ private:
     Plane& plane,
     int& provenSide) const;
 
-  /// S as trimmed and polished for `plane` (see ChooseSymmetricRegion).
+  /// S as trimmed and polished for `plane` (see ChooseSymmetricRegion); empty where it
+  /// would end no larger than winAbove (see Trim), possibly before polishing.
   std::vector<char> TrimAndPolish(const WorkMesh& w,
     const PreparedMesh& pm,
     const FaceTree& region,
     std::vector<char> S,
     double eps,
     bool wholeParts,
+    double winAbove,
     Plane& plane,
     int& provenSide) const;
 

@@ -101,6 +101,7 @@ std::vector<char> Builder::TrimAndPolish(const WorkMesh& w,
   std::vector<char> S,
   double eps,
   bool wholeParts,
+  double winAbove,
   Plane& plane,
   int& provenSide) const
 {
@@ -112,7 +113,11 @@ std::vector<char> Builder::TrimAndPolish(const WorkMesh& w,
   // The region's edge uses, for every subset prepared below.
   const FaceEdgeUses edgeUses = ComputeFaceEdgeUses(pm);
   if (this->Options.trimToMirrorConsistent)
-    S = this->Trim(w, pm, region, S, plane, eps, wholeParts, provenSide, edgeUses);
+    S = this->Trim(w, pm, region, S, plane, eps, wholeParts, winAbove, provenSide, edgeUses);
+  // Polishing and trimming again only shrink S further: one already no larger than winAbove
+  // is done with.
+  if (RegionArea(pm, S) <= winAbove)
+    return std::vector<char>(S.size(), 0);
   if (this->Options.polishPlane)
   {
     // S prepared and its face tree, made by Polish, start the second trim.
@@ -120,8 +125,17 @@ std::vector<char> Builder::TrimAndPolish(const WorkMesh& w,
     plane = this->Polish(w, pm, S, plane, eps, edgeUses, &prepared);
     provenSide = 0; // the proof was for the plane before polishing
     if (this->Options.trimToMirrorConsistent)
-      S = this->Trim(
-        w, pm, region, S, plane, eps, wholeParts, provenSide, edgeUses, std::move(prepared));
+      S = this->Trim(w,
+        pm,
+        region,
+        S,
+        plane,
+        eps,
+        wholeParts,
+        winAbove,
+        provenSide,
+        edgeUses,
+        std::move(prepared));
   }
   return S;
 }
@@ -163,22 +177,40 @@ std::vector<char> Builder::ChooseSymmetricRegion(const WorkMesh& w,
       best[f] = best[f] || parts[f];
   }
   const double untrimmedArea = RegionArea(pm, best);
-  best = this->TrimAndPolish(w, pm, region, std::move(best), eps, wholeParts, plane, provenSide);
+  best = this->TrimAndPolish(w,
+    pm,
+    region,
+    std::move(best),
+    eps,
+    wholeParts,
+    -std::numeric_limits<double>::infinity(),
+    plane,
+    provenSide);
   double bestArea = RegionArea(pm, best);
-  // A trace line per plane tried; `after` < 0: not trimmed (no larger than the best S).
-  auto trace = [&](const Plane& p, double before, double after)
+  // A trace line per plane tried: S before trimming, and after (`after`), or not trimmed
+  // (its S no larger than the best), or trimmed only until it could not beat the best.
+  enum class Trimmed
   {
-    if (this->Options.trace)
-      this->Options.trace(FormatTrace("[region] n=(%.3f %.3f %.3f): S %.3f of the area, %s%.3f%s",
-        p.normal.x(),
-        p.normal.y(),
-        p.normal.z(),
-        before / pm.totalArea,
-        after < 0.0 ? "not trimmed, no larger than the best " : "trimmed ",
-        (after < 0.0 ? bestArea : after) / pm.totalArea,
-        wholeParts ? " (with whole parts)" : ""));
+    Fully,
+    Not,
+    UntilBeaten
   };
-  trace(plane, untrimmedArea, bestArea);
+  auto trace = [&](const Plane& p, double before, double after, Trimmed how)
+  {
+    if (!this->Options.trace)
+      return;
+    this->Options.trace(FormatTrace("[region] n=(%.3f %.3f %.3f): S %.3f of the area, %s%.3f%s",
+      p.normal.x(),
+      p.normal.y(),
+      p.normal.z(),
+      before / pm.totalArea,
+      how == Trimmed::Fully   ? "trimmed "
+        : how == Trimmed::Not ? "not trimmed, no larger than the best "
+                              : "trimmed until no larger than the best ",
+      (how == Trimmed::Fully ? after : bestArea) / pm.totalArea,
+      wholeParts ? " (with whole parts)" : ""));
+  };
+  trace(plane, untrimmedArea, bestArea, Trimmed::Fully);
   if (!this->Options.trimToMirrorConsistent)
   {
     for (int f = 0; f < nf; ++f)
@@ -207,15 +239,17 @@ std::vector<char> Builder::ChooseSymmetricRegion(const WorkMesh& w,
     const double candidateArea = RegionArea(pm, S);
     if (!(candidateArea > bestArea))
     {
-      trace(candidate, candidateArea, -1.0);
+      trace(candidate, candidateArea, 0.0, Trimmed::Not);
       continue;
     }
     if (this->IsAncestorPlane(candidate, pathFolds, RegionCentroid(pm, S), eps))
       continue;
     int side = 0;
-    S = this->TrimAndPolish(w, pm, region, std::move(S), eps, wholeParts, candidate, side);
+    // Trimming and polishing stop once S cannot beat the best (empty S then).
+    S =
+      this->TrimAndPolish(w, pm, region, std::move(S), eps, wholeParts, bestArea, candidate, side);
     const double area = RegionArea(pm, S);
-    trace(candidate, candidateArea, area);
+    trace(candidate, candidateArea, area, area > bestArea ? Trimmed::Fully : Trimmed::UntilBeaten);
     if (area > bestArea)
     {
       best = std::move(S);
@@ -280,6 +314,7 @@ std::vector<char> Builder::Trim(const WorkMesh& w,
   const Plane& plane,
   double eps,
   bool wholeParts,
+  double winAbove,
   int& provenSide,
   const FaceEdgeUses& edgeUses,
   PreparedSubsetQueries prepared) const
@@ -344,6 +379,18 @@ std::vector<char> Builder::Trim(const WorkMesh& w,
     for (int f = 0; f < w.NumberOfFaces(); ++f)
       if (S[f])
         faceOf.push_back(f);
+    // What is left of S lies in its faces kept so far (the face proof below and the
+    // largest region only remove more). Their area, summed in RegionArea's order, bounds
+    // S's from above, also in floating point (adding a non-negative term never lowers a sum).
+    if (winAbove > -std::numeric_limits<double>::infinity())
+    {
+      double keptArea = 0.0;
+      for (size_t k = 0; k < faceOf.size(); ++k)
+        if (ok[k] || spm.faceDegenerate[k])
+          keptArea += pm.faceAreas[faceOf[k]];
+      if (keptArea <= winAbove)
+        return std::vector<char>(S.size(), 0);
+    }
     if (this->Options.errorBudget)
     {
       // ... and the whole mirror image of each face, not only its corners, within the limit
