@@ -179,13 +179,16 @@ ClusteredMesh ClusterVertices(const PreparedMesh& mesh, int targetFaces)
     double fine = h, coarse = h;
     ClusteredMesh coarseCopy;
     int steps = 0;
+    // Cells larger than the mesh's diagonal change nothing more.
     do
     {
       fine = coarse;
       coarse *= CoarserCellFactor;
       coarseCopy = CopyOfClusters(mesh, used, ClustersForCellSize(mesh, coarse));
-    } while (PointsUsed(coarseCopy) > limit && ++steps < MaximumCoarserCells);
-    for (int k = 0; k < CellSizeBisections; ++k)
+    } while (
+      PointsUsed(coarseCopy) > limit && ++steps < MaximumCoarserCells && coarse < mesh.diagonal);
+    // No size got there: the first copy stays (no bisection).
+    for (int k = 0; k < CellSizeBisections && PointsUsed(coarseCopy) <= limit; ++k)
     {
       const double mid = std::sqrt(fine * coarse);
       ClusteredMesh copy = CopyOfClusters(mesh, used, ClustersForCellSize(mesh, mid));

@@ -249,7 +249,8 @@ std::vector<char> Builder::ChooseSymmetricRegion(const WorkMesh& w,
     S =
       this->TrimAndPolish(w, pm, region, std::move(S), eps, wholeParts, bestArea, candidate, side);
     const double area = RegionArea(pm, S);
-    trace(candidate, candidateArea, area, area > bestArea ? Trimmed::Fully : Trimmed::UntilBeaten);
+    const bool stopped = std::find(S.begin(), S.end(), 1) == S.end();
+    trace(candidate, candidateArea, area, stopped ? Trimmed::UntilBeaten : Trimmed::Fully);
     if (area > bestArea)
     {
       best = std::move(S);
@@ -379,9 +380,10 @@ std::vector<char> Builder::Trim(const WorkMesh& w,
     for (int f = 0; f < w.NumberOfFaces(); ++f)
       if (S[f])
         faceOf.push_back(f);
-    // What is left of S lies in its faces kept so far (the face proof below and the
-    // largest region only remove more). Their area, summed in RegionArea's order, bounds
-    // S's from above, also in floating point (adding a non-negative term never lowers a sum).
+    // What is left of S lies in its faces kept so far: the face proof below only removes
+    // more, and the largest region (with whole parts) adds at most degenerate faces, of area
+    // 0 in pm. Their area, summed in RegionArea's order, bounds S's from above, also in
+    // floating point (adding a non-negative term never lowers a sum).
     if (winAbove > -std::numeric_limits<double>::infinity())
     {
       double keptArea = 0.0;

@@ -219,6 +219,16 @@ void CheckManySmallParts()
   const ClusteredMesh again = ClusterVertices(varied, target);
   EXPECT(again.vertex == c.vertex && again.mesh.triangles == c.mesh.triangles,
     "the coarser copy is deterministic");
+
+  // The same boxes, 400 of them (4,800 faces): below 5000 faces the copy is not made again,
+  // and it uses more points than faces asked for - what the larger mesh's copy did too.
+  const PreparedMesh fewer = coretest::Prepare(ManyBoxes(400, 1.0));
+  const int fewerTarget = fewer.NumberOfFaces() / 4;
+  const int fewerUsed = PointsUsed(ClusterVertices(fewer, fewerTarget));
+  std::printf("400 boxes: copy using %d points (target %d)\n", fewerUsed, fewerTarget);
+  EXPECT(fewerUsed > fewerTarget,
+    "400 boxes keep their first copy, " << fewerUsed << " points for " << fewerTarget
+                                        << " faces asked for");
 }
 
 void CheckDistancesToFullMesh()
