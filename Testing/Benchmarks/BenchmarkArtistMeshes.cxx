@@ -19,8 +19,9 @@
 // --double: the corpus as built (double coordinates) instead of as written (float).
 // --large: also the procedural bilateral blob (Testing/Cxx/ProceduralMeshes.h, one mirror plane,
 // under a rigid motion; double coordinates whatever --double says) with 100k and 1M faces, and
-// issue 21's other goal: 1M faces under 5 s (about a minute more at 2 threads). NAME_SUBSTRING
-// selects meshes of the corpus; --large adds both blobs.
+// a crate of 84,000 boxes (ArtistMeshes.h, MakeCrate: 1,008,000 faces of many parts), and
+// issue 21's other goal: 1M faces under 5 s, for each of the two (about two minutes more at 2
+// threads). NAME_SUBSTRING selects meshes of the corpus; --large adds the blobs and the crate.
 #include "ArtistMeshes.h"
 #include "EdgeTable.h"
 #include "ProceduralMeshes.h"
@@ -77,7 +78,7 @@ struct Case
   size_t openEdges = 0;
   Vec3 normal = Vec3::UnitX(); ///< the mirror plane it was built with
   bool deformed = false;       ///< no plane of the whole: no angle printed
-  bool large = false;          ///< the 1M-face goal's mesh
+  bool large = false;          ///< a mesh of issue 21's 1M-face goal
 };
 
 /// What one line reports, for the summary lines.
@@ -245,7 +246,20 @@ int main(int argc, char* argv[])
       c.openEdges = OpenEdgesOf(blob.mesh);
       cases.push_back(std::move(c));
     }
-  const Measured* largest = nullptr;
+  if (large)
+  {
+    const foldingmeshes::artist::ArtistMesh crate =
+      foldingmeshes::artist::MakeCrate(foldingmeshes::artist::LargeCratePairs);
+    Case c{ crate.name,
+      foldingmeshes::artist::ToPolyData(crate.mesh, doublePoints),
+      crate.parts,
+      foldingmeshes::OpenEdges(crate.mesh.triangles).size(),
+      crate.normal,
+      false };
+    c.large = true;
+    cases.push_back(std::move(c));
+  }
+  std::vector<std::pair<std::string, const Measured*>> largest;
   std::vector<Measured> results;
   results.reserve(cases.size());
   for (const Case& c : cases)
@@ -268,7 +282,7 @@ int main(int argc, char* argv[])
       maxFoldMesh = c.name;
     }
     if (c.large)
-      largest = &r;
+      largest.emplace_back(c.name, &r);
   }
   if (!maxDetectMesh.empty())
     std::printf(
@@ -280,13 +294,14 @@ int main(int argc, char* argv[])
       maxFoldMesh.c_str(),
       GoalSeconds,
       maxDetect < GoalSeconds && maxFold < GoalSeconds ? "met" : "not met");
-  if (largest)
-    std::printf("%d faces: detection %.3f s, fold %.3f s; goal %.0f s: %s\n",
-      largest->faces,
-      largest->detect,
-      largest->fold,
+  for (const auto& [name, r] : largest)
+    std::printf("%s, %d faces: detection %.3f s, fold %.3f s; goal %.0f s: %s\n",
+      name.c_str(),
+      r->faces,
+      r->detect,
+      r->fold,
       LargeGoalSeconds,
-      largest->detect < LargeGoalSeconds && largest->fold < LargeGoalSeconds ? "met" : "not met");
+      r->detect < LargeGoalSeconds && r->fold < LargeGoalSeconds ? "met" : "not met");
   std::printf("proved bound within epsilon: %d of %d meshes%s\n",
     within,
     meshes,

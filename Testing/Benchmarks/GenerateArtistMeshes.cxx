@@ -10,8 +10,9 @@
 //
 // writes OUTDIR/<name>_<variant>.ply (binary) and prints name, faces, parts, open edges and the
 // plane (origin, normal) of each; --large also the procedural bilateral blobs of 100k and 1M
-// faces that `BenchmarkArtistMeshes --large` times (blob_100000.ply, blob_1000000.ply: the same
-// meshes, under the same rigid motion), to profile them with the command-line program. Not a test:
+// faces and the crate of 84,000 boxes that `BenchmarkArtistMeshes --large` times
+// (blob_100000.ply, blob_1000000.ply, crate_1008000.ply: the same meshes, under the same rigid
+// motions), to profile them with the command-line program. Not a test:
 // the input of BenchmarkFoldingTable1 and BenchmarkSymmetryDetection, e.g.
 //   build/bin/GenerateArtistMeshes /tmp/artist && build/bin/BenchmarkFoldingTable1 --threads 2
 //   /tmp/artist
@@ -92,6 +93,27 @@ int main(int argc, char* argv[])
       p.normal.x(),
       p.normal.y(),
       p.normal.z());
+  }
+  if (large) // the many-parts million-face mesh, as BenchmarkArtistMeshes --large makes it
+  {
+    const foldingmeshes::artist::ArtistMesh m =
+      foldingmeshes::artist::MakeCrate(foldingmeshes::artist::LargeCratePairs);
+    if (!Write(foldingmeshes::artist::ToPolyData(m.mesh), dir + "/" + m.name + ".ply"))
+    {
+      std::fprintf(stderr, "cannot write %s/%s.ply\n", dir.c_str(), m.name.c_str());
+      return 1;
+    }
+    std::printf("%-22s %7zu %6d %6zu  (%.4f %.4f %.4f) / (%.4f %.4f %.4f)\n",
+      m.name.c_str(),
+      m.mesh.triangles.size(),
+      m.parts,
+      foldingmeshes::OpenEdges(m.mesh.triangles).size(),
+      m.origin.x(),
+      m.origin.y(),
+      m.origin.z(),
+      m.normal.x(),
+      m.normal.y(),
+      m.normal.z());
   }
   return 0;
 }

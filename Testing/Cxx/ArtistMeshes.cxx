@@ -9,6 +9,7 @@
 #include <array>
 #include <cmath>
 #include <random>
+#include <string>
 #include <utility>
 
 namespace foldingmeshes
@@ -321,6 +322,32 @@ std::vector<ArtistMesh> MakeArtistCorpus()
       corpus.push_back(std::move(m));
     }
   return corpus;
+}
+
+ArtistMesh MakeCrate(int pairs)
+{
+  Assembly a;
+  std::mt19937 random(5);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  const int side = static_cast<int>(std::ceil(std::sqrt(static_cast<double>(pairs))));
+  for (int b = 0; b < pairs; ++b)
+  {
+    const Vec3 half =
+      0.5 * Vec3(0.3 + 1.4 * u(random), 0.3 + 1.4 * u(random), 0.3 + 1.4 * u(random));
+    const double x = 1.5 + 3.0 * (b % side), y = 3.0 * (b / side);
+    Pair(x, [&](double px) { a.Box(Vec3(px, y, 0.0), half); });
+  }
+  ArtistMesh m;
+  const Eigen::Isometry3d t = RigidMotion(17);
+  for (Vec3& p : a.points)
+    p = t * p;
+  m.name = "crate_" + std::to_string(a.triangles.size());
+  m.origin = t * Vec3(0, 0, 0);
+  m.normal = t.linear() * Vec3(1, 0, 0);
+  m.mesh.points = std::move(a.points);
+  m.mesh.triangles = std::move(a.triangles);
+  m.parts = a.parts;
+  return m;
 }
 
 vtkSmartPointer<vtkPolyData> ToPolyData(const TriangleMesh& m, bool doublePoints)

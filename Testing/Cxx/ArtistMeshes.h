@@ -34,6 +34,15 @@ struct ArtistMesh
 /// moved and deformed (the same meshes on every call).
 std::vector<ArtistMesh> MakeArtistCorpus();
 
+/// A crate of `pairs` pairs of closed boxes of varied sizes on a grid (12 faces a box),
+/// mirror-symmetric about x = 0 as built, then under a random rigid motion: the many-parts
+/// mesh of issue 21's million-face goal (`BenchmarkArtistMeshes --large`: 42,000 pairs,
+/// 1,008,000 faces), where a connected blob would not show what separate parts cost.
+ArtistMesh MakeCrate(int pairs);
+/// The crate's pairs for the million-face goal (GenerateArtistMeshes and BenchmarkArtistMeshes
+/// --large).
+constexpr int LargeCratePairs = 42000;
+
 /// The mesh as a vtkPolyData with float points (what a PLY file holds: GenerateArtistMeshes
 /// writes these, BenchmarkArtistMeshes times them), or double ones (the corpus as built; the
 /// dense chair folds worse there, docs/benchmarks.md).
