@@ -37,6 +37,29 @@ bool Write(vtkPolyData* mesh, const std::string& path)
   writer->SetFileTypeToBinary();
   return writer->Write() == 1;
 }
+
+/// Writes DIR/<name>.ply and prints its line; false (with a message) if it cannot.
+bool WriteArtistMesh(const foldingmeshes::artist::ArtistMesh& m, const std::string& dir)
+{
+  if (!Write(foldingmeshes::artist::ToPolyData(m.mesh), dir + "/" + m.name + ".ply"))
+  {
+    std::fprintf(stderr, "cannot write %s/%s.ply\n", dir.c_str(), m.name.c_str());
+    return false;
+  }
+  std::printf("%-22s %7zu %6d %6zu  (%.4f %.4f %.4f) / (%.4f %.4f %.4f)%s\n",
+    m.name.c_str(),
+    m.mesh.triangles.size(),
+    m.parts,
+    foldingmeshes::OpenEdges(m.mesh.triangles).size(),
+    m.origin.x(),
+    m.origin.y(),
+    m.origin.z(),
+    m.normal.x(),
+    m.normal.y(),
+    m.normal.z(),
+    m.deformed ? " (one side deformed)" : "");
+  return true;
+}
 }
 
 int main(int argc, char* argv[])
@@ -50,25 +73,8 @@ int main(int argc, char* argv[])
   const std::string dir = argv[1];
   std::printf("%-22s %7s %6s %6s  plane origin / normal\n", "mesh", "faces", "parts", "open");
   for (const foldingmeshes::artist::ArtistMesh& m : foldingmeshes::artist::MakeArtistCorpus())
-  {
-    if (!Write(foldingmeshes::artist::ToPolyData(m.mesh), dir + "/" + m.name + ".ply"))
-    {
-      std::fprintf(stderr, "cannot write %s/%s.ply\n", dir.c_str(), m.name.c_str());
+    if (!WriteArtistMesh(m, dir))
       return 1;
-    }
-    std::printf("%-22s %7zu %6d %6zu  (%.4f %.4f %.4f) / (%.4f %.4f %.4f)%s\n",
-      m.name.c_str(),
-      m.mesh.triangles.size(),
-      m.parts,
-      foldingmeshes::OpenEdges(m.mesh.triangles).size(),
-      m.origin.x(),
-      m.origin.y(),
-      m.origin.z(),
-      m.normal.x(),
-      m.normal.y(),
-      m.normal.z(),
-      m.deformed ? " (one side deformed)" : "");
-  }
   for (int faces : { 100000, 1000000 }) // as BenchmarkArtistMeshes --large makes them
   {
     if (!large)
@@ -94,26 +100,9 @@ int main(int argc, char* argv[])
       p.normal.y(),
       p.normal.z());
   }
-  if (large) // the many-parts million-face mesh, as BenchmarkArtistMeshes --large makes it
-  {
-    const foldingmeshes::artist::ArtistMesh m =
-      foldingmeshes::artist::MakeCrate(foldingmeshes::artist::LargeCratePairs);
-    if (!Write(foldingmeshes::artist::ToPolyData(m.mesh), dir + "/" + m.name + ".ply"))
-    {
-      std::fprintf(stderr, "cannot write %s/%s.ply\n", dir.c_str(), m.name.c_str());
-      return 1;
-    }
-    std::printf("%-22s %7zu %6d %6zu  (%.4f %.4f %.4f) / (%.4f %.4f %.4f)\n",
-      m.name.c_str(),
-      m.mesh.triangles.size(),
-      m.parts,
-      foldingmeshes::OpenEdges(m.mesh.triangles).size(),
-      m.origin.x(),
-      m.origin.y(),
-      m.origin.z(),
-      m.normal.x(),
-      m.normal.y(),
-      m.normal.z());
-  }
+  // The many-parts million-face mesh, as BenchmarkArtistMeshes --large makes it.
+  if (large &&
+    !WriteArtistMesh(foldingmeshes::artist::MakeCrate(foldingmeshes::artist::LargeCratePairs), dir))
+    return 1;
   return 0;
 }
