@@ -332,8 +332,10 @@ ArtistMesh MakeCrate(int pairs)
   const int side = static_cast<int>(std::ceil(std::sqrt(static_cast<double>(pairs))));
   for (int b = 0; b < pairs; ++b)
   {
-    const Vec3 half =
-      0.5 * Vec3(0.3 + 1.4 * u(random), 0.3 + 1.4 * u(random), 0.3 + 1.4 * u(random));
+    // One draw per statement: the order of a call's arguments is unspecified.
+    const double hx = 0.5 * (0.3 + 1.4 * u(random)), hy = 0.5 * (0.3 + 1.4 * u(random)),
+                 hz = 0.5 * (0.3 + 1.4 * u(random));
+    const Vec3 half(hx, hy, hz);
     const double x = 1.5 + 3.0 * (b % side), y = 3.0 * (b / side);
     Pair(x, [&](double px) { a.Box(Vec3(px, y, 0.0), half); });
   }

@@ -173,11 +173,12 @@ TriangleMesh ManyBoxes(int count, double size)
   for (int b = 0; b < count; ++b)
   {
     const Vec3 center(3.0 * size * (b % side), 3.0 * size * (b / side), 0.0);
-    const Vec3 half =
-      0.5 * size * Vec3(0.3 + 1.4 * uniform(), 0.3 + 1.4 * uniform(), 0.3 + 1.4 * uniform());
+    // One draw per statement: the order of a call's arguments is unspecified.
+    const double hx = uniform(), hy = uniform(), hz = uniform();
+    const Vec3 half = 0.5 * size * Vec3(0.3 + 1.4 * hx, 0.3 + 1.4 * hy, 0.3 + 1.4 * hz);
+    const double angle = 2.0 * M_PI * uniform(), ax = uniform(), ay = uniform();
     const Eigen::Matrix3d turn =
-      Eigen::AngleAxisd(2.0 * M_PI * uniform(), Vec3(uniform(), uniform(), 1.0).normalized())
-        .toRotationMatrix();
+      Eigen::AngleAxisd(angle, Vec3(ax, ay, 1.0).normalized()).toRotationMatrix();
     const int first = static_cast<int>(mesh.points.size());
     for (int k = 0; k < 8; ++k)
     {
