@@ -178,6 +178,7 @@ ClusteredMesh ClusterVertices(const PreparedMesh& mesh, int targetFaces)
   {
     double fine = h, coarse = h;
     ClusteredMesh coarseCopy;
+    int coarseUsed = 0;
     int steps = 0;
     // Cells larger than the mesh's diagonal change nothing more.
     do
@@ -185,22 +186,23 @@ ClusteredMesh ClusterVertices(const PreparedMesh& mesh, int targetFaces)
       fine = coarse;
       coarse *= CoarserCellFactor;
       coarseCopy = CopyOfClusters(mesh, used, ClustersForCellSize(mesh, coarse));
-    } while (
-      PointsUsed(coarseCopy) > limit && ++steps < MaximumCoarserCells && coarse < mesh.diagonal);
+      coarseUsed = PointsUsed(coarseCopy);
+    } while (coarseUsed > limit && ++steps < MaximumCoarserCells && coarse < mesh.diagonal);
     // No size got there: the first copy stays (no bisection).
-    for (int k = 0; k < CellSizeBisections && PointsUsed(coarseCopy) <= limit; ++k)
+    for (int k = 0; k < CellSizeBisections && coarseUsed <= limit; ++k)
     {
       const double mid = std::sqrt(fine * coarse);
       ClusteredMesh copy = CopyOfClusters(mesh, used, ClustersForCellSize(mesh, mid));
-      if (PointsUsed(copy) > limit)
+      const int copyUsed = PointsUsed(copy);
+      if (copyUsed > limit)
         fine = mid;
       else
       {
         coarse = mid;
         coarseCopy = std::move(copy);
+        coarseUsed = copyUsed;
       }
     }
-    const int coarseUsed = PointsUsed(coarseCopy);
     if (coarseUsed <= limit && coarseUsed >= MinimumPointsPerTargetFace * targetFaces)
       out = std::move(coarseCopy);
   }
